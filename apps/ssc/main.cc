@@ -1,0 +1,47 @@
+// ssc: command-line front end of the Smart Suction Cup digital twin.
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "apps/ssc/commands.h"
+#include "controller/sim/mujoco_model.h"
+
+namespace {
+
+struct Command {
+  const char* name;
+  int (*run)(int, char**);
+  const char* summary;
+};
+
+const Command kCommands[] = {
+    {"probe", ssc::RunProbe,
+     "move the cup kinematically across a straight edge and around a disk edge; CSV + plot"},
+};
+
+void PrintUsage() {
+  std::printf("usage: ssc <command> [options]   (ssc <command> --help for its options)\n\n");
+  std::printf("Smart Suction Cup digital twin (MuJoCo %s).\n\ncommands:\n", mj_versionString());
+  for (const Command& c : kCommands) std::printf("  %-10s %s\n", c.name, c.summary);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string version_error = ssc::CheckMuJoCoVersion();
+  if (!version_error.empty()) {
+    std::fprintf(stderr, "ssc: %s\n", version_error.c_str());
+    return 2;
+  }
+  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") ||
+      !std::strcmp(argv[1], "help")) {
+    PrintUsage();
+    return argc < 2 ? 2 : 0;
+  }
+  for (const Command& c : kCommands) {
+    if (!std::strcmp(argv[1], c.name)) return c.run(argc - 2, argv + 2);
+  }
+  std::fprintf(stderr, "ssc: unknown command '%s'\n\n", argv[1]);
+  PrintUsage();
+  return 2;
+}
