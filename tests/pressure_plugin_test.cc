@@ -1,0 +1,256 @@
+// The pressure sensor plugin inside MuJoCo: the cup held by a mocap body over a plate edge
+// (scenes/probe_edge.xml).
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include "controller/sim/edge_probe.h"
+#include "controller/sim/mujoco_model.h"
+
+namespace ssc {
+namespace {
+
+constexpr double kSurfaceZ = 0.010;      // plate top, m
+constexpr double kCompression = 1.0e-3;  // lip plane below the plate top, m
+constexpr double kSettle = 0.08;         // s
+
+std::string ProbeScene() { return SourceDir() + "/scenes/probe_edge.xml"; }
+
+std::unique_ptr<EdgeProbe3d> MakeProbe() {
+  std::string error;
+  auto probe = EdgeProbe3d::Create(ProbeScene(), &error);
+  EXPECT_TRUE(probe) << error;
+  return probe;
+}
+
+// Cup centre `offset_m` inside the plate's edge (the plate covers world x < 0).
+ProbeReading AtOffset(EdgeProbe3d& probe, double offset_m, double yaw = 0) {
+  return probe.Read(-offset_m, 0.0, yaw, kSurfaceZ, kCompression, kSettle);
+}
+
+TEST(PressurePluginTest, CupInAirReadsBelowFivePascal) {
+  auto probe = MakeProbe();
+  ASSERT_TRUE(probe);
+  const ProbeReading r = probe->Read(0.0, 0.0, 0.0, 0.2, 0.0, 0.2);  // 20 cm above the table
+  EXPECT_LT(r.static_pbar_pa, 5.0);
+  EXPECT_LT(r.pbar_pa, 5.0);
+  EXPECT_EQ(r.lip_contacts, 0);
+}
+
+TEST(PressurePluginTest, CupOnPlateGraspsInEveryChamber) {
+  auto probe = MakeProbe();
+  ASSERT_TRUE(probe);
+  const ProbeReading r = AtOffset(*probe, 0.03);
+  for (int c = 0; c < 4; ++c) EXPECT_GT(r.filtered_pa[c], 10000.0) << "chamber " << c + 1;
+  EXPECT_EQ(r.lip_contacts, 16);
+}
+
+TEST(PressurePluginTest, AcrossAStraightEdgeMeanRisesAndPointsAtThePlate) {
+  auto probe = MakeProbe();
+  ASSERT_TRUE(probe);
+  double previous = -1;
+  for (double mm = -5.0; mm <= 5.0 + 1e-9; mm += 0.5) {
+    const ProbeReading r = AtOffset(*probe, mm * 1e-3);
+    EXPECT_GE(r.static_pbar_pa, previous - 0.5) << "offset " << mm << " mm";
+    previous = r.static_pbar_pa;
+    if (std::hypot(r.dpx_pa, r.dpy_pa) > 30) {
+      // g points toward the covered side: the plate lies toward world -x (180 deg).
+      const double err = std::remainder(r.g_world_rad - M_PI, 2 * M_PI);
+      EXPECT_LT(std::fabs(err), 10 * M_PI / 180) << "offset " << mm << " mm";
+    }
+  }
+  EXPECT_GT(previous, 1000.0);
+}
+
+TEST(PressurePluginTest, DirectionFollowsTheEdgeTangentAtEveryRotation) {
+  // The tool turns in 15 degree steps relative to the edge; travel (object on the left) must
+  // follow the edge tangent (world +y, 90 deg) within 20 degrees.
+  auto probe = MakeProbe();
+  ASSERT_TRUE(probe);
+  for (int k = 0; k < 24; ++k) {
+    const double yaw = k * 15.0 * M_PI / 180;
+    const ProbeReading r = AtOffset(*probe, 2.5e-3, yaw);
+    const double err = std::remainder(r.travel_world_rad - M_PI / 2, 2 * M_PI) * 180 / M_PI;
+    EXPECT_LT(std::fabs(err), 20.0) << "tool yaw " << k * 15 << " deg";
+  }
+}
+
+double OffsetForMean(EdgeProbe3d& probe, double target_pa) {
+  double lo = -2e-3, hi = 5.5e-3;
+  for (int i = 0; i < 16; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (AtOffset(probe, mid).static_pbar_pa < target_pa ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+TEST(PressurePluginTest, CalibrationPointsOfThePublishedDiskResults) {
+  auto probe = MakeProbe();
+  ASSERT_TRUE(probe);
+  EXPECT_NEAR(OffsetForMean(*probe, 40) * 1e3, 0.7, 0.3);
+  const double d100 = OffsetForMean(*probe, 100);
+  EXPECT_NEAR(d100 * 1e3, 2.5, 0.3);
+  EXPECT_NEAR(OffsetForMean(*probe, 200) * 1e3, 3.2, 0.3);
+  // Differential near P = 100 Pa: about 200 Pa, the side over the edge near zero.
+  const ProbeReading r = AtOffset(*probe, d100);
+  EXPECT_NEAR(std::hypot(r.dpx_pa, r.dpy_pa), 200.0, 40.0);
+  const auto& p = r.static_pa;  // the plate is to the west: chambers 3, 4 covered
+  EXPECT_LT(0.5 * (p[0] + p[1]), 15.0);
+  EXPECT_GT(0.5 * (p[2] + p[3]), 150.0);
+}
+
+TEST(PressurePluginTest, ForwardAtTheSameTimeChangesNothing) {
+  auto probe = MakeProbe();
+  ASSERT_TRUE(probe);
+  AtOffset(*probe, 2.5e-3);
+  const mjModel* m = probe->model();
+  mjData* d = probe->data();
+  std::vector<double> before(d->sensordata, d->sensordata + 4);
+  const std::vector<double> state(d->plugin_state, d->plugin_state + m->npluginstate);
+  for (int i = 0; i < 5; ++i) mj_forward(m, d);
+  for (int c = 0; c < 4; ++c) EXPECT_EQ(d->sensordata[c], before[c]);
+  for (int i = 0; i < m->npluginstate; ++i) EXPECT_EQ(d->plugin_state[i], state[i]);
+}
+
+std::vector<double> StepAndRecord(const mjModel* m, mjData* d, int steps) {
+  std::vector<double> out;
+  for (int i = 0; i < steps; ++i) {
+    mj_step(m, d);
+    out.insert(out.end(), d->sensordata, d->sensordata + 4);
+  }
+  return out;
+}
+
+TEST(PressurePluginTest, DeterministicAcrossResetAndCopy) {
+  auto probe = MakeProbe();
+  ASSERT_TRUE(probe);
+  const mjModel* m = probe->model();
+  mjData* d = probe->data();
+  AtOffset(*probe, 2.0e-3);  // place the cup; then reset the dynamic state but keep the mocap
+  mj_resetData(m, d);
+  d->mocap_pos[0] = -2.0e-3;
+  d->mocap_pos[2] = kSurfaceZ - kCompression + 0.146;
+  const auto first = StepAndRecord(m, d, 300);
+  mj_resetData(m, d);
+  d->mocap_pos[0] = -2.0e-3;
+  d->mocap_pos[2] = kSurfaceZ - kCompression + 0.146;
+  const auto second = StepAndRecord(m, d, 150);
+  mjData* copy = mj_copyData(nullptr, m, d);
+  const auto tail_original = StepAndRecord(m, d, 150);
+  const auto tail_copy = StepAndRecord(m, copy, 150);
+  mj_deleteData(copy);
+  for (size_t i = 0; i < second.size(); ++i) ASSERT_EQ(first[i], second[i]) << i;
+  for (size_t i = 0; i < tail_original.size(); ++i) {
+    ASSERT_EQ(tail_original[i], tail_copy[i]) << i;
+    ASSERT_EQ(tail_original[i], first[second.size() + i]) << i;
+  }
+}
+
+// Writes the tool model with one config entry and tries to load it.
+std::string LoadWithConfig(const std::string& key, const std::string& value) {
+  std::ifstream in(SourceDir() + "/models/ssc_tool.xml");
+  std::stringstream buf;
+  buf << in.rdbuf();
+  std::string xml = buf.str();
+  const std::string tag = "<instance name=\"ssc_pressure\"/>";
+  const size_t at = xml.find(tag);
+  if (at == std::string::npos) return "tag not found";
+  xml.replace(at, tag.size(),
+              "<instance name=\"ssc_pressure\"><config key=\"" + key + "\" value=\"" + value +
+                  "\"/></instance>");
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("ssc_bad_config_" + std::to_string(::getpid()) + ".xml");
+  std::ofstream(path) << xml;
+  std::string error;
+  ModelPtr model = LoadModel(path.string(), &error);
+  std::filesystem::remove(path);
+  return model ? "" : error;
+}
+
+// A copy of the probe scene whose tool has `config` inside its plugin instance.
+std::string SceneWithToolConfig(const std::string& config, const std::string& tag) {
+  const auto root = std::filesystem::temp_directory_path() /
+                    ("ssc_scene_" + tag + "_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(root / "models");
+  std::filesystem::create_directories(root / "scenes");
+  std::filesystem::copy_file(ProbeScene(), root / "scenes" / "probe_edge.xml",
+                             std::filesystem::copy_options::overwrite_existing);
+  std::ifstream in(SourceDir() + "/models/ssc_tool.xml");
+  std::stringstream buf;
+  buf << in.rdbuf();
+  std::string xml = buf.str();
+  const std::string instance = "<instance name=\"ssc_pressure\"/>";
+  xml.replace(xml.find(instance), instance.size(),
+              "<instance name=\"ssc_pressure\">" + config + "</instance>");
+  std::ofstream(root / "models" / "ssc_tool.xml") << xml;
+  return (root / "scenes" / "probe_edge.xml").string();
+}
+
+TEST(PressurePluginTest, SeedChangesTheNoiseButNotTheSignal) {
+  std::string error;
+  auto a = EdgeProbe3d::Create(SceneWithToolConfig("<config key=\"seed\" value=\"1\"/>", "a"), &error);
+  ASSERT_TRUE(a) << error;
+  auto b = EdgeProbe3d::Create(SceneWithToolConfig("<config key=\"seed\" value=\"2\"/>", "b"), &error);
+  ASSERT_TRUE(b) << error;
+  auto c = EdgeProbe3d::Create(SceneWithToolConfig("<config key=\"seed\" value=\"1\"/>", "c"), &error);
+  ASSERT_TRUE(c) << error;
+  const ProbeReading ra = AtOffset(*a, 2.5e-3), rb = AtOffset(*b, 2.5e-3), rc = AtOffset(*c, 2.5e-3);
+  int differ = 0;
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_EQ(ra.static_pa[k], rb.static_pa[k]);      // same physics
+    EXPECT_EQ(ra.filtered_pa[k], rc.filtered_pa[k]);  // same seed, same noise
+    differ += ra.filtered_pa[k] != rb.filtered_pa[k];
+  }
+  EXPECT_EQ(differ, 4);  // another seed, other noise
+}
+
+TEST(PressurePluginTest, BadConfigFailsTheLoadNamingKeyValueAndRange) {
+  struct Case {
+    const char* key;
+    const char* value;
+    const char* expect;  // must appear in the message
+  };
+  const Case cases[] = {
+      {"seal_distance_mm", "-1", "[0, 10] mm"},
+      {"port_area_mm2", "-3", "(0, 10000] mm^2"},
+      {"noise_pa", "nan", "noise_pa"},
+      {"rays_per_chamber", "2.5", "whole number"},
+      {"sample_rate_hz", "fast", "sample_rate_hz"},
+      {"ray_groups", "0 9", "ray_groups"},
+      {"ray_groups", "4", "lip_geom_group"},
+      {"unknown_key", "1", "unknown_key"},
+  };
+  for (const Case& c : cases) {
+    const std::string error = LoadWithConfig(c.key, c.value);
+    ASSERT_FALSE(error.empty()) << c.key << "=" << c.value << " loaded";
+    EXPECT_NE(error.find(c.key), std::string::npos) << error;
+    EXPECT_NE(error.find(c.expect), std::string::npos) << error;
+    EXPECT_NE(error.find("ssc_bad_config_"), std::string::npos) << "names the file: " << error;
+  }
+}
+
+TEST(PressurePluginTest, MissingSiteOrLipIsReported) {
+  // A sensor on a body instead of a site.
+  std::ifstream in(SourceDir() + "/models/ssc_tool.xml");
+  std::stringstream buf;
+  buf << in.rdbuf();
+  std::string xml = buf.str();
+  const std::string site = "objtype=\"site\" objname=\"ssc_tool_site\"";
+  xml.replace(xml.find(site), site.size(), "objtype=\"site\" objname=\"no_such_site\"");
+  const auto path = std::filesystem::temp_directory_path() / "ssc_bad_site.xml";
+  std::ofstream(path) << xml;
+  std::string error;
+  ModelPtr model = LoadModel(path.string(), &error);
+  std::filesystem::remove(path);
+  EXPECT_FALSE(model);
+  EXPECT_NE(error.find("no_such_site"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace ssc
