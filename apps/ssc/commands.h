@@ -5,6 +5,7 @@
 namespace ssc {
 
 int RunProbe(int argc, char** argv);
+int RunBench(int argc, char** argv);  // execs build/bin/ssc_bench
 
 }  // namespace ssc
 

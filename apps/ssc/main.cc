@@ -17,6 +17,7 @@ struct Command {
 const Command kCommands[] = {
     {"probe", ssc::RunProbe,
      "move the cup kinematically across a straight edge and around a disk edge; CSV + plot"},
+    {"bench", ssc::RunBench, "step cost with/without the pressure sensor (runs ssc_bench)"},
 };
 
 void PrintUsage() {

@@ -1,0 +1,61 @@
+"""Interop: the plugin library loads in the mujoco Python bindings and the scenes step there."""
+import os
+import sys
+import unittest
+
+import mujoco
+
+ROOT = os.environ.get("SSC_SOURCE_DIR", os.path.join(os.path.dirname(__file__), ".."))
+PLUGIN = os.environ["SSC_PLUGIN_LIB"]
+
+
+class PythonBindingsTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        mujoco.mj_loadPluginLibrary(PLUGIN)
+
+    def pressures(self, scene, steps, place=None):
+        m = mujoco.MjModel.from_xml_path(os.path.join(ROOT, "scenes", scene))
+        d = mujoco.MjData(m)
+        if m.nkey:
+            mujoco.mj_resetDataKeyframe(m, d, 0)
+        if place:
+            place(m, d)
+        mujoco.mj_step(m, d, steps)
+        sid = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_SENSOR, "ssc_chamber_pressure")
+        self.assertGreaterEqual(sid, 0)
+        adr, dim = m.sensor_adr[sid], m.sensor_dim[sid]
+        self.assertEqual(dim, 4)
+        return d.sensordata[adr:adr + 4].copy()
+
+    def test_probe_scene_on_plate_grasps(self):
+        def on_plate(m, d):
+            d.mocap_pos[0] = [-0.03, 0.0, 0.010 - 0.001 + 0.146]
+        p = self.pressures("probe_edge.xml", 200, on_plate)
+        self.assertTrue(all(p > 10000), p)
+
+    def test_probe_scene_in_air_reads_near_zero(self):
+        def in_air(m, d):
+            d.mocap_pos[0] = [0.0, 0.0, 0.4]
+        p = self.pressures("probe_edge.xml", 200, in_air)
+        self.assertLess(abs(p.mean()), 5.0, p)
+
+    def test_disk_benchmark_scene_compiles_and_steps(self):
+        path = os.path.join(ROOT, "scenes", "disk_benchmark.xml")
+        if not os.path.exists(path):
+            self.skipTest("scenes/disk_benchmark.xml not present")
+        p = self.pressures("disk_benchmark.xml", 100)
+        self.assertTrue(all(abs(x) < 1e6 for x in p), p)
+
+    def test_bad_config_raises_with_the_key(self):
+        xml = open(os.path.join(ROOT, "models", "ssc_tool.xml")).read().replace(
+            '<instance name="ssc_pressure"/>',
+            '<instance name="ssc_pressure"><config key="noise_pa" value="-2"/></instance>')
+        with self.assertRaises(Exception) as ctx:
+            mujoco.MjModel.from_xml_string(xml)
+        self.assertIn("noise_pa", str(ctx.exception))
+
+
+if __name__ == "__main__":
+    result = unittest.main(exit=False, verbosity=2).result
+    sys.exit(0 if result.wasSuccessful() else 1)
