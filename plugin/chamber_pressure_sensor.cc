@@ -19,6 +19,8 @@ constexpr const char* kAttributes[] = {
     "noise_pa",          "average_samples",    "lag_ms",             "seed"};
 constexpr int kNumAttributes = sizeof(kAttributes) / sizeof(kAttributes[0]);
 constexpr int kWarmStartSize = kNumChambers + 1;
+// Per-mjData noise seed (set by the application after a reset), after the warm start.
+constexpr int kSeedSlot = kSensorChainStateSize + kWarmStartSize;
 constexpr double kStartProbeFactor = 4.0;  // first-hit search range, in opening radii
 
 // One numeric config value: absent or empty -> default; otherwise must parse fully, be finite and
@@ -201,7 +203,7 @@ ChamberPressureSensor::ChamberPressureSensor(ChamberPressureConfig config, int s
                                              int sensor_adr)
     : config_(std::move(config)), site_id_(site_id), sensor_adr_(sensor_adr) {}
 
-int ChamberPressureSensor::StateSize() { return kSensorChainStateSize + kWarmStartSize; }
+int ChamberPressureSensor::StateSize() { return kSeedSlot + 1; }
 
 ChamberPressureSensor* ChamberPressureSensor::Create(const mjModel* m, mjData* d, int instance,
                                                      std::string* error) {
@@ -298,6 +300,14 @@ ChamberPressureSensor* ChamberPressureSensor::Create(const mjModel* m, mjData* d
 void ChamberPressureSensor::Reset(mjtNum* plugin_state) const {
   ResetSensorChain(reinterpret_cast<SensorChainState*>(plugin_state));
   for (int i = 0; i < kWarmStartSize; ++i) plugin_state[kSensorChainStateSize + i] = 0.0;
+  plugin_state[kSeedSlot] = 0.0;
+}
+
+void ChamberPressureSensor::SetRunSeed(const mjModel* m, mjData* d, int instance,
+                                       std::uint64_t seed) {
+  // Doubles hold integers exactly up to 2^53.
+  d->plugin_state[m->plugin_stateadr[instance] + kSeedSlot] =
+      static_cast<double>(seed & ((std::uint64_t{1} << 53) - 1));
 }
 
 void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
@@ -411,7 +421,9 @@ void ChamberPressureSensor::Compute(const mjModel* m, mjData* d, int instance) {
     sample_.flow = SolveFlowNetwork(config_.pneumatics, sample_.leak_area_m2, warm);
     for (int i = 0; i < kNumChambers; ++i) warm[i] = sample_.flow.chamber_pa[i];
     warm[kNumChambers] = sample_.flow.port_pa;
-    TakeSamples(config_.sensor, k, sample_.flow.tap_pa, state);
+    SensorChainParams sensor = config_.sensor;
+    sensor.seed ^= static_cast<std::uint64_t>(raw_state[kSeedSlot]) * 0x9E3779B97F4A7C15ULL;
+    TakeSamples(sensor, k, sample_.flow.tap_pa, state);
   }
   const std::array<double, kNumChambers> out = FilteredOutput(*state);
   for (int i = 0; i < kNumChambers; ++i) d->sensordata[sensor_adr_ + i] = out[i];

@@ -42,6 +42,7 @@
 #define SSC_PLUGIN_CHAMBER_PRESSURE_SENSOR_H_
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -102,6 +103,10 @@ class ChamberPressureSensor {
   int num_lip_segments() const { return static_cast<int>(lip_geoms_.size()); }
   int lip_geom(int segment) const { return lip_geoms_[segment]; }
   void CopyDiagnosticsFrom(const ChamberPressureSensor& other) { sample_ = other.sample_; }
+
+  // Per-run noise seed kept in mjData's plugin state (combined with the config's `seed`);
+  // mj_resetData sets it back to 0, so set it after each reset.
+  static void SetRunSeed(const mjModel* m, mjData* d, int instance, std::uint64_t seed);
 
   static void RegisterPlugin();
   static int StateSize();

@@ -1,0 +1,50 @@
+// How a trial ends, as pure logic: the swept angle about the object's centre and the
+// classification of one filtered sample into running / success / failure I / failure II /
+// unstable / timeout (the implementation tested each on a single filtered sample).
+#ifndef SSC_CONTROLLER_PURE_TRIAL_OUTCOME_H_
+#define SSC_CONTROLLER_PURE_TRIAL_OUTCOME_H_
+
+#include <array>
+#include <string>
+
+namespace ssc {
+
+struct TrialThresholds {
+  double success_sweep_deg = 355.0;   // swept angle about the centre that completes a loop
+  double off_edge_pa = 5.0;           // failure I below this mean vacuum (disk script: 5 Pa)
+  double grasp_pa = 10000.0;          // failure II when ALL four chambers exceed this
+  double max_contact_force_n = 100.0; // safety: unstable beyond this |F/T| force
+};
+
+enum class Outcome { kRunning, kSuccess, kFailureOffEdge, kFailureGrasp, kTimeout, kUnstable };
+
+// "running", "success", "failure_I", "failure_II", "timeout", "unstable".
+const char* OutcomeName(Outcome outcome);
+
+// Signed swept angle of a point about a centre, unwrapped (counter-clockwise positive seen from
+// above with world z up).
+class SweepTracker {
+ public:
+  void Reset(double centre_x, double centre_y, double x, double y);
+  void Add(double x, double y);
+  double swept_deg() const { return swept_rad_ * 57.29577951308232; }
+
+ private:
+  double cx_ = 0, cy_ = 0, last_angle_ = 0, swept_rad_ = 0;
+  bool started_ = false;
+};
+
+struct SampleCheck {
+  Outcome outcome = Outcome::kRunning;
+  std::string detail;  // the value that decided, with units
+};
+
+// Classifies one sample. Order: unstable (non-finite input, force beyond the safety limit),
+// success, failure II, failure I, timeout.
+SampleCheck ClassifySample(const TrialThresholds& t, const std::array<double, 4>& p_pa,
+                           double contact_force_n, double swept_deg, double elapsed_s,
+                           double timeout_s);
+
+}  // namespace ssc
+
+#endif  // SSC_CONTROLLER_PURE_TRIAL_OUTCOME_H_

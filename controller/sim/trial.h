@@ -1,0 +1,135 @@
+// One contour-following trial, headless or in the viewer: the same control callback.
+//
+// Phases (as on the robot): APPROACH from above the object's centre until the tared F/T reads
+// the start-up compression, then hold that height; MOVE to the start point (start_offset from the
+// centre toward start_direction); FOLLOW the edge with the contour law, one control iteration per
+// control_period; then DONE with one outcome. Failure checks run only while following.
+#ifndef SSC_CONTROLLER_SIM_TRIAL_H_
+#define SSC_CONTROLLER_SIM_TRIAL_H_
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <mujoco/mujoco.h>
+
+#include "controller/pure/contour_law.h"
+#include "controller/pure/trial_metrics.h"
+#include "controller/pure/trial_outcome.h"
+#include "controller/sim/control_dispatch.h"
+#include "controller/sim/tool_servo.h"
+#include "plugin/chamber_pressure_sensor.h"
+
+namespace ssc {
+
+enum class TrialPhase { kApproach, kMoveToStart, kFollow, kDone };
+const char* PhaseName(TrialPhase phase);
+
+struct TrialConfig {
+  ContourLawParams law;            // P_ref, beta, step, thresholds of the law
+  TrialThresholds thresholds;      // success sweep, failure I/II, safety force
+  ServoParams servo;               // look-ahead smoothing of the arm
+  // One control iteration. 0.15 s with the 0.15 s servo smoothing below gives the published
+  // speeds (about 4 step lengths per second) AND keeps dL = 7.5 mm stable; see docs/trials.md.
+  double control_period_s = 0.15;
+  double approach_force_n = 1.5;   // tared F/T compression that ends the approach, (0, 50]
+  double approach_speed_m_s = 0.005;
+  double move_speed_m_s = 0.02;    // to the start point
+  double start_offset_m = 0.032;   // start point distance from the object centre
+  double start_direction_rad = 0;  // world angle of the start point from the centre (0 = east)
+  double centre_x_m = 0.65, centre_y_m = 0.0;  // object centre (disk benchmark: W)
+  double contour_radius_m = 0.035;              // disk radius for the metrics
+  double timeout_s = 120;          // follow phase limit, simulated seconds
+  std::uint64_t seed = 1;          // sensor noise seed for this trial
+  double log_period_s = 0.02;      // path sampling for metrics and the log
+
+  // Empty when valid, else names the field and its range.
+  std::string Validate() const;
+};
+
+// One logged row (every control iteration and every log_period while following).
+struct TrialLogRow {
+  double t_s = 0;
+  Vec3 tool_m{};
+  std::array<double, 4> p_pa{};
+  double pbar_pa = 0, dpx_pa = 0, dpy_pa = 0, cf = 0;
+  double step_x_m = 0, step_y_m = 0;  // world frame
+  double ft_normal_n = 0;
+  TrialPhase phase = TrialPhase::kApproach;
+  bool iteration = false;  // a control iteration happened at this row
+};
+
+struct TrialResult {
+  std::string outcome = "running";  // success, failure_I, failure_II, timeout, unstable
+  std::string detail;               // why (e.g. the warning or the failing value)
+  DiskTrialMetrics metrics;
+  double follow_time_s = 0;         // duration of the follow phase, s
+  double sim_time_s = 0;            // total simulated time, s
+  double wall_time_s = 0;
+  double hold_height_m = 0;         // tool site height held after the approach
+  double swept_deg = 0;
+  int iterations = 0;
+  std::vector<TrialLogRow> log;     // filled when requested
+};
+
+// The controller behind mjcb_control for one mjData.
+class ContourTrial : public ControlCallback {
+ public:
+  // Binds to a model/data pair (finds the pressure sensor, the F/T sensor and the servo).
+  static std::unique_ptr<ContourTrial> Create(const mjModel* m, mjData* d,
+                                              const TrialConfig& config, bool keep_log,
+                                              std::string* error);
+  // Resets d to the scene's first keyframe (or qpos0), sets the noise seed, restarts phases.
+  void Reset();
+  void Control(const mjModel* m, mjData* d) override;
+
+  // Steps until the trial ends (or max_sim_s of simulated time). Returns the result.
+  TrialResult Run(double max_sim_s = 1e9);
+  // One physics step with instability checks; false when the trial has ended.
+  bool Step();
+
+  TrialPhase phase() const { return phase_; }
+  const TrialResult& result() const { return result_; }
+  const TrialConfig& config() const { return config_; }
+  TrialConfig& mutable_config() { return config_; }
+  const ContourStep& last_step() const { return last_step_; }
+  const std::vector<Point2>& path() const { return path_xy_; }
+
+ private:
+  ContourTrial(const mjModel* m, mjData* d, const TrialConfig& config, bool keep_log);
+  void Finish(const std::string& outcome, const std::string& detail);
+  double FtNormalForce() const;
+  std::array<double, 4> Pressures() const;
+  void Log(bool iteration);
+
+  const mjModel* m_;
+  mjData* d_;
+  TrialConfig config_;
+  bool keep_log_;
+  std::unique_ptr<ToolServo> servo_;
+  int pressure_instance_ = -1, pressure_adr_ = -1, ft_adr_ = -1, tool_site_ = -1;
+  TrialPhase phase_ = TrialPhase::kApproach;
+  double ft_tare_n_ = 0;
+  int tare_samples_ = 0;
+  double hold_z_ = 0;
+  double next_iteration_s_ = 0, next_log_s_ = 0, follow_start_s_ = 0;
+  Vec3 start_point_{};
+  SweepTracker sweep_;
+  ContourStep last_step_{};
+  std::array<double, 2> last_step_world_{};
+  std::vector<Point2> path_xy_;
+  std::vector<double> path_t_;
+  TrialResult result_;
+  std::unique_ptr<ScopedControl> registration_;
+};
+
+// Loads nothing: runs one trial on an existing model with its own mjData.
+TrialResult RunTrial(const mjModel* m, const TrialConfig& config, bool keep_log,
+                     std::string* error);
+
+}  // namespace ssc
+
+#endif  // SSC_CONTROLLER_SIM_TRIAL_H_
