@@ -17,6 +17,9 @@ struct Command {
 const Command kCommands[] = {
     {"probe", ssc::RunProbe,
      "move the cup kinematically across a straight edge and around a disk edge; CSV + plot"},
+    {"trial", ssc::RunTrialCommand, "one contour-following disk trial, headless; log + plot"},
+    {"sweep", ssc::RunSweepCommand,
+     "grid of trials over P_ref x beta x dL x repeats on all cores; resumable CSV + maps"},
     {"bench", ssc::RunBench, "step cost with/without the pressure sensor (runs ssc_bench)"},
 };
 

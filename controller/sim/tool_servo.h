@@ -18,9 +18,11 @@ namespace ssc {
 using Vec3 = std::array<double, 3>;
 
 struct ServoParams {
-  // First-order smoothing of the commanded tool position toward the target, s. The UR's servoL
-  // (0.05 s time, 0.2 s look-ahead, gain 100-200) reaches each step well inside one 0.25 s
-  // control iteration: the published 1/2/3 cm/s at 2.5/5/7.5 mm steps imply ~4 steps per second.
+  // First-order smoothing of the commanded tool position toward the target, s: the UR servoL
+  // look-ahead (0.2 s on the robot). Each iteration re-bases the target on the measured pose, so
+  // the arm realises only part of each step before the next one (1 - e^-1 = 63 % with the
+  // default 0.15 s control period); see docs/trials.md for why this, not a 4 Hz loop with full
+  // steps, reproduces both the published speeds and the stability at dL = 7.5 mm.
   double smoothing_s = 0.15;
   // Speed limit of the commanded point, m/s (UR servoL never jumps).
   double max_speed_m_s = 0.25;

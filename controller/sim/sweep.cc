@@ -1,0 +1,175 @@
+#include "controller/sim/sweep.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+#include <tuple>
+
+#include "controller/sim/mujoco_model.h"
+#include "controller/sim/trial_io.h"
+
+namespace ssc {
+namespace {
+
+using Key = std::tuple<long, long, long, int>;  // pref, beta, step in 1e-6 units; repeat
+
+Key MakeKey(double pref, double beta, double step, int repeat) {
+  auto q = [](double v) { return std::lround(v * 1e6); };
+  return {q(pref), q(beta), q(step), repeat};
+}
+
+std::uint64_t Mix(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ULL;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
+  return x ^ (x >> 31);
+}
+
+// Reads the keys of rows already in the CSV (resume). Rows that do not parse are ignored.
+std::set<Key> FinishedRows(const std::string& path, bool* has_header) {
+  std::set<Key> done;
+  *has_header = false;
+  std::ifstream f(path);
+  std::string line;
+  while (std::getline(f, line)) {
+    if (line.rfind("scene,", 0) == 0) {
+      *has_header = true;
+      continue;
+    }
+    std::stringstream ss(line);
+    std::string cell;
+    std::vector<std::string> cells;
+    while (std::getline(ss, cell, ',') && cells.size() < 7) cells.push_back(cell);
+    if (cells.size() < 7 || cells[6].empty()) continue;
+    try {
+      done.insert(MakeKey(std::stod(cells[1]), std::stod(cells[2]), std::stod(cells[3]),
+                          std::stoi(cells[4])));
+    } catch (...) {
+      continue;  // a torn last line from an interrupted run: that trial runs again
+    }
+  }
+  return done;
+}
+
+// MuJoCo calls mju_user_error on fatal errors (the default exits the process); a sweep turns
+// them into an exception caught per trial so the sweep goes on.
+thread_local bool t_in_trial = false;
+void ThrowingError(const char* msg) {
+  if (t_in_trial) throw std::runtime_error(msg);
+  std::fprintf(stderr, "MuJoCo error: %s\n", msg);
+  std::abort();
+}
+
+}  // namespace
+
+std::uint64_t TrialSeed(std::uint64_t base, double pref, double beta, double step, int repeat) {
+  const Key k = MakeKey(pref, beta, step, repeat);
+  std::uint64_t h = Mix(base);
+  h = Mix(h ^ static_cast<std::uint64_t>(std::get<0>(k)));
+  h = Mix(h ^ static_cast<std::uint64_t>(std::get<1>(k)));
+  h = Mix(h ^ static_cast<std::uint64_t>(std::get<2>(k)));
+  h = Mix(h ^ static_cast<std::uint64_t>(std::get<3>(k)));
+  return h & ((std::uint64_t{1} << 53) - 1);
+}
+
+bool RunSweep(const mjModel* m, const SweepSpec& spec,
+              const std::function<void(const SweepProgress&)>& progress, SweepSummary* summary,
+              std::string* error) {
+  if (spec.pref_pa.empty() || spec.beta.empty() || spec.step_mm.empty() || spec.repeats < 1) {
+    *error = "sweep grid is empty (need at least one P_ref, beta, step and repeat)";
+    return false;
+  }
+  struct Job {
+    TrialConfig config;
+    int repeat;
+  };
+  std::vector<Job> jobs;
+  bool has_header = false;
+  const std::set<Key> done = FinishedRows(spec.out_csv, &has_header);
+  int total = 0, skipped = 0;
+  for (double pref : spec.pref_pa) {
+    for (double beta : spec.beta) {
+      for (double step : spec.step_mm) {
+        for (int rep = 0; rep < spec.repeats; ++rep) {
+          ++total;
+          if (done.count(MakeKey(pref, beta, step, rep))) {
+            ++skipped;
+            continue;
+          }
+          Job job{spec.base, rep};
+          job.config.law.p_ref_pa = pref;
+          job.config.law.beta = beta;
+          job.config.law.step_mm = step;
+          job.config.seed = TrialSeed(spec.seed, pref, beta, step, rep);
+          if (const std::string e = job.config.Validate(); !e.empty()) {
+            *error = "sweep point P_ref=" + std::to_string(pref) + " beta=" +
+                     std::to_string(beta) + " step=" + std::to_string(step) + ": " + e;
+            return false;
+          }
+          jobs.push_back(job);
+        }
+      }
+    }
+  }
+  std::ofstream out(spec.out_csv, std::ios::app);
+  if (!out) {
+    *error = spec.out_csv + ": cannot open for appending";
+    return false;
+  }
+  if (!has_header) out << SweepCsvHeader() << '\n' << std::flush;
+
+  auto* previous_error = mju_user_error;
+  mju_user_error = ThrowingError;
+  std::mutex out_mutex;
+  std::atomic<size_t> next{0};
+  int finished = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  auto worker = [&]() {
+    for (size_t i = next++; i < jobs.size(); i = next++) {
+      TrialResult result;
+      std::string trial_error;
+      t_in_trial = true;
+      try {
+        result = RunTrial(m, jobs[i].config, false, &trial_error);
+      } catch (const std::exception& e) {
+        result = TrialResult();
+        result.outcome = "unstable";
+        result.detail = std::string("MuJoCo error: ") + e.what();
+      }
+      t_in_trial = false;
+      const std::string row = SweepCsvRow(spec.scene_name, jobs[i].config, jobs[i].repeat, result);
+      std::lock_guard<std::mutex> lock(out_mutex);
+      out << row << '\n' << std::flush;
+      ++finished;
+      if (progress) {
+        SweepProgress p;
+        p.done = finished + skipped;
+        p.total = total;
+        p.skipped = skipped;
+        p.elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        progress(p);
+      }
+    }
+  };
+  const int n_threads = std::max(1, std::min<int>(spec.threads, static_cast<int>(jobs.size())));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < n_threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  mju_user_error = previous_error;
+
+  summary->total = total;
+  summary->skipped = skipped;
+  summary->ran = static_cast<int>(jobs.size());
+  summary->wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return true;
+}
+
+}  // namespace ssc

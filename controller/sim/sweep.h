@@ -1,0 +1,49 @@
+// Parameter sweeps: a grid of P_ref x beta x step x repeats, run on several threads, one CSV row
+// per trial appended and flushed as each trial ends. Re-running the same sweep resumes: rows
+// already in the CSV (same pref, beta, step, repeat) are skipped. Seeds depend only on the base
+// seed and the grid point, so any thread count gives the same rows.
+#ifndef SSC_CONTROLLER_SIM_SWEEP_H_
+#define SSC_CONTROLLER_SIM_SWEEP_H_
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "controller/sim/trial.h"
+
+namespace ssc {
+
+struct SweepSpec {
+  std::string scene_name;           // written into each row
+  TrialConfig base;                 // everything but P_ref, beta, step, seed
+  std::vector<double> pref_pa, beta, step_mm;
+  int repeats = 3;
+  std::uint64_t seed = 1;
+  int threads = 1;
+  std::string out_csv;
+};
+
+struct SweepProgress {
+  int done = 0, total = 0, skipped = 0;
+  double elapsed_s = 0;
+};
+
+struct SweepSummary {
+  int total = 0, skipped = 0, ran = 0;
+  double wall_s = 0;
+};
+
+// Seed of one grid point (stable across thread counts and runs).
+std::uint64_t TrialSeed(std::uint64_t base, double pref, double beta, double step, int repeat);
+
+// Runs the sweep on `m` (shared read-only by the threads). `progress` (optional) is called from
+// worker threads after each trial, serialised. False + *error on I/O or spec errors; trial
+// failures, instabilities and MuJoCo errors are rows, not errors.
+bool RunSweep(const mjModel* m, const SweepSpec& spec,
+              const std::function<void(const SweepProgress&)>& progress, SweepSummary* summary,
+              std::string* error);
+
+}  // namespace ssc
+
+#endif  // SSC_CONTROLLER_SIM_SWEEP_H_

@@ -1,0 +1,61 @@
+#!/usr/bin/env python3
+"""Success-rate maps per step length over (P_ref, beta), like the published maps.
+
+usage: plot_success_maps.py sweep.csv out.png
+"""
+import csv
+import sys
+from collections import defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    with open(sys.argv[1], newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        sys.exit(f"{sys.argv[1]}: no rows")
+    cells = defaultdict(list)
+    for r in rows:
+        cells[(float(r["step_mm"]), float(r["pref_pa"]), float(r["beta"]))].append(r["outcome"])
+    steps = sorted({k[0] for k in cells})
+    prefs = sorted({k[1] for k in cells})
+    betas = sorted({k[2] for k in cells})
+    fig, axes = plt.subplots(1, len(steps), figsize=(4.5 * len(steps), 4.2), squeeze=False)
+    for ax, step in zip(axes[0], steps):
+        grid = [[float("nan")] * len(prefs) for _ in betas]
+        for (s, p, b), outcomes in cells.items():
+            if s != step:
+                continue
+            grid[betas.index(b)][prefs.index(p)] = outcomes.count("success") / len(outcomes)
+        im = ax.imshow(grid, origin="lower", cmap="RdYlGn", vmin=0, vmax=1, aspect="auto")
+        for (s, p, b), outcomes in cells.items():
+            if s != step:
+                continue
+            n = len(outcomes)
+            ok = outcomes.count("success")
+            mark = "" if ok == n else ("I" if outcomes.count("failure_I") >= outcomes.count(
+                "failure_II") else "II")
+            if outcomes.count("unstable"):
+                mark = "U"
+            ax.text(prefs.index(p), betas.index(b), f"{ok}/{n}\n{mark}", ha="center",
+                    va="center", fontsize=6)
+        ax.set_xticks(range(len(prefs)))
+        ax.set_xticklabels([f"{p:g}" for p in prefs])
+        ax.set_yticks(range(len(betas)))
+        ax.set_yticklabels([f"{b:g}" for b in betas])
+        ax.set_xlabel("P_ref (Pa)")
+        ax.set_ylabel("beta")
+        ax.set_title(f"dL = {step:g} mm")
+    fig.colorbar(im, ax=axes[0].tolist(), label="success rate")
+    fig.suptitle("success rate (I / II: dominant failure mode)")
+    fig.savefig(sys.argv[2], dpi=110, bbox_inches="tight")
+
+
+if __name__ == "__main__":
+    main()
