@@ -1,0 +1,100 @@
+#include "controller/pure/trial_metrics.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "controller/pure/trial_outcome.h"
+
+namespace ssc {
+namespace {
+
+std::vector<Point2> Circle(double cx, double cy, double r, int n, double ripple = 0, int k = 0) {
+  std::vector<Point2> p;
+  for (int i = 0; i <= n; ++i) {
+    const double th = 2 * M_PI * i / n;
+    const double rr = r + ripple * std::sin(k * th);
+    p.push_back({cx + rr * std::cos(th), cy + rr * std::sin(th)});
+  }
+  return p;
+}
+
+TEST(TrialMetricsTest, PerfectCircle) {
+  const int n = 20000;
+  const auto path = Circle(0.65, 0, 0.0325, n);
+  std::vector<double> t(path.size());
+  for (size_t i = 0; i < t.size(); ++i) t[i] = 10.0 * static_cast<double>(i) / n;
+  const DiskTrialMetrics m = ComputeDiskMetrics(path, t, {0.65, 0}, 0.035);
+  EXPECT_NEAR(m.s_mm, 2 * M_PI * 32.5, 1e-3);
+  EXPECT_NEAR(m.r_mean_mm, 32.5, 1e-9);
+  EXPECT_NEAR(m.dr_mm, -2.5, 1e-9);
+  EXPECT_NEAR(m.sigma_r_mm, 0.0, 1e-6);
+  EXPECT_NEAR(m.s_c, 32.5 / 35 - 1, 1e-6);
+  EXPECT_NEAR(m.duration_s, 10.0, 1e-12);
+  EXPECT_NEAR(m.speed_mm_s, 2 * M_PI * 32.5 / 10, 1e-3);
+  EXPECT_NEAR(m.speed_body_d_s, m.speed_mm_s / 23.0, 1e-12);
+  EXPECT_NEAR(m.contour_mean_mm, 2.5, 1e-9);
+  EXPECT_NEAR(m.contour_max_mm, 2.5, 1e-9);
+}
+
+TEST(TrialMetricsTest, SinusoidalRipple) {
+  const double r0 = 0.033, a = 0.0015;
+  const int k = 7, n = 70000;
+  const auto path = Circle(0, 0, r0, n, a, k);
+  const DiskTrialMetrics m = ComputeDiskMetrics(path, {}, {0, 0}, 0.035);
+  // sigma of a sin over whole periods: a / sqrt(2); mean radius r0.
+  EXPECT_NEAR(m.r_mean_mm, r0 * 1e3, 1e-3);
+  EXPECT_NEAR(m.sigma_r_mm, a / std::sqrt(2.0) * 1e3, 1e-3);
+  // Length: integral of sqrt(r^2 + r'^2) dtheta, by fine quadrature.
+  double s = 0;
+  const int q = 400000;
+  for (int i = 0; i < q; ++i) {
+    const double th = 2 * M_PI * (i + 0.5) / q;
+    const double r = r0 + a * std::sin(k * th), dr = a * k * std::cos(k * th);
+    s += std::sqrt(r * r + dr * dr) * 2 * M_PI / q;
+  }
+  EXPECT_NEAR(m.s_mm / (s * 1e3), 1.0, 1e-6);
+  EXPECT_NEAR(m.contour_max_mm, (0.035 - (r0 - a)) * 1e3, 1e-3);
+}
+
+TEST(TrialMetricsTest, GenericContourDistance) {
+  // A straight contour y = 0: distances are |y|.
+  const std::vector<Point2> path = {{0, 0.001}, {0.01, -0.003}, {0.02, 0.002}};
+  const auto e = ContourError(path, [](double, double y) { return std::fabs(y); });
+  EXPECT_NEAR(e[0], 0.002, 1e-15);
+  EXPECT_NEAR(e[1], 0.003, 1e-15);
+}
+
+TEST(SweepTrackerTest, CountsCounterClockwisePositiveAndUnwraps) {
+  SweepTracker ccw;
+  ccw.Reset(0, 0, 1, 0);
+  for (int i = 1; i <= 720; ++i) ccw.Add(std::cos(i * M_PI / 360), std::sin(i * M_PI / 360));
+  EXPECT_NEAR(ccw.swept_deg(), 360.0, 1e-9);
+  SweepTracker cw;
+  cw.Reset(5, 5, 4, 5);  // start west of the centre, at 180 deg: crosses the +-180 cut at once
+  for (int i = 1; i <= 360; ++i) {
+    cw.Add(5 + std::cos(M_PI + i * M_PI / 180), 5 - std::sin(M_PI + i * M_PI / 180));
+  }
+  EXPECT_NEAR(cw.swept_deg(), -360.0, 1e-9);
+}
+
+TEST(TrialOutcomeTest, ClassifiesEachEnd) {
+  TrialThresholds t;
+  auto cls = [&](std::array<double, 4> p, double force, double swept, double elapsed) {
+    return ClassifySample(t, p, force, swept, elapsed, 100).outcome;
+  };
+  EXPECT_EQ(cls({100, 0, 0, 100}, 1.5, 100, 10), Outcome::kRunning);
+  EXPECT_EQ(cls({100, 0, 0, 100}, 1.5, 355, 10), Outcome::kSuccess);
+  EXPECT_EQ(cls({1, 2, 3, 4}, 1.5, 100, 10), Outcome::kFailureOffEdge);       // mean 2.5 < 5
+  EXPECT_EQ(cls({5, 5, 5, 5}, 1.5, 100, 10), Outcome::kRunning);              // mean 5: not below
+  EXPECT_EQ(cls({20000, 20000, 20000, 20000}, 1.5, 100, 10), Outcome::kFailureGrasp);
+  EXPECT_EQ(cls({20000, 20000, 20000, 9000}, 1.5, 100, 10), Outcome::kRunning);  // not all
+  EXPECT_EQ(cls({100, 0, 0, 100}, 101, 100, 10), Outcome::kUnstable);
+  EXPECT_EQ(cls({NAN, 0, 0, 100}, 1.5, 100, 10), Outcome::kUnstable);
+  EXPECT_EQ(cls({100, 0, 0, 100}, 1.5, 100, 101), Outcome::kTimeout);
+  EXPECT_STREQ(OutcomeName(Outcome::kFailureOffEdge), "failure_I");
+  EXPECT_STREQ(OutcomeName(Outcome::kFailureGrasp), "failure_II");
+}
+
+}  // namespace
+}  // namespace ssc
