@@ -90,11 +90,16 @@ std::unique_ptr<ContourTrial> ContourTrial::Create(const mjModel* m, mjData* d,
     return nullptr;
   }
   trial->Reset();
-  if (!trial->servo_->Init(m, d, trial->tool_site_, error)) return nullptr;
+  if (!trial->active_) {
+    // Bind once more to get the servo's reason.
+    trial->servo_->Init(m, d, trial->tool_site_, error);
+    return nullptr;
+  }
   return trial;
 }
 
 void ContourTrial::Reset() {
+  active_ = false;  // mj_forward below calls the control callback: not before the servo is bound
   if (m_->nkey > 0) {
     mj_resetDataKeyframe(m_, d_, 0);
   } else {
@@ -115,7 +120,7 @@ void ContourTrial::Reset() {
   last_step_ = ContourStep{};
   if (servo_) {
     std::string ignored;
-    servo_->Init(m_, d_, tool_site_, &ignored);
+    active_ = servo_->Init(m_, d_, tool_site_, &ignored);
   }
   const double th = config_.start_direction_rad;
   start_point_ = {config_.centre_x_m + config_.start_offset_m * std::cos(th),
@@ -169,6 +174,7 @@ void ContourTrial::Finish(const std::string& outcome, const std::string& detail)
 void ContourTrial::Control(const mjModel* m, mjData* d) {
   (void)m;
   (void)d;
+  if (!active_) return;
   const double t = d_->time;
   const Vec3 tool = servo_->Measured(d_);
   switch (phase_) {

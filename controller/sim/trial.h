@@ -112,6 +112,7 @@ class ContourTrial : public ControlCallback {
   std::unique_ptr<ToolServo> servo_;
   int pressure_instance_ = -1, pressure_adr_ = -1, ft_adr_ = -1, tool_site_ = -1;
   TrialPhase phase_ = TrialPhase::kApproach;
+  bool active_ = false;  // the servo is bound; the callback may act
   double ft_tare_n_ = 0;
   int tare_samples_ = 0;
   double hold_z_ = 0;
