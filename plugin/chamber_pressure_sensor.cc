@@ -113,7 +113,7 @@ std::optional<ChamberPressureConfig> ChamberPressureConfig::FromModel(const mjMo
     return {};
   }
   const char* groups = mj_getPluginConfig(m, instance, "ray_groups");
-  if (groups == nullptr || groups[0] == '\0') groups = "0 1 2";
+  if (groups == nullptr || groups[0] == '\0') groups = "0 2";
   {
     std::istringstream in(groups);
     std::string token;
@@ -346,6 +346,7 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
     const mjtNum along = mju_dot3(rel, axis_z);
     mjtNum start[3];
     for (int k = 0; k < 3; ++k) start[k] = gp[k] - (along + config_.ray_start_m) * axis_z[k];
+    // Only gaps within the seal distance matter: the cutoff lets MuJoCo skip far geoms.
     const mjtNum t = mj_ray(m, d, start, axis_z, groups, 1, -1, &geom_hit, nullptr);
     ++rays;
     s.gap_m = t < 0 ? 1.0 : std::max(0.0, t - config_.ray_start_m);

@@ -31,7 +31,7 @@
 //   geometry:  opening_radius_mm 5.5 [0.5, 50]; seal_distance_mm 0.5 [0, 10];
 //              lip_roughness_um 18 [0, 1000]; rays_per_chamber 4 [1, 64];
 //              ray_start_mm 10 [0.1, 1000] (rays start this far above the lip plane);
-//              ray_groups "0 1 2" (geom groups 0..5 the rays see); lip_geom_group 4 [0, 5]
+//              ray_groups "0 2" (geom groups 0..5 the rays see; group 1 is the robot); lip_geom_group 4 [0, 5]
 //   pneumatics: pump_max_vacuum_pa 40000 (0, 100000); pump_free_flow_lpm 12.9 (0, 60000];
 //              port_area_mm2 22 (0, 10000]; neighbour_area_mm2 0.5 [0, 10000];
 //              tap_recovery 0.97 [0, 1]; jet_area_mm2 7 (0, 10000];
