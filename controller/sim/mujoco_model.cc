@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <mutex>
 #include <sstream>
@@ -61,7 +62,9 @@ std::string SourceDir() {
 }
 
 std::string ResolveScenePath(const std::string& scene) {
-  if (FileExists(scene)) return scene;
+  // Absolute: MuJoCo 4.0 mis-resolves a model asset's relative path inside an <include> of a
+  // relatively named main file ("scenes/x.xml" + "../models/..." loses the "..").
+  if (FileExists(scene)) return std::filesystem::absolute(scene).lexically_normal().string();
   const std::string dir = SourceDir() + "/scenes/";
   if (FileExists(dir + scene)) return dir + scene;
   if (FileExists(dir + scene + ".xml")) return dir + scene + ".xml";
