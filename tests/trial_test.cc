@@ -187,3 +187,27 @@ TEST(ControlDispatchTest, EachDataReachesItsOwnControllerAcrossThreads) {
 
 }  // namespace
 }  // namespace ssc
+
+namespace ssc {
+namespace {
+
+TEST(TrialEndsTest, TimeoutWhenTheFollowPhaseRunsOutOfTime) {
+  TrialConfig c;
+  c.timeout_s = 1.0;
+  const TrialResult r = Trial(100, 2.0, 2.5, 1, c);
+  EXPECT_EQ(r.outcome, "timeout") << r.detail;
+}
+
+TEST(TrialEndsTest, DivergingSimulationIsUnstableNotAControllerResult) {
+  // A copy of the scene with a time step far beyond what the lip springs tolerate.
+  mjModel* m = mj_copyModel(nullptr, Scene());
+  m->opt.timestep = 0.2;
+  m->opt.integrator = mjINT_EULER;
+  std::string error;
+  const TrialResult r = RunTrial(m, TrialConfig{}, false, &error);
+  EXPECT_EQ(r.outcome, "unstable") << r.detail;
+  mj_deleteModel(m);
+}
+
+}  // namespace
+}  // namespace ssc
