@@ -77,14 +77,14 @@ TEST(TrialTest, ObjectOnTheRightTravelsClockwise) {
 
 TEST(TrialTest, StartingOffTheObjectIsFailureOne) {
   TrialConfig c;
-  c.start_offset_m = 0.050;  // 15 mm beyond the edge: nothing under the cup
+  c.target.start = {0.65 + 0.050, 0.0};  // 15 mm beyond the edge: nothing under the cup
   const TrialResult r = Trial(100, 2.0, 2.5, 1, c);
   EXPECT_EQ(r.outcome, "failure_I") << r.detail;
 }
 
 TEST(TrialTest, PushedOntoTheSurfaceIsFailureTwo) {
   TrialConfig c;
-  c.start_offset_m = 0.0;  // stay on the disk centre: the cup seals
+  c.target.start = {0.65, 0.0};  // stay on the disk centre: the cup seals
   const TrialResult r = Trial(100, 2.0, 2.5, 1, c);
   EXPECT_EQ(r.outcome, "failure_II") << r.detail;
 }

@@ -19,6 +19,16 @@ bool Finite(double v) { return std::isfinite(v); }
 
 }  // namespace
 
+TrialTarget TrialTarget::Disk(double centre_x_m, double centre_y_m, double radius_m,
+                              double start_offset_m) {
+  TrialTarget t;
+  t.approach = {centre_x_m, centre_y_m};
+  t.start = {centre_x_m + start_offset_m, centre_y_m};
+  t.sweep_centre = {centre_x_m, centre_y_m};
+  t.disk_radius_m = radius_m;
+  return t;
+}
+
 const char* PhaseName(TrialPhase phase) {
   switch (phase) {
     case TrialPhase::kApproach: return "approach";
@@ -39,8 +49,12 @@ std::string TrialConfig::Validate() const {
     return RangeError("approach_speed_m_s", approach_speed_m_s, "(0, 0.1] m/s");
   if (!Finite(move_speed_m_s) || move_speed_m_s <= 0 || move_speed_m_s > 0.5)
     return RangeError("move_speed_m_s", move_speed_m_s, "(0, 0.5] m/s");
-  if (!Finite(start_offset_m) || start_offset_m < 0 || start_offset_m > 0.5)
-    return RangeError("start_offset_m", start_offset_m, "[0, 0.5] m");
+  if (!Finite(target.start[0]) || !Finite(target.start[1]) || !Finite(target.approach[0]) ||
+      !Finite(target.approach[1]))
+    return "target start/approach points must be finite";
+  if (!Finite(target.success_sweep_deg) || std::fabs(target.success_sweep_deg) < 1 ||
+      std::fabs(target.success_sweep_deg) > 3600)
+    return RangeError("success_sweep_deg", target.success_sweep_deg, "+-[1, 3600] deg");
   if (!Finite(timeout_s) || timeout_s <= 0 || timeout_s > 3600)
     return RangeError("timeout_s", timeout_s, "(0, 3600] s");
   if (!Finite(servo.smoothing_s) || servo.smoothing_s < 0 || servo.smoothing_s > 5)
@@ -122,9 +136,8 @@ void ContourTrial::Reset() {
     std::string ignored;
     active_ = servo_->Init(m_, d_, tool_site_, &ignored);
   }
-  const double th = config_.start_direction_rad;
-  start_point_ = {config_.centre_x_m + config_.start_offset_m * std::cos(th),
-                  config_.centre_y_m + config_.start_offset_m * std::sin(th), 0};
+  start_point_ = {config_.target.start[0], config_.target.start[1], 0};
+  transfer_done_ = false;
 }
 
 double ContourTrial::FtNormalForce() const {
@@ -164,10 +177,22 @@ void ContourTrial::Finish(const std::string& outcome, const std::string& detail)
   result_.sim_time_s = d_->time;
   result_.follow_time_s = follow_start_s_ > 0 ? d_->time - follow_start_s_ : 0;
   result_.swept_deg = sweep_.swept_deg();
+  const TrialTarget& tg = config_.target;
+  if (!path_xy_.empty() && tg.arc_position_m) {
+    result_.end_arc_mm = tg.arc_position_m(path_xy_.back()[0], path_xy_.back()[1]) * 1e3;
+  }
   if (path_xy_.size() >= 2) {
-    result_.metrics = ComputeDiskMetrics(path_xy_, path_t_,
-                                         {config_.centre_x_m, config_.centre_y_m},
-                                         config_.contour_radius_m);
+    result_.metrics = ComputeDiskMetrics(path_xy_, path_t_, tg.sweep_centre,
+                                         tg.disk_radius_m > 0 ? tg.disk_radius_m : 1.0);
+    if (tg.disk_radius_m <= 0) {  // r_mean etc. mean nothing without a disk
+      result_.metrics.r_mean_mm = result_.metrics.dr_mm = result_.metrics.sigma_r_mm = 0;
+      result_.metrics.s_c = 0;
+    }
+    if (tg.contour_distance_m) {
+      const auto e = ContourError(path_xy_, tg.contour_distance_m);
+      result_.metrics.contour_mean_mm = e[0] * 1e3;
+      result_.metrics.contour_max_mm = e[1] * 1e3;
+    }
   }
 }
 
@@ -185,7 +210,27 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
         ++tare_samples_;
         break;
       }
-      if (FtNormalForce() >= config_.approach_force_n) {
+      // First carry the cup, at its starting height, over the landing point.
+      if (!transfer_done_) {
+        Vec3 target = servo_->target();
+        const double dx = config_.target.approach[0] - target[0];
+        const double dy = config_.target.approach[1] - target[1];
+        const double dist = std::hypot(dx, dy), step = config_.move_speed_m_s * m_->opt.timestep;
+        if (dist > step) {
+          target[0] += dx / dist * step;
+          target[1] += dy / dist * step;
+          servo_->SetTarget(target);
+          break;
+        }
+        target[0] = config_.target.approach[0];
+        target[1] = config_.target.approach[1];
+        servo_->SetTarget(target);
+        if (std::hypot(tool[0] - target[0], tool[1] - target[1]) > 2e-4) break;
+        transfer_done_ = true;
+      }
+      const bool deep_enough =
+          tool[2] <= config_.target.surface_top_z_m - config_.target.max_compression_m;
+      if (FtNormalForce() >= config_.approach_force_n || deep_enough) {
         hold_z_ = tool[2];
         result_.hold_height_m = hold_z_;
         servo_->SetTarget({tool[0], tool[1], hold_z_});
@@ -214,7 +259,8 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
           follow_start_s_ = t;
           next_iteration_s_ = t;
           next_log_s_ = t;
-          sweep_.Reset(config_.centre_x_m, config_.centre_y_m, tool[0], tool[1]);
+          sweep_.Reset(config_.target.sweep_centre[0], config_.target.sweep_centre[1], tool[0],
+                       tool[1]);
         }
       }
       target[2] = hold_z_;
@@ -241,9 +287,19 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
       // Measured pose + step, height held.
       servo_->SetTarget({tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], hold_z_});
       Log(true);
-      const SampleCheck check = ClassifySample(config_.thresholds, p, FtNormalForce(),
-                                               sweep_.swept_deg(), t - follow_start_s_,
-                                               config_.timeout_s);
+      // Progress toward success, in the classifier's terms (degrees of sweep).
+      const TrialTarget& tg = config_.target;
+      double progress_deg = 0;
+      TrialThresholds thresholds = config_.thresholds;
+      if (tg.open_contour) {
+        const bool reached = tg.arc_position_m && tg.arc_position_m(tool[0], tool[1]) >= tg.end_arc_m;
+        progress_deg = reached ? thresholds.success_sweep_deg : 0;
+      } else {
+        thresholds.success_sweep_deg = std::fabs(tg.success_sweep_deg);
+        progress_deg = tg.success_sweep_deg < 0 ? -sweep_.swept_deg() : sweep_.swept_deg();
+      }
+      const SampleCheck check = ClassifySample(thresholds, p, FtNormalForce(), progress_deg,
+                                               t - follow_start_s_, config_.timeout_s);
       if (check.outcome != Outcome::kRunning) Finish(OutcomeName(check.outcome), check.detail);
       break;
     }

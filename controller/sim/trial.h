@@ -28,6 +28,28 @@ namespace ssc {
 enum class TrialPhase { kApproach, kMoveToStart, kFollow, kDone };
 const char* PhaseName(TrialPhase phase);
 
+// What the trial follows: the landing and start points, how it succeeds, and the true contour
+// for the metrics. The default is the disk benchmark (35 mm disk at W = (0.65, 0), start 32 mm
+// east of its centre).
+struct TrialTarget {
+  Point2 approach{0.65, 0.0};      // the cup descends here (world x/y, m)
+  Point2 start{0.682, 0.0};        // cup centre when following starts
+  Point2 sweep_centre{0.65, 0.0};  // closed contours: swept angle measured about this point
+  double success_sweep_deg = 355;  // > 0 counter-clockwise, < 0 clockwise (holes)
+  bool open_contour = false;       // open: success when arc position passes end_arc_m
+  double end_arc_m = 0;
+  double disk_radius_m = 0.035;    // > 0: r_mean / dr / sigma_r about sweep_centre
+  double surface_top_z_m = 0.010;  // the approach never takes the lip plane deeper than
+                                   // max_compression_m below this
+  double max_compression_m = 0.002;
+  std::function<double(double, double)> contour_distance_m;  // unset: the disk circle
+  std::function<double(double, double)> arc_position_m;      // open contours
+
+  // The disk benchmark with its start point `start_offset_m` east of the centre.
+  static TrialTarget Disk(double centre_x_m, double centre_y_m, double radius_m,
+                          double start_offset_m);
+};
+
 struct TrialConfig {
   ContourLawParams law;            // P_ref, beta, step, thresholds of the law
   TrialThresholds thresholds;      // success sweep, failure I/II, safety force
@@ -38,10 +60,7 @@ struct TrialConfig {
   double approach_force_n = 1.5;   // tared F/T compression that ends the approach, (0, 50]
   double approach_speed_m_s = 0.005;
   double move_speed_m_s = 0.02;    // to the start point
-  double start_offset_m = 0.032;   // start point distance from the object centre
-  double start_direction_rad = 0;  // world angle of the start point from the centre (0 = east)
-  double centre_x_m = 0.65, centre_y_m = 0.0;  // object centre (disk benchmark: W)
-  double contour_radius_m = 0.035;              // disk radius for the metrics
+  TrialTarget target;              // where to land, start and finish (default: the disk)
   double timeout_s = 120;          // follow phase limit, simulated seconds
   std::uint64_t seed = 1;          // sensor noise seed for this trial
   double log_period_s = 0.02;      // path sampling for metrics and the log
@@ -71,6 +90,7 @@ struct TrialResult {
   double wall_time_s = 0;
   double hold_height_m = 0;         // tool site height held after the approach
   double swept_deg = 0;
+  double end_arc_mm = 0;            // open contours: arc position reached (where it was lost)
   int iterations = 0;
   std::vector<TrialLogRow> log;     // filled when requested
 };
@@ -113,6 +133,7 @@ class ContourTrial : public ControlCallback {
   int pressure_instance_ = -1, pressure_adr_ = -1, ft_adr_ = -1, tool_site_ = -1;
   TrialPhase phase_ = TrialPhase::kApproach;
   bool active_ = false;  // the servo is bound; the callback may act
+  bool transfer_done_ = false;  // over the landing point
   double ft_tare_n_ = 0;
   int tare_samples_ = 0;
   double hold_z_ = 0;

@@ -81,7 +81,8 @@ bool WriteTrialSummaryJson(const std::string& path, const std::string& scene,
     << "\", \"control_period_s\": " << Num(c.control_period_s)
     << ", \"servo_smoothing_s\": " << Num(c.servo.smoothing_s)
     << ", \"approach_force_n\": " << Num(c.approach_force_n)
-    << ", \"start_offset_mm\": " << Num(c.start_offset_m * 1e3)
+    << ", \"start_x_mm\": " << Num(c.target.start[0] * 1e3)
+    << ", \"start_y_mm\": " << Num(c.target.start[1] * 1e3)
     << ", \"timeout_s\": " << Num(c.timeout_s) << "},\n"
     << "  \"seed\": " << c.seed << ",\n"
     << "  \"outcome\": \"" << r.outcome << "\",\n"
@@ -92,7 +93,8 @@ bool WriteTrialSummaryJson(const std::string& path, const std::string& scene,
     << ", \"speed_mm_s\": " << Num(m.speed_mm_s) << ", \"speed_body_d_s\": "
     << Num(m.speed_body_d_s) << ", \"contour_mean_mm\": " << Num(m.contour_mean_mm)
     << ", \"contour_max_mm\": " << Num(m.contour_max_mm) << ", \"swept_deg\": "
-    << Num(r.swept_deg) << ", \"iterations\": " << r.iterations << "},\n"
+    << Num(r.swept_deg) << ", \"end_arc_mm\": " << Num(r.end_arc_mm)
+    << ", \"iterations\": " << r.iterations << "},\n"
     << "  \"sim_time_s\": " << Num(r.sim_time_s) << ",\n"
     << "  \"wall_time_s\": " << Num(r.wall_time_s) << ",\n"
     << "  \"hold_height_mm\": " << Num(r.hold_height_m * 1e3) << "\n"
