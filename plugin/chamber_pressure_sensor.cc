@@ -21,7 +21,6 @@ constexpr int kNumAttributes = sizeof(kAttributes) / sizeof(kAttributes[0]);
 constexpr int kWarmStartSize = kNumChambers + 1;
 // Per-mjData noise seed (set by the application after a reset), after the warm start.
 constexpr int kSeedSlot = kSensorChainStateSize + kWarmStartSize;
-constexpr double kStartProbeFactor = 4.0;  // first-hit search range, in opening radii
 
 // One numeric config value: absent or empty -> default; otherwise must parse fully, be finite and
 // lie in [lo, hi] (open ends where flagged).
@@ -293,7 +292,6 @@ ChamberPressureSensor* ChamberPressureSensor::Create(const mjModel* m, mjData* d
   sensor->ray_dirs_world_.resize(3 * n_rays);
   sensor->ray_geom_.resize(n_rays);
   sensor->ray_dist_.resize(n_rays);
-  sensor->ray_normal_.resize(3 * n_rays);
   return sensor;
 }
 
@@ -371,37 +369,51 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
     mju_mulMatVec3(ray_dirs_world_.data() + 3 * r, site_mat, ray_dirs_local_.data() + 3 * r);
   }
   const double radius = geo.opening_radius_m;
-  // A wider cutoff than the opening radius: a first hit just beyond the opening still tells,
-  // by its normal, whether the ray started inside a surface.
   mj_multiRay(m, const_cast<mjData*>(d), origin, ray_dirs_world_.data(), groups, 1, -1,
-              ray_geom_.data(), ray_dist_.data(), ray_normal_.data(), n_rays,
-              kStartProbeFactor * radius);
+              ray_geom_.data(), ray_dist_.data(), nullptr, n_rays, radius);
   rays += n_rays;
   const double dtheta = 0.5 * M_PI / per;
   constexpr double kStepPast = 1e-6;  // restart just past a crossing, metres
+  // The horizontal rays give where surfaces begin and end (exactly); whether the stretch between
+  // two hits is covered is asked of a vertical ray at its middle, with the same seal-distance
+  // rule as the centre. Hits then need no interpretation, so the seams between adjacent convex
+  // pieces of one object, overlapping geoms and height fields all read right; the first stretch
+  // contains the centre and takes its state.
+  auto covered_at = [&](double along) {
+    mjtNum start[3];
+    for (int q = 0; q < 3; ++q) {
+      start[q] = site_pos[q] + along * dir_scratch_[q] - config_.ray_start_m * axis_z[q];
+    }
+    const mjtNum tv = mj_ray(m, d, start, axis_z, groups, 1, -1, &geom_hit, nullptr);
+    ++rays;
+    return tv >= 0 && tv - config_.ray_start_m <= geo.seal_distance_m;
+  };
   for (int c = 0; c < kNumChambers; ++c) {
     double area = 0.0;
     for (int j = 0; j < per; ++j) {
       const int r = c * per + j;
       const mjtNum* dir = ray_dirs_world_.data() + 3 * r;
+      for (int q = 0; q < 3; ++q) dir_scratch_[q] = dir[q];
+      double t = ray_dist_[r];
+      bool covered = sample->centre_covered;
       double crossings[kMaxCrossings];
       int n = 0;
-      double t = ray_dist_[r];
-      // Start state: leaving a surface (normal along the ray) means the ray began inside it;
-      // with no hit nearby, the centre ray decides.
-      bool start_covered = sample->centre_covered;
-      if (t >= 0 && ray_geom_[r] >= 0) start_covered = mju_dot3(dir, ray_normal_.data() + 3 * r) > 0;
-      while (t >= 0 && t < radius && n < kMaxCrossings) {
-        crossings[n++] = t;
-        if (n == kMaxCrossings) break;
+      for (int k = 0; t >= 0 && t < radius && k < kMaxCrossings; ++k) {
         const double from = t + kStepPast;
         mjtNum start[3];
-        for (int k = 0; k < 3; ++k) start[k] = origin[k] + from * dir[k];
+        for (int q = 0; q < 3; ++q) start[q] = origin[q] + from * dir[q];
         const mjtNum next = mj_ray(m, d, start, dir, groups, 1, -1, &geom_hit, nullptr);
         ++rays;
-        t = next < 0 ? -1.0 : from + next;
+        const double t_next = next >= 0 ? from + next : -1.0;
+        const double stretch_end = (t_next >= 0 && t_next < radius) ? t_next : radius;
+        const bool state = covered_at(0.5 * (t + stretch_end));
+        if (state != covered) {
+          crossings[n++] = t;
+          covered = state;
+        }
+        t = t_next;
       }
-      area += SubSectorCoveredArea(start_covered, crossings, n, radius, dtheta);
+      area += SubSectorCoveredArea(sample->centre_covered, crossings, n, radius, dtheta);
     }
     sample->sealed_area_m2[c] = area;
   }

@@ -123,7 +123,7 @@ class ChamberPressureSensor {
   mutable std::vector<mjtNum> ray_dirs_world_;
   mutable std::vector<int> ray_geom_;
   mutable std::vector<mjtNum> ray_dist_;
-  mutable std::vector<mjtNum> ray_normal_;
+  mutable mjtNum dir_scratch_[3] = {0, 0, 0};
   ChamberPressureSample sample_;
 };
 

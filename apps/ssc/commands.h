@@ -8,6 +8,7 @@ int RunProbe(int argc, char** argv);
 int RunBench(int argc, char** argv);  // execs build/bin/ssc_bench
 int RunTrialCommand(int argc, char** argv);
 int RunSweepCommand(int argc, char** argv);
+int RunObjectsCommand(int argc, char** argv);
 
 }  // namespace ssc
 

@@ -20,6 +20,8 @@ const Command kCommands[] = {
     {"trial", ssc::RunTrialCommand, "one contour-following disk trial, headless; log + plot"},
     {"sweep", ssc::RunSweepCommand,
      "grid of trials over P_ref x beta x dL x repeats on all cores; resumable CSV + maps"},
+    {"objects", ssc::RunObjectsCommand,
+     "write the test objects' scenes and run the trial on each; table + plots"},
     {"bench", ssc::RunBench, "step cost with/without the pressure sensor (runs ssc_bench)"},
 };
 

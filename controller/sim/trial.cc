@@ -128,6 +128,7 @@ void ContourTrial::Reset() {
   next_log_s_ = 0;
   follow_start_s_ = 0;
   sweep_ = SweepTracker();
+  tracked_arc_m_ = 0;
   path_xy_.clear();
   path_t_.clear();
   result_ = TrialResult();
@@ -178,9 +179,7 @@ void ContourTrial::Finish(const std::string& outcome, const std::string& detail)
   result_.follow_time_s = follow_start_s_ > 0 ? d_->time - follow_start_s_ : 0;
   result_.swept_deg = sweep_.swept_deg();
   const TrialTarget& tg = config_.target;
-  if (!path_xy_.empty() && tg.arc_position_m) {
-    result_.end_arc_mm = tg.arc_position_m(path_xy_.back()[0], path_xy_.back()[1]) * 1e3;
-  }
+  if (tg.arc_position_m) result_.end_arc_mm = tracked_arc_m_ * 1e3;
   if (path_xy_.size() >= 2) {
     result_.metrics = ComputeDiskMetrics(path_xy_, path_t_, tg.sweep_centre,
                                          tg.disk_radius_m > 0 ? tg.disk_radius_m : 1.0);
@@ -261,6 +260,9 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
           next_log_s_ = t;
           sweep_.Reset(config_.target.sweep_centre[0], config_.target.sweep_centre[1], tool[0],
                        tool[1]);
+          if (config_.target.arc_position_m) {
+            tracked_arc_m_ = config_.target.arc_position_m(tool[0], tool[1], -1.0);
+          }
         }
       }
       target[2] = hold_z_;
@@ -272,6 +274,9 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
         path_xy_.push_back({tool[0], tool[1]});
         path_t_.push_back(t);
         sweep_.Add(tool[0], tool[1]);
+        if (config_.target.arc_position_m) {
+          tracked_arc_m_ = config_.target.arc_position_m(tool[0], tool[1], tracked_arc_m_);
+        }
         next_log_s_ += config_.log_period_s;
         if (t < next_iteration_s_) Log(false);
       }
@@ -292,7 +297,7 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
       double progress_deg = 0;
       TrialThresholds thresholds = config_.thresholds;
       if (tg.open_contour) {
-        const bool reached = tg.arc_position_m && tg.arc_position_m(tool[0], tool[1]) >= tg.end_arc_m;
+        const bool reached = tg.arc_position_m && tracked_arc_m_ >= tg.end_arc_m;
         progress_deg = reached ? thresholds.success_sweep_deg : 0;
       } else {
         thresholds.success_sweep_deg = std::fabs(tg.success_sweep_deg);

@@ -43,7 +43,9 @@ struct TrialTarget {
                                    // max_compression_m below this
   double max_compression_m = 0.002;
   std::function<double(double, double)> contour_distance_m;  // unset: the disk circle
-  std::function<double(double, double)> arc_position_m;      // open contours
+  // Open contours: arc position (m) of (x, y) near the previous tracked position s_prev (so the
+  // tracked position cannot jump to another part of the contour that passes close by).
+  std::function<double(double x, double y, double s_prev)> arc_position_m;
 
   // The disk benchmark with its start point `start_offset_m` east of the centre.
   static TrialTarget Disk(double centre_x_m, double centre_y_m, double radius_m,
@@ -134,6 +136,7 @@ class ContourTrial : public ControlCallback {
   TrialPhase phase_ = TrialPhase::kApproach;
   bool active_ = false;  // the servo is bound; the callback may act
   bool transfer_done_ = false;  // over the landing point
+  double tracked_arc_m_ = 0;    // open contours: progress along the edge
   double ft_tare_n_ = 0;
   int tare_samples_ = 0;
   double hold_z_ = 0;

@@ -20,7 +20,7 @@ namespace ssc {
 
 inline constexpr int kMaxRaysPerChamber = 64;
 inline constexpr int kMaxLipSegments = 256;
-inline constexpr int kMaxCrossings = 4;  // surface crossings followed along one radial ray
+inline constexpr int kMaxCrossings = 8;  // surface crossings followed along one radial ray
 
 struct CupGeometry {
   double opening_radius_m = 5.5e-3;   // internal (opening) radius, published 11 mm diameter

@@ -1,0 +1,96 @@
+#include "objects/object_trials.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace ssc {
+
+TrialConfig ObjectTrialConfig(const ObjectSpec& spec, const ContourLawParams& law,
+                              std::uint64_t seed) {
+  TrialConfig c;
+  c.law = law;
+  c.seed = seed;
+  TrialTarget& t = c.target;
+  t.approach = spec.start;
+  t.start = spec.start;
+  t.sweep_centre = spec.closed() ? spec.sweep_centre : spec.start;
+  t.success_sweep_deg = spec.closed() ? spec.success_sweep_deg : 355;
+  t.open_contour = !spec.closed();
+  t.end_arc_m = spec.end_arc_m;
+  t.disk_radius_m = 0;
+  t.surface_top_z_m = spec.top_z_m;
+  const Polyline contour = spec.contour;
+  t.contour_distance_m = [contour](double x, double y) { return contour.Distance(x, y); };
+  // Tracked along the edge: within 10 mm of the previous position (s_prev < 0: anywhere).
+  t.arc_position_m = [contour](double x, double y, double s_prev) {
+    if (s_prev < 0) return contour.ArcPosition(x, y);
+    return contour.ArcPositionIn(x, y, s_prev - 0.010, s_prev + 0.010);
+  };
+  // Expected speed: the realised fraction of each step per control period.
+  const double speed_m_s = law.step_mm * 1e-3 *
+                           (1 - std::exp(-c.control_period_s / std::max(1e-3, c.servo.smoothing_s))) /
+                           c.control_period_s;
+  const double path_m = spec.closed() ? spec.contour.Length()
+                                      : std::max(0.01, spec.end_arc_m -
+                                                           spec.contour.ArcPosition(spec.start[0], spec.start[1]));
+  c.timeout_s = std::min(3600.0, 30.0 + 2.5 * path_m / speed_m_s);
+  return c;
+}
+
+ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,
+                              const ContourLawParams& law, std::uint64_t seed, bool keep_log) {
+  ObjectTrialRow row;
+  row.object = spec.name;
+  row.kind = ObjectKindName(spec.kind);
+  row.param = spec.param;
+  row.seed = seed;
+  std::string error;
+  row.result = RunTrial(model, ObjectTrialConfig(spec, law, seed), keep_log, &error);
+  if (spec.closed()) {
+    row.lost_at_mm = row.result.swept_deg;  // degrees for closed contours
+  } else {
+    row.lost_at_mm = row.result.end_arc_mm;
+    if (spec.kind == ObjectKind::kFillet) {
+      row.lost_fillet_radius_mm = FilletRadius(row.result.end_arc_mm * 1e-3) * 1e3;
+    }
+  }
+  return row;
+}
+
+std::string ObjectTableHeader() {
+  return "object,kind,param,seed,outcome,contour_mean_mm,contour_max_mm,end_position,"
+         "end_fillet_radius_mm,s_mm,follow_s,speed_mm_s,iterations,detail";
+}
+
+std::string ObjectTableRow(const ObjectTrialRow& r) {
+  char buf[512];
+  std::string detail = r.result.detail;
+  for (char& ch : detail) {
+    if (ch == ',' || ch == '"') ch = ';';
+  }
+  std::snprintf(buf, sizeof(buf), "%s,%s,%g,%llu,%s,%.3f,%.3f,%.2f,%.2f,%.1f,%.1f,%.2f,%d,%s",
+                r.object.c_str(), r.kind.c_str(), r.param,
+                static_cast<unsigned long long>(r.seed), r.result.outcome.c_str(),
+                r.result.metrics.contour_mean_mm, r.result.metrics.contour_max_mm, r.lost_at_mm,
+                r.lost_fillet_radius_mm, r.result.metrics.s_mm, r.result.follow_time_s,
+                r.result.metrics.speed_mm_s, r.result.iterations, detail.c_str());
+  return buf;
+}
+
+std::string FilletProfileCsv(const ObjectTrialRow& row) {
+  std::ostringstream os;
+  os << "x_mm,fillet_radius_mm,pbar_pa,diff_pa,y_mm\n";
+  for (const TrialLogRow& l : row.result.log) {
+    if (!l.iteration || l.phase != TrialPhase::kFollow) continue;
+    const double x = l.tool_m[0] - kWorkspaceX;
+    char buf[160];
+    std::snprintf(buf, sizeof(buf), "%.2f,%.3f,%.2f,%.2f,%.3f\n", x * 1e3,
+                  FilletRadius(std::max(0.0, x)) * 1e3, l.pbar_pa, std::hypot(l.dpx_pa, l.dpy_pa),
+                  (l.tool_m[1] - kWorkspaceY) * 1e3);
+    os << buf;
+  }
+  return os.str();
+}
+
+}  // namespace ssc
