@@ -47,6 +47,8 @@ ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,
   row.seed = seed;
   std::string error;
   row.result = RunTrial(model, ObjectTrialConfig(spec, law, seed), keep_log, &error);
+  const double steps = row.result.sim_time_s / model->opt.timestep;
+  row.step_cost_us = steps > 0 ? row.result.wall_time_s / steps * 1e6 : 0;
   if (spec.closed()) {
     row.lost_at_mm = row.result.swept_deg;  // degrees for closed contours
   } else {
@@ -60,7 +62,7 @@ ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,
 
 std::string ObjectTableHeader() {
   return "object,kind,param,seed,outcome,contour_mean_mm,contour_max_mm,end_position,"
-         "end_fillet_radius_mm,s_mm,follow_s,speed_mm_s,iterations,detail";
+         "end_fillet_radius_mm,s_mm,follow_s,speed_mm_s,iterations,step_cost_us,detail";
 }
 
 std::string ObjectTableRow(const ObjectTrialRow& r) {
@@ -69,12 +71,12 @@ std::string ObjectTableRow(const ObjectTrialRow& r) {
   for (char& ch : detail) {
     if (ch == ',' || ch == '"') ch = ';';
   }
-  std::snprintf(buf, sizeof(buf), "%s,%s,%g,%llu,%s,%.3f,%.3f,%.2f,%.2f,%.1f,%.1f,%.2f,%d,%s",
+  std::snprintf(buf, sizeof(buf), "%s,%s,%g,%llu,%s,%.3f,%.3f,%.2f,%.2f,%.1f,%.1f,%.2f,%d,%.1f,%s",
                 r.object.c_str(), r.kind.c_str(), r.param,
                 static_cast<unsigned long long>(r.seed), r.result.outcome.c_str(),
                 r.result.metrics.contour_mean_mm, r.result.metrics.contour_max_mm, r.lost_at_mm,
                 r.lost_fillet_radius_mm, r.result.metrics.s_mm, r.result.follow_time_s,
-                r.result.metrics.speed_mm_s, r.result.iterations, detail.c_str());
+                r.result.metrics.speed_mm_s, r.result.iterations, r.step_cost_us, detail.c_str());
   return buf;
 }
 

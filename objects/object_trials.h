@@ -23,6 +23,7 @@ struct ObjectTrialRow {
   TrialResult result;
   double lost_at_mm = -1;        // arc position (open) or swept angle in deg (closed) at the end
   double lost_fillet_radius_mm = -1;  // fillet only: radius where tracking ended
+  double step_cost_us = 0;            // wall time per physics step of this trial
 };
 
 // Runs one object trial on `model` (a scene written by WriteObjectScenes).

@@ -89,6 +89,14 @@ int RunObjectsCommand(int argc, char** argv) {
     }
   }
   std::printf("wrote %zu objects' scenes into %s\n", specs.size(), scene_dir.c_str());
+  // Contours (for plots): one CSV per object, points in world metres.
+  const std::string paths_dir = (out / "paths").string();
+  std::filesystem::create_directories(paths_dir);
+  for (const ObjectSpec& s : specs) {
+    std::ofstream c(std::filesystem::path(paths_dir) / (s.name + "_contour.csv"));
+    c << "x_m,y_m,closed\n";
+    for (const Point2& q : s.contour.points) c << q[0] << ',' << q[1] << ',' << s.closed() << '\n';
+  }
   if (p.Flag("write-only")) return 0;
 
   struct Job {
@@ -116,8 +124,15 @@ int RunObjectsCommand(int argc, char** argv) {
         rows[j].result.outcome = "unstable";
         rows[j].result.detail = load_error;
       } else {
-        rows[j] = RunObjectTrial(model.get(), spec, law, jobs[j].seed,
-                                 spec.kind == ObjectKind::kFillet);
+        rows[j] = RunObjectTrial(model.get(), spec, law, jobs[j].seed, true);
+        // The cup-centre path (follow phase), for the plots; the log itself is not kept.
+        std::ofstream path(std::filesystem::path(paths_dir) /
+                           (spec.name + "_s" + std::to_string(jobs[j].seed) + ".csv"));
+        path << "x_m,y_m\n";
+        for (const TrialLogRow& l : rows[j].result.log) {
+          if (l.phase == TrialPhase::kFollow) path << l.tool_m[0] << ',' << l.tool_m[1] << '\n';
+        }
+        if (spec.kind != ObjectKind::kFillet) rows[j].result.log.clear();
       }
       std::lock_guard<std::mutex> lock(print_mutex);
       std::printf("  %-18s seed %-3llu %-11s end %.1f (%s) %.1f s wall\n", spec.name.c_str(),
@@ -149,7 +164,7 @@ int RunObjectsCommand(int argc, char** argv) {
   }
   if (!p.Flag("no-plot")) {
     const std::string png = (out / "objects.png").string();
-    if (RunPlotScript("plot_objects.py", {(out / "objects.csv").string(), scene_dir, png})) {
+    if (RunPlotScript("plot_objects.py", {(out / "objects.csv").string(), paths_dir, png})) {
       std::printf("wrote %s\n", png.c_str());
     }
   }
