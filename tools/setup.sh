@@ -11,7 +11,7 @@ ROOT="$(pwd)"
 
 APT_PACKAGES=(build-essential cmake pkg-config python3 python3-venv python3-pip
   libeigen3-dev libglfw3-dev libtinyxml2-dev libgtest-dev libgmock-dev libmatio-dev
-  xvfb xauth libgl1-mesa-dri libglx-mesa0 libgl1-mesa-dev)
+  libstb-dev xvfb xauth libgl1-mesa-dri libglx-mesa0 libgl1-mesa-dev)
 
 missing=()
 for p in "${APT_PACKAGES[@]}"; do

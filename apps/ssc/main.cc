@@ -22,6 +22,8 @@ const Command kCommands[] = {
      "grid of trials over P_ref x beta x dL x repeats on all cores; resumable CSV + maps"},
     {"objects", ssc::RunObjectsCommand,
      "write the test objects' scenes and run the trial on each; table + plots"},
+    {"view", ssc::RunViewCommand,
+     "the twin in a window (or --screenshot FILE.png --time T off-screen)"},
     {"bench", ssc::RunBench, "step cost with/without the pressure sensor (runs ssc_bench)"},
 };
 

@@ -19,6 +19,7 @@ int RunTrialCommand(int argc, char** argv) {
       {"step", "7.5", "step length dL per control iteration, mm"},
       {"seed", "1", "sensor noise seed"},
       {"out", "out/trial", "output directory (trial.csv, summary.json, trajectory.png)"},
+      {"stop-at", "", "stop after this many simulated seconds and print the tool position, s"},
       {"no-plot", "", "skip the PNG plot", true}};
   for (const cli::Option& o : TrialSettingOptions()) options.push_back(o);
   cli::Parser p("trial",
@@ -56,6 +57,27 @@ int RunTrialCommand(int argc, char** argv) {
   if (!model) {
     std::fprintf(stderr, "ssc trial: %s\n", error.c_str());
     return 1;
+  }
+  if (!p.Get("stop-at").empty()) {
+    // A partial run, for comparing with `ssc view --screenshot --time T` (same steps).
+    double stop = 0;
+    if (!p.GetDouble("stop-at", &stop) || stop <= 0) {
+      std::fprintf(stderr, "ssc trial: --stop-at expects a positive time in s\n");
+      return 2;
+    }
+    DataPtr data = MakeData(model.get(), &error);
+    auto trial = data ? ContourTrial::Create(model.get(), data.get(), config, false, &error) : nullptr;
+    if (!trial) {
+      std::fprintf(stderr, "ssc trial: %s\n", error.c_str());
+      return 1;
+    }
+    trial->Run(stop);
+    const Vec3 tool = {data->site_xpos[3 * trial->tool_site()],
+                       data->site_xpos[3 * trial->tool_site() + 1],
+                       data->site_xpos[3 * trial->tool_site() + 2]};
+    std::printf("stopped at t = %.4f s; phase %s; tool at %.9f %.9f %.9f m\n", data->time,
+                PhaseName(trial->phase()), tool[0], tool[1], tool[2]);
+    return 0;
   }
   const TrialResult r = RunTrial(model.get(), config, true, &error);
   const DiskTrialMetrics& m = r.metrics;

@@ -119,12 +119,14 @@ class ContourTrial : public ControlCallback {
   TrialConfig& mutable_config() { return config_; }
   const ContourStep& last_step() const { return last_step_; }
   const std::vector<Point2>& path() const { return path_xy_; }
+  int tool_site() const { return tool_site_; }
+  // The four filtered chamber pressures now (the plugin's output), Pa.
+  std::array<double, 4> Pressures() const;
 
  private:
   ContourTrial(const mjModel* m, mjData* d, const TrialConfig& config, bool keep_log);
   void Finish(const std::string& outcome, const std::string& detail);
   double FtNormalForce() const;
-  std::array<double, 4> Pressures() const;
   void Log(bool iteration);
 
   const mjModel* m_;

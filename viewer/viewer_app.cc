@@ -1,0 +1,279 @@
+#include "viewer/viewer_app.h"
+
+#include <GLFW/glfw3.h>
+#include <stb/stb_image_write.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <vector>
+
+#include "controller/sim/mujoco_model.h"
+#include "viewer/overlay.h"
+
+namespace ssc {
+namespace {
+
+// Everything one viewer session owns; GLFW callbacks reach it through the window user pointer.
+struct Session {
+  const mjModel* m = nullptr;
+  mjData* d = nullptr;
+  ContourTrial* trial = nullptr;
+  int tool_site = -1;
+  mjvCamera cam;
+  mjvOption opt;
+  mjvScene scn;
+  mjrContext con;
+  PressureFigures figures;
+  bool paused = false, help = false, tracking = true, step_once = false;
+  double speed = 1.0;
+  bool button_left = false, button_right = false;
+  double last_x = 0, last_y = 0;
+  int last_iteration = -1;
+};
+
+// Tracking looks at the lip (the tool site), not at the cup body's centre of mass.
+void SetTrackingCamera(Session* s) { s->cam.type = mjCAMERA_FREE; }
+void FollowCup(Session* s) {
+  if (!s->tracking) return;
+  for (int k = 0; k < 3; ++k) s->cam.lookat[k] = s->d->site_xpos[3 * s->tool_site + k];
+}
+
+void Restart(Session* s) {
+  s->trial->Reset();
+  s->figures.Reset();
+  s->last_iteration = -1;
+}
+
+void OnKey(GLFWwindow* w, int key, int, int action, int) {
+  if (action == GLFW_RELEASE) return;
+  auto* s = static_cast<Session*>(glfwGetWindowUserPointer(w));
+  ContourLawParams& law = s->trial->mutable_config().law;
+  switch (key) {
+    case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(w, 1); break;
+    case GLFW_KEY_SPACE: s->paused = !s->paused; break;
+    case GLFW_KEY_RIGHT: s->step_once = true; break;
+    case GLFW_KEY_MINUS: s->speed = std::max(1.0 / 64, s->speed / 2); break;
+    case GLFW_KEY_EQUAL: s->speed = std::min(64.0, s->speed * 2); break;
+    case GLFW_KEY_BACKSPACE:
+    case GLFW_KEY_R: Restart(s); break;
+    case GLFW_KEY_P: law.p_ref_pa = std::min(law.p_grasp_pa * 0.9, law.p_ref_pa * 1.25); break;
+    case GLFW_KEY_O: law.p_ref_pa = std::max(law.p_noise_pa * 1.1, law.p_ref_pa / 1.25); break;
+    case GLFW_KEY_B: law.beta = std::min(100.0, law.beta + 0.5); break;
+    case GLFW_KEY_V: law.beta = std::max(0.0, law.beta - 0.5); break;
+    case GLFW_KEY_L: law.step_mm = std::min(100.0, law.step_mm + 0.5); break;
+    case GLFW_KEY_K: law.step_mm = std::max(0.5, law.step_mm - 0.5); break;
+    case GLFW_KEY_T:
+      s->tracking = !s->tracking;
+      SetTrackingCamera(s);
+      break;
+    case GLFW_KEY_F1: s->help = !s->help; break;
+    default: break;
+  }
+}
+
+void OnButton(GLFWwindow* w, int, int, int) {
+  auto* s = static_cast<Session*>(glfwGetWindowUserPointer(w));
+  s->button_left = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+  s->button_right = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+  glfwGetCursorPos(w, &s->last_x, &s->last_y);
+}
+
+void OnMove(GLFWwindow* w, double x, double y) {
+  auto* s = static_cast<Session*>(glfwGetWindowUserPointer(w));
+  const double dx = x - s->last_x, dy = y - s->last_y;
+  s->last_x = x;
+  s->last_y = y;
+  if (!s->button_left && !s->button_right) return;
+  int width = 1, height = 1;
+  glfwGetWindowSize(w, &width, &height);
+  const bool shift = glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS;
+  int action = mjMOUSE_ZOOM;
+  if (s->button_right) {
+    action = shift ? mjMOUSE_MOVE_H : mjMOUSE_MOVE_V;
+  } else {
+    action = shift ? mjMOUSE_ROTATE_H : mjMOUSE_ROTATE_V;
+  }
+  mjv_moveCamera(s->m, action, dx / height, dy / height, &s->cam);
+}
+
+void OnScroll(GLFWwindow* w, double, double yoffset) {
+  auto* s = static_cast<Session*>(glfwGetWindowUserPointer(w));
+  mjv_moveCamera(s->m, mjMOUSE_ZOOM, 0, -0.05 * yoffset, &s->cam);
+}
+
+void Render(Session* s, mjrRect viewport, double rtf) {
+  FollowCup(s);
+  mjv_updateScene(s->m, s->d, &s->opt, nullptr, &s->cam, mjCAT_ALL, &s->scn);
+  AddTrialDecorations(s->m, s->d, *s->trial, s->tool_site, &s->scn);
+  mjr_render(viewport, &s->scn, &s->con);
+  // Figures on the right, text at the top left.
+  const int fw = viewport.width / 3, fh = viewport.height / 3;
+  mjrRect top = {viewport.left + viewport.width - fw, viewport.bottom + viewport.height - fh, fw, fh};
+  mjrRect below = {top.left, top.bottom - fh, fw, fh};
+  mjr_figure(top, &s->figures.pressures(), &s->con);
+  mjr_figure(below, &s->figures.correction(), &s->con);
+  const std::string status = TrialStatusText(*s->trial, rtf, s->paused, s->speed);
+  mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport, status.c_str(), nullptr, &s->con);
+  if (s->help) {
+    mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMLEFT, viewport, ViewerHelpText().c_str(), nullptr,
+                &s->con);
+  }
+}
+
+// Steps the trial once and feeds the figures at each control iteration.
+void StepOnce(Session* s) {
+  s->trial->Step();
+  if (s->trial->result().iterations != s->last_iteration &&
+      s->trial->phase() != TrialPhase::kApproach) {
+    s->last_iteration = s->trial->result().iterations;
+    const ContourStep& step = s->trial->last_step();
+    const std::array<double, 4> p = s->trial->Pressures();
+    s->figures.Add(s->d->time, p.data(), step, s->trial->config().law);
+  }
+}
+
+bool WritePng(const std::string& path, int width, int height, const std::vector<unsigned char>& rgb) {
+  // OpenGL rows run bottom-up; PNG rows top-down.
+  std::vector<unsigned char> flipped(rgb.size());
+  const size_t row = static_cast<size_t>(width) * 3;
+  for (int y = 0; y < height; ++y) {
+    std::copy(rgb.begin() + static_cast<long>(row * (height - 1 - y)),
+              rgb.begin() + static_cast<long>(row * (height - y)),
+              flipped.begin() + static_cast<long>(row * y));
+  }
+  return stbi_write_png(path.c_str(), width, height, 3, flipped.data(), static_cast<int>(row)) != 0;
+}
+
+void ListScenes() {
+  std::printf("scenes (ssc view NAME): disk_benchmark, disk_benchmark_gantry, probe_edge; generated\n"
+              "object scenes open by path (ssc objects --write-only writes them into "
+              "out/objects/scenes/)\n");
+}
+
+}  // namespace
+
+int RunViewer(const ViewerOptions& options) {
+  const char* display = std::getenv("DISPLAY");
+  if (display == nullptr || display[0] == '\0') {
+    std::fprintf(stderr, "ssc view: no display (DISPLAY is not set); for a screenshot on a "
+                         "headless machine run: xvfb-run -a ssc view --screenshot FILE.png\n");
+    return 3;
+  }
+  if (!glfwInit()) {
+    std::fprintf(stderr, "ssc view: cannot open the display '%s' (GLFW init failed)\n", display);
+    return 3;
+  }
+  std::string error;
+  ModelPtr model = LoadModel(options.scene_path, &error);
+  if (!model) {
+    std::fprintf(stderr, "ssc view: %s\n", error.c_str());
+    glfwTerminate();
+    return 1;
+  }
+  DataPtr data = MakeData(model.get(), &error);
+  auto trial = ContourTrial::Create(model.get(), data.get(), options.config, false, &error);
+  if (!trial) {
+    std::fprintf(stderr, "ssc view: %s\n", error.c_str());
+    glfwTerminate();
+    return 1;
+  }
+  const bool offscreen = !options.screenshot.empty();
+  if (offscreen) glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+  GLFWwindow* window = glfwCreateWindow(options.width, options.height,
+                                        "Smart Suction Cup twin (ssc view)", nullptr, nullptr);
+  if (window == nullptr) {
+    std::fprintf(stderr, "ssc view: cannot create an OpenGL window on '%s'\n", display);
+    glfwTerminate();
+    return 3;
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(1);
+
+  auto session = std::make_unique<Session>();
+  Session* s = session.get();
+  s->m = model.get();
+  s->d = data.get();
+  s->trial = trial.get();
+  int instance = -1;
+  s->tool_site = FindChamberPressureSensor(s->m, s->d, &instance)->site_id();
+  mjv_defaultCamera(&s->cam);
+  mjv_defaultOption(&s->opt);
+  s->opt.geomgroup[4] = 1;  // the lip segments
+  mjv_defaultScene(&s->scn);
+  mjr_defaultContext(&s->con);
+  mjv_makeScene(s->m, &s->scn, 6000);
+  mjr_makeContext(s->m, &s->con, mjFONTSCALE_150);
+  SetTrackingCamera(s);
+  mj_forward(s->m, s->d);
+  s->cam.distance = 0.18;
+  s->cam.azimuth = 200;
+  s->cam.elevation = -30;
+  s->speed = options.speed;
+
+  int code = 0;
+  if (offscreen) {
+    // Same steps as a headless trial up to the requested time, then one off-screen frame.
+    while (s->d->time < options.time_s && s->trial->phase() != TrialPhase::kDone) StepOnce(s);
+    mjr_setBuffer(mjFB_OFFSCREEN, &s->con);
+    const int w = std::min(options.width, s->con.offWidth);
+    const int h = std::min(options.height, s->con.offHeight);
+    const mjrRect viewport = {0, 0, w, h};
+    Render(s, viewport, 0);
+    std::vector<unsigned char> rgb(static_cast<size_t>(w) * h * 3);
+    mjr_readPixels(rgb.data(), nullptr, viewport, &s->con);
+    if (!WritePng(options.screenshot, w, h, rgb)) {
+      std::fprintf(stderr, "ssc view: cannot write %s\n", options.screenshot.c_str());
+      code = 1;
+    } else {
+      const mjtNum* p = s->d->site_xpos + 3 * s->tool_site;
+      std::printf("wrote %s (%dx%d) at t = %.4f s; phase %s; tool at %.9f %.9f %.9f m\n",
+                  options.screenshot.c_str(), w, h, s->d->time, PhaseName(s->trial->phase()),
+                  p[0], p[1], p[2]);
+    }
+  } else {
+    ListScenes();
+    std::printf("F1 in the window lists the keys.\n");
+    glfwSetWindowUserPointer(window, s);
+    glfwSetKeyCallback(window, OnKey);
+    glfwSetMouseButtonCallback(window, OnButton);
+    glfwSetCursorPosCallback(window, OnMove);
+    glfwSetScrollCallback(window, OnScroll);
+    using Clock = std::chrono::steady_clock;
+    auto last = Clock::now();
+    double rtf = 0;
+    while (!glfwWindowShouldClose(window)) {
+      const auto now = Clock::now();
+      const double wall_dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
+      last = now;
+      const double sim_start = s->d->time;
+      if (!s->paused) {
+        const double target = s->d->time + wall_dt * s->speed;
+        const auto budget_end = now + std::chrono::milliseconds(30);  // keep the UI responsive
+        while (s->d->time < target && s->trial->phase() != TrialPhase::kDone &&
+               Clock::now() < budget_end) {
+          StepOnce(s);
+        }
+      } else if (s->step_once) {
+        StepOnce(s);
+      }
+      s->step_once = false;
+      if (wall_dt > 0) rtf = 0.9 * rtf + 0.1 * (s->d->time - sim_start) / wall_dt;
+      mjrRect viewport = {0, 0, 0, 0};
+      glfwGetFramebufferSize(window, &viewport.width, &viewport.height);
+      Render(s, viewport, rtf);
+      glfwSwapBuffers(window);
+      glfwPollEvents();
+    }
+  }
+  mjv_freeScene(&s->scn);
+  mjr_freeContext(&s->con);
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return code;
+}
+
+}  // namespace ssc

@@ -1,0 +1,26 @@
+// ssc view: the twin in a window. MuJoCo's renderer, a mouse camera like MuJoCo's own viewer,
+// the same trial controller (mjcb_control) as headless runs, live pressure plots and overlays.
+#ifndef SSC_VIEWER_VIEWER_APP_H_
+#define SSC_VIEWER_VIEWER_APP_H_
+
+#include <string>
+
+#include "controller/sim/trial.h"
+
+namespace ssc {
+
+struct ViewerOptions {
+  std::string scene_path;
+  TrialConfig config;         // the trial the controller runs
+  std::string screenshot;     // non-empty: render off-screen after `time_s` and exit
+  double time_s = 5.0;        // simulated seconds before the screenshot
+  int width = 1280, height = 720;
+  double speed = 1.0;         // simulated seconds per wall second (slow motion < 1)
+};
+
+// Returns the process exit code. Without a display: one line on stderr and exit code 3.
+int RunViewer(const ViewerOptions& options);
+
+}  // namespace ssc
+
+#endif  // SSC_VIEWER_VIEWER_APP_H_
