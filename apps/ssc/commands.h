@@ -10,6 +10,7 @@ int RunTrialCommand(int argc, char** argv);
 int RunSweepCommand(int argc, char** argv);
 int RunObjectsCommand(int argc, char** argv);
 int RunViewCommand(int argc, char** argv);
+int RunCompareCommand(int argc, char** argv);
 
 }  // namespace ssc
 

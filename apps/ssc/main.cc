@@ -24,6 +24,8 @@ const Command kCommands[] = {
      "write the test objects' scenes and run the trial on each; table + plots"},
     {"view", ssc::RunViewCommand,
      "the twin in a window (or --screenshot FILE.png --time T off-screen)"},
+    {"compare", ssc::RunCompareCommand,
+     "the twin against a robot log: replay the logged path, compare pressures; report"},
     {"bench", ssc::RunBench, "step cost with/without the pressure sensor (runs ssc_bench)"},
 };
 

@@ -7,6 +7,7 @@
 #include "apps/ssc/plotting.h"
 #include "apps/ssc/trial_options.h"
 #include "controller/sim/mujoco_model.h"
+#include "compare/log_replay.h"
 #include "controller/sim/trial_io.h"
 
 namespace ssc {
@@ -19,6 +20,8 @@ int RunTrialCommand(int argc, char** argv) {
       {"step", "7.5", "step length dL per control iteration, mm"},
       {"seed", "1", "sensor noise seed"},
       {"out", "out/trial", "output directory (trial.csv, summary.json, trajectory.png)"},
+      {"robot-log", "", "also write the run as a robot-format log into this directory "
+                        "(per-topic CSVs + log.mat), for ssc compare"},
       {"stop-at", "", "stop after this many simulated seconds and print the tool position, s"},
       {"no-plot", "", "skip the PNG plot", true}};
   for (const cli::Option& o : TrialSettingOptions()) options.push_back(o);
@@ -100,6 +103,16 @@ int RunTrialCommand(int argc, char** argv) {
     return 1;
   }
   std::printf("wrote %s and %s\n", (out / "trial.csv").c_str(), (out / "summary.json").c_str());
+  if (!p.Get("robot-log").empty()) {
+    const RobotLog log = RobotLogFromTrial(r, 0.146, 1.0, 0.0);
+    const std::string dir = p.Get("robot-log");
+    if (!WriteRobotLogDir(dir, log, &error) ||
+        !WriteRobotLogMat((std::filesystem::path(dir) / "log.mat").string(), log, &error)) {
+      std::fprintf(stderr, "ssc trial: %s\n", error.c_str());
+      return 1;
+    }
+    std::printf("wrote the robot-format log into %s\n", dir.c_str());
+  }
   if (!p.Flag("no-plot")) {
     const std::string png = (out / "trajectory.png").string();
     if (RunPlotScript("plot_trajectories.py", {png, (out / "trial.csv").string()})) {

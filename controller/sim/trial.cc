@@ -126,6 +126,7 @@ void ContourTrial::Reset() {
   tare_samples_ = 0;
   next_iteration_s_ = 0;
   next_log_s_ = 0;
+  next_log_time_s_ = 0;
   follow_start_s_ = 0;
   sweep_ = SweepTracker();
   tracked_arc_m_ = 0;
@@ -201,6 +202,13 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
   if (!active_) return;
   const double t = d_->time;
   const Vec3 tool = servo_->Measured(d_);
+  // The log keeps every phase (the approach gives the in-air start a robot log also has),
+  // one row per log period; a control iteration logs its own row instead.
+  const bool iteration_now = phase_ == TrialPhase::kFollow && t + 1e-9 >= next_iteration_s_;
+  if (keep_log_ && t >= next_log_time_s_ && !iteration_now) {
+    Log(false);
+    next_log_time_s_ = t + config_.log_period_s;
+  }
   switch (phase_) {
     case TrialPhase::kApproach: {
       // Tare the F/T over the first 50 ms in air, then descend until the compression is read.
@@ -278,7 +286,6 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
           tracked_arc_m_ = config_.target.arc_position_m(tool[0], tool[1], tracked_arc_m_);
         }
         next_log_s_ += config_.log_period_s;
-        if (t < next_iteration_s_) Log(false);
       }
       if (t + 1e-9 < next_iteration_s_) break;
       next_iteration_s_ += config_.control_period_s;

@@ -143,6 +143,7 @@ class ContourTrial : public ControlCallback {
   int tare_samples_ = 0;
   double hold_z_ = 0;
   double next_iteration_s_ = 0, next_log_s_ = 0, follow_start_s_ = 0;
+  double next_log_time_s_ = 0;  // next row of the trial log (all phases)
   Vec3 start_point_{};
   SweepTracker sweep_;
   ContourStep last_step_{};

@@ -1,0 +1,86 @@
+// ssc compare: the twin against a robot log (replay of the logged tool path).
+#include <cstdio>
+#include <filesystem>
+
+#include "apps/ssc/cli.h"
+#include "apps/ssc/commands.h"
+#include "apps/ssc/plotting.h"
+#include "compare/log_replay.h"
+#include "controller/sim/mujoco_model.h"
+
+namespace ssc {
+
+int RunCompareCommand(int argc, char** argv) {
+  cli::Parser p(
+      "compare",
+      "ssc compare LOG [options]: replays the logged tool path in the twin and compares the\n"
+      "chamber pressures with the logged ones (RMS in Pa and log10, correlation, mean-pressure\n"
+      "error, direction error of the controller's g). LOG: a directory of the robot's per-topic\n"
+      "CSVs (pressure.csv, tool_pose.csv, ft.csv, pwm.csv), the merged .mat file, or a plain CSV\n"
+      "(docs/robot_logs.md). Writes OUT/report.md, report.json, series.csv and compare.png.",
+      {{"scene", "disk_replay", "replay scene with a mocap body 'probe' holding the tool"},
+       {"out", "out/compare", "output directory"},
+       {"offset-window", "1.0", "in-air offset: mean absolute pressure over the first ... s"},
+       {"average", "7", "host moving-average window applied to the log, samples"},
+       {"tcp-offset", "146", "tool centre point along the tool0 z axis, mm"},
+       {"no-plot", "", "skip the PNG plot", true}});
+  if (!p.Parse(argc, argv)) {
+    if (p.help_requested()) return 0;
+    std::fprintf(stderr, "%s\n", p.error().c_str());
+    return 2;
+  }
+  if (p.positional().size() != 1) {
+    std::fprintf(stderr, "ssc compare: give exactly one LOG (see ssc compare --help)\n");
+    return 2;
+  }
+  ProcessOptions options;
+  long average = 0;
+  double tcp_mm = 0;
+  if (!p.GetDouble("offset-window", &options.offset_window_s) || !p.GetInt("average", &average) ||
+      !p.GetDouble("tcp-offset", &tcp_mm)) {
+    std::fprintf(stderr, "%s\n", p.error().c_str());
+    return 2;
+  }
+  if (average < 1 || average > 1000 || options.offset_window_s <= 0) {
+    std::fprintf(stderr, "ssc compare: need --average in [1, 1000] and --offset-window > 0\n");
+    return 2;
+  }
+  options.moving_average = static_cast<int>(average);
+  options.tcp_offset_m = tcp_mm * 1e-3;
+  ProcessedLog log;
+  LoadError load_error;
+  if (!LoadAnyLog(p.positional()[0], options, &log, &load_error)) {
+    std::fprintf(stderr, "ssc compare: %s\n", load_error.ToString().c_str());
+    return 1;
+  }
+  std::string error;
+  ModelPtr model = LoadModel(ResolveScenePath(p.Get("scene")), &error);
+  if (!model) {
+    std::fprintf(stderr, "ssc compare: %s\n", error.c_str());
+    return 1;
+  }
+  ReplayComparison c;
+  if (!ReplayLog(model.get(), log, options.tcp_offset_m, &c, &error) ||
+      !WriteComparisonReport(p.Get("out"), p.positional()[0], c, &error)) {
+    std::fprintf(stderr, "ssc compare: %s\n", error.c_str());
+    return 1;
+  }
+  for (int k = 0; k < 4; ++k) {
+    std::printf("chamber %d: RMS %.1f Pa (%.3f in log10), correlation %.3f, mean ratio %.3f\n",
+                k + 1, c.rms_pa[k], c.rms_log10[k], c.correlation[k], c.mean_ratio[k]);
+  }
+  std::printf("mean P: RMS %.1f Pa, bias %.1f Pa; direction error RMS %.1f deg (median %.1f, "
+              "%d samples)\n", c.pbar_rms_pa, c.pbar_bias_pa, c.direction_rms_deg,
+              c.direction_median_deg, c.direction_samples);
+  const std::filesystem::path out = p.Get("out");
+  std::printf("wrote %s\n", (out / "report.md").c_str());
+  if (!p.Flag("no-plot")) {
+    const std::string png = (out / "compare.png").string();
+    if (RunPlotScript("plot_compare.py", {(out / "series.csv").string(), png})) {
+      std::printf("wrote %s\n", png.c_str());
+    }
+  }
+  return 0;
+}
+
+}  // namespace ssc

@@ -1,0 +1,67 @@
+// The twin against a robot log made from a twin run: the replay must recover what was changed.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "compare/log_replay.h"
+#include "controller/sim/mujoco_model.h"
+
+namespace ssc {
+namespace {
+
+struct Fixture {
+  ModelPtr gantry, replay;
+  TrialResult trial;
+};
+
+const Fixture& Shared() {
+  static Fixture f = [] {
+    Fixture x;
+    std::string error;
+    x.gantry = LoadModel(SourceDir() + "/scenes/disk_benchmark_gantry.xml", &error);
+    x.replay = LoadModel(SourceDir() + "/scenes/disk_replay.xml", &error);
+    TrialConfig c;
+    c.law.step_mm = 7.5;
+    x.trial = RunTrial(x.gantry.get(), c, true, &error);
+    return x;
+  }();
+  return f;
+}
+
+ReplayComparison Replay(double scale, double offset_pa) {
+  const Fixture& f = Shared();
+  const RobotLog robot = RobotLogFromTrial(f.trial, 0.146, scale, offset_pa);
+  ProcessOptions o;
+  o.moving_average = 1;  // the twin's log already carries the host-filtered values
+  ProcessedLog log;
+  LoadError e;
+  EXPECT_TRUE(ProcessRobotLog(robot, o, &log, &e)) << e.ToString();
+  ReplayComparison c;
+  std::string error;
+  EXPECT_TRUE(ReplayLog(f.replay.get(), log, 0.146, &c, &error)) << error;
+  return c;
+}
+
+TEST(CompareTest, ReplayOfAnUnchangedRunAgrees) {
+  ASSERT_EQ(Shared().trial.outcome, "success");
+  const ReplayComparison c = Replay(1.0, 0.0);
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_GT(c.correlation[k], 0.95) << k;
+    EXPECT_NEAR(c.mean_ratio[k], 1.0, 0.05) << k;
+  }
+  EXPECT_LT(std::fabs(c.pbar_bias_pa), 20.0);
+  EXPECT_LT(c.direction_median_deg, 5.0);
+  EXPECT_GT(c.direction_samples, 100);
+}
+
+TEST(CompareTest, ReplayRecoversAKnownScaleAndOffset) {
+  // The "robot" reads 30 % more vacuum: the twin's mean is 1/1.3 of the log's.
+  const ReplayComparison scaled = Replay(1.3, 0.0);
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(scaled.mean_ratio[k], 1 / 1.3, 0.05) << k;
+  // A constant 40 Pa sensor bias is removed by the in-air offset, as on the robot host.
+  const ReplayComparison offset = Replay(1.0, 40.0);
+  EXPECT_NEAR(offset.pbar_bias_pa, Replay(1.0, 0.0).pbar_bias_pa, 3.0);
+}
+
+}  // namespace
+}  // namespace ssc
