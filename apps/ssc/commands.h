@@ -11,6 +11,7 @@ int RunSweepCommand(int argc, char** argv);
 int RunObjectsCommand(int argc, char** argv);
 int RunViewCommand(int argc, char** argv);
 int RunCompareCommand(int argc, char** argv);
+int RunStabilityCommand(int argc, char** argv);
 
 }  // namespace ssc
 

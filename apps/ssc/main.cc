@@ -26,6 +26,8 @@ const Command kCommands[] = {
      "the twin in a window (or --screenshot FILE.png --time T off-screen)"},
     {"compare", ssc::RunCompareCommand,
      "the twin against a robot log: replay the logged path, compare pressures; report"},
+    {"stability", ssc::RunStabilityCommand,
+     "largest stable, unchanged time step per integrator (disk trial sweep)"},
     {"bench", ssc::RunBench, "step cost with/without the pressure sensor (runs ssc_bench)"},
 };
 

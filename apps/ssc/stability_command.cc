@@ -1,0 +1,94 @@
+// ssc stability: for each integrator, the largest time step at which trials stay stable and
+// their results unchanged within tolerance.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "apps/ssc/cli.h"
+#include "apps/ssc/commands.h"
+#include "controller/sim/mujoco_model.h"
+#include "controller/sim/trial.h"
+
+namespace ssc {
+
+int RunStabilityCommand(int argc, char** argv) {
+  cli::Parser p("stability",
+                "Runs the same disk trial with every integrator over a range of time steps and\n"
+                "reports, per integrator, the largest step at which the trial stays stable and its\n"
+                "outcome, mean radius and path length stay within tolerance of a 0.5 ms RK4 reference.\n"
+                "Writes OUT/stability.csv.",
+                {{"scene", "disk_benchmark_gantry", "scene"},
+                 {"steps-ms", "0.5,1,2,4,8,16", "time steps to try, ms"},
+                 {"step", "5", "controller step dL, mm"},
+                 {"dr-tol", "0.3", "tolerance on the mean radius, mm"},
+                 {"s-tol", "0.05", "relative tolerance on the path length"},
+                 {"out", "out/stability", "output directory"}});
+  if (!p.Parse(argc, argv)) {
+    if (p.help_requested()) return 0;
+    std::fprintf(stderr, "%s\n", p.error().c_str());
+    return 2;
+  }
+  std::vector<double> steps_ms;
+  double dl = 0, dr_tol = 0, s_tol = 0;
+  if (!p.GetDoubleList("steps-ms", &steps_ms) || !p.GetDouble("step", &dl) ||
+      !p.GetDouble("dr-tol", &dr_tol) || !p.GetDouble("s-tol", &s_tol)) {
+    std::fprintf(stderr, "%s\n", p.error().c_str());
+    return 2;
+  }
+  std::string error;
+  ModelPtr base = LoadModel(ResolveScenePath(p.Get("scene")), &error);
+  if (!base) {
+    std::fprintf(stderr, "ssc stability: %s\n", error.c_str());
+    return 1;
+  }
+  TrialConfig config;
+  config.law.step_mm = dl;
+  auto run = [&](int integrator, double dt) {
+    mjModel* m = mj_copyModel(nullptr, base.get());
+    m->opt.integrator = integrator;
+    m->opt.timestep = dt;
+    std::string e;
+    TrialResult r = RunTrial(m, config, false, &e);
+    mj_deleteModel(m);
+    return r;
+  };
+  const TrialResult ref = run(mjINT_RK4, 0.0005);
+  std::printf("reference (RK4, 0.5 ms): %s, r_mean %.2f mm, s %.1f mm\n", ref.outcome.c_str(),
+              ref.metrics.r_mean_mm, ref.metrics.s_mm);
+  const std::filesystem::path out = p.Get("out");
+  std::filesystem::create_directories(out);
+  std::ofstream csv(out / "stability.csv");
+  csv << "integrator,timestep_ms,outcome,r_mean_mm,s_mm,wall_s,stable,unchanged\n";
+  const struct {
+    int id;
+    const char* name;
+  } integrators[] = {{mjINT_EULER, "Euler"},
+                     {mjINT_RK4, "RK4"},
+                     {mjINT_IMPLICIT, "implicit"},
+                     {mjINT_IMPLICITFAST, "implicitfast"}};
+  std::printf("%-13s %8s %-11s %9s %8s %7s  stable unchanged\n", "integrator", "dt (ms)",
+              "outcome", "r_mean", "s (mm)", "wall s");
+  for (const auto& in : integrators) {
+    double largest_ok = 0;
+    for (double ms : steps_ms) {
+      const TrialResult r = run(in.id, ms * 1e-3);
+      const bool stable = r.outcome != "unstable";
+      const bool unchanged = stable && r.outcome == ref.outcome &&
+                             std::fabs(r.metrics.r_mean_mm - ref.metrics.r_mean_mm) <= dr_tol &&
+                             std::fabs(r.metrics.s_mm - ref.metrics.s_mm) <= s_tol * ref.metrics.s_mm;
+      if (unchanged) largest_ok = std::max(largest_ok, ms);
+      std::printf("%-13s %8.2f %-11s %9.2f %8.1f %7.2f  %-6s %s\n", in.name, ms, r.outcome.c_str(),
+                  r.metrics.r_mean_mm, r.metrics.s_mm, r.wall_time_s, stable ? "yes" : "NO",
+                  unchanged ? "yes" : "no");
+      csv << in.name << ',' << ms << ',' << r.outcome << ',' << r.metrics.r_mean_mm << ','
+          << r.metrics.s_mm << ',' << r.wall_time_s << ',' << stable << ',' << unchanged << '\n';
+    }
+    std::printf("%s: largest time step with unchanged results: %.2f ms\n", in.name, largest_ok);
+  }
+  std::printf("wrote %s\n", (out / "stability.csv").c_str());
+  return 0;
+}
+
+}  // namespace ssc
