@@ -12,6 +12,7 @@ int RunObjectsCommand(int argc, char** argv);
 int RunViewCommand(int argc, char** argv);
 int RunCompareCommand(int argc, char** argv);
 int RunStabilityCommand(int argc, char** argv);
+int RunCalibrateCommand(int argc, char** argv);
 
 }  // namespace ssc
 

@@ -28,6 +28,8 @@ const Command kCommands[] = {
      "the twin against a robot log: replay the logged path, compare pressures; report"},
     {"stability", ssc::RunStabilityCommand,
      "largest stable, unchanged time step per integrator (disk trial sweep)"},
+    {"calibrate", ssc::RunCalibrateCommand,
+     "fit the pneumatic model to the published disk results; residuals + parameter file"},
     {"bench", ssc::RunBench, "step cost with/without the pressure sensor (runs ssc_bench)"},
 };
 

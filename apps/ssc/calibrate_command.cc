@@ -1,0 +1,92 @@
+// ssc calibrate: fit the pneumatic model to the published disk results.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "apps/ssc/cli.h"
+#include "apps/ssc/commands.h"
+#include "calibration/pneumatic_fit.h"
+#include "controller/sim/mujoco_model.h"
+
+namespace ssc {
+
+int RunCalibrateCommand(int argc, char** argv) {
+  cli::Parser p(
+      "calibrate",
+      "Fits the pneumatic model (pump free flow, port area, jet area, lip roughness; log scale,\n"
+      "Nelder-Mead) to the published disk results: the offsets inside an edge where the mean\n"
+      "vacuum is 40, 100, 200 Pa (0.7, 2.5, 3.2 mm), the differential at 100 Pa (~200 Pa), the\n"
+      "cup in air (< 5 Pa) and on a plate (> 10 kPa). Prints residuals, fitted values and\n"
+      "sensitivities; writes OUT/params.json and OUT/ssc_tool_calibrated.xml (the tool model with\n"
+      "the fitted config; point a scene's <model file=...> at it).",
+      {{"start-scale", "1", "multiply the four starting values by this (tests the fit)"},
+       {"out", "out/calibrate", "output directory"}});
+  if (!p.Parse(argc, argv)) {
+    if (p.help_requested()) return 0;
+    std::fprintf(stderr, "%s\n", p.error().c_str());
+    return 2;
+  }
+  double scale = 1;
+  if (!p.GetDouble("start-scale", &scale) || scale <= 0) {
+    std::fprintf(stderr, "ssc calibrate: --start-scale must be a positive number\n");
+    return 2;
+  }
+  PneumaticModel start;
+  start.pneumatics.pump_free_flow_m3_s *= scale;
+  start.pneumatics.port_area_m2 *= scale;
+  start.pneumatics.jet_area_m2 *= scale;
+  start.geometry.lip_roughness_gap_m *= scale;
+  const PneumaticFit fit = FitPublishedTargets(start);
+  std::printf("%-26s %10s %10s %9s\n", "target", "published", "model", "residual");
+  for (const FitTarget& t : fit.targets) {
+    std::printf("%-26s %10.3g %10.3g %9.2f  %s\n", t.name.c_str(), t.target, t.model, t.residual(),
+                t.unit.c_str());
+  }
+  std::printf("\n%-22s %12s %14s\n", "parameter", "fitted", "d2cost/dlog2");
+  for (const FitParameter& q : fit.parameters) {
+    std::printf("%-22s %12.5g %14.3g\n", q.key.c_str(), q.value, q.sensitivity);
+  }
+  std::printf("cost %.4g after %d evaluations\n", fit.cost, fit.evaluations);
+
+  const std::filesystem::path out = p.Get("out");
+  std::filesystem::create_directories(out);
+  std::ofstream js(out / "params.json");
+  js << "{\"cost\": " << fit.cost << ", \"parameters\": {";
+  for (size_t i = 0; i < fit.parameters.size(); ++i) {
+    js << (i ? ", " : "") << '"' << fit.parameters[i].key << "\": " << fit.parameters[i].value;
+  }
+  js << "}, \"targets\": {";
+  for (size_t i = 0; i < fit.targets.size(); ++i) {
+    js << (i ? ", " : "") << '"' << fit.targets[i].name << "\": {\"published\": "
+       << fit.targets[i].target << ", \"model\": " << fit.targets[i].model << "}";
+  }
+  js << "}}\n";
+  // The tool model with the fitted config.
+  std::ifstream in(SourceDir() + "/models/ssc_tool.xml");
+  std::stringstream buf;
+  buf << in.rdbuf();
+  std::string xml = buf.str();
+  const std::string tag = "<instance name=\"ssc_pressure\"/>";
+  std::string config = "<instance name=\"ssc_pressure\">";
+  char line[160];
+  for (const FitParameter& q : fit.parameters) {
+    std::snprintf(line, sizeof(line), "\n        <config key=\"%s\" value=\"%.6g\"/>", q.key.c_str(),
+                  q.value);
+    config += line;
+  }
+  config += "\n      </instance>";
+  const size_t at = xml.find(tag);
+  if (at == std::string::npos) {
+    std::fprintf(stderr, "ssc calibrate: models/ssc_tool.xml has no '%s'\n", tag.c_str());
+    return 1;
+  }
+  xml.replace(at, tag.size(), config);
+  std::ofstream(out / "ssc_tool_calibrated.xml") << xml;
+  std::printf("wrote %s and %s\n", (out / "params.json").c_str(),
+              (out / "ssc_tool_calibrated.xml").c_str());
+  return 0;
+}
+
+}  // namespace ssc
