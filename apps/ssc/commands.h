@@ -13,6 +13,7 @@ int RunViewCommand(int argc, char** argv);
 int RunCompareCommand(int argc, char** argv);
 int RunStabilityCommand(int argc, char** argv);
 int RunCalibrateCommand(int argc, char** argv);
+int RunChartsCommand(int argc, char** argv);
 
 }  // namespace ssc
 

@@ -30,6 +30,8 @@ const Command kCommands[] = {
      "largest stable, unchanged time step per integrator (disk trial sweep)"},
     {"calibrate", ssc::RunCalibrateCommand,
      "fit the pneumatic model to the published disk results; residuals + parameter file"},
+    {"charts", ssc::RunChartsCommand,
+     "speed-accuracy charts: the cup (sweep over dL) and the simulator (fidelity vs cost)"},
     {"bench", ssc::RunBench, "step cost with/without the pressure sensor (runs ssc_bench)"},
 };
 

@@ -1,0 +1,78 @@
+#!/usr/bin/env python3
+"""Speed against accuracy: the cup (from a sweep over step length) and the simulator.
+
+usage: plot_speed_accuracy.py cup.csv simulator.csv out.png
+"""
+import csv
+import sys
+from collections import defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def main():
+    if len(sys.argv) != 4:
+        sys.exit(__doc__)
+    with open(sys.argv[1], newline="") as f:
+        cup = list(csv.DictReader(f))
+    with open(sys.argv[2], newline="") as f:
+        sim = list(csv.DictReader(f))
+    groups = defaultdict(list)
+    for r in cup:
+        groups[(float(r["pref_pa"]), float(r["beta"]))].append(r)
+    fig, ax = plt.subplots(1, 3, figsize=(16, 4.8))
+    points = []
+    for (pref, beta), rows in sorted(groups.items()):
+        steps = sorted({float(r["step_mm"]) for r in rows})
+        speed, rate, err = [], [], []
+        for s in steps:
+            rs = [r for r in rows if float(r["step_mm"]) == s]
+            ok = [r for r in rs if r["outcome"] == "success"]
+            rate.append(len(ok) / len(rs))
+            v = [float(r["speed_mm_s"]) for r in rs if float(r["speed_mm_s"]) > 0]
+            speed.append(sum(v) / len(v) if v else 0)
+            e = [float(r["contour_mean_mm"]) for r in ok]
+            err.append(sum(e) / len(e) if e else float("nan"))
+            if ok:
+                points.append((speed[-1], err[-1], f"{pref:g}/{beta:g}/{s:g}"))
+        label = f"P_ref {pref:g}, beta {beta:g}"
+        ax[0].plot(speed, rate, "o-", label=label)
+        ax[1].plot(speed, err, "o-", label=label)
+    # Pareto front: no other point both faster and more accurate.
+    front = sorted([p for p in points if not any(q[0] >= p[0] and q[1] <= p[1] and q != p
+                                                   for q in points)])
+    ax[1].plot([p[0] for p in front], [p[1] for p in front], "k--", lw=2, label="Pareto front")
+    # Published robot: ~10, 20, 30 mm/s at P_ref 100, beta 2 (success 3/3); its cup centre rode
+    # 2.5 mm inside the edge (dr = -2.5 mm at P_ref 100).
+    ax[1].plot([10, 20, 30], [2.5, 2.5, 2.5], "r*", ms=14, label="robot (published, |dr|)")
+    ax[0].plot([10, 20, 30], [1, 1, 1], "r*", ms=14, label="robot 3/3 (P_ref 100, beta 2)")
+    for a, title, ylabel in ((ax[0], "success rate vs speed", "success rate"),
+                             (ax[1], "tracking error vs speed", "mean distance from the edge (mm)")):
+        a.set_xlabel("mean speed (mm/s)")
+        a.set_ylabel(ylabel)
+        a.set_title(title)
+        a.grid(True, alpha=0.3)
+        a.legend(fontsize=6)
+    a = ax[2]
+    for r in sim:
+        x, y = float(r["wall_per_sim_s"]), float(r["rms_log10_vs_reference"])
+        is_default = r["is_default"] == "1"
+        a.plot(x, max(y, 1e-4), "s" if is_default else "o", ms=10 if is_default else 6,
+               color="red" if is_default else "C0")
+        a.annotate(r["setting"], (x, max(y, 1e-4)), fontsize=6, xytext=(3, 3),
+                   textcoords="offset points")
+    a.set_xscale("log")
+    a.set_yscale("log")
+    a.set_xlabel("wall time per simulated second (s)")
+    a.set_ylabel("pressure error vs reference (RMS log10)")
+    a.set_title("simulator: cost vs fidelity (red: default)")
+    a.grid(True, which="both", alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(sys.argv[3], dpi=100)
+
+
+if __name__ == "__main__":
+    main()
