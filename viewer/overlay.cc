@@ -119,8 +119,18 @@ void PressureFigures::Add(double t, const double p[4], const ContourStep& step,
   push(correction_, 0, t, step.cf);
 }
 
-std::string TrialStatusText(const ContourTrial& trial, double rtf, bool paused, double speed) {
+std::string TrialStatusText(const ContourTrial& trial, double rtf, bool paused, double speed,
+                            const ChamberPressureSensor* sensor) {
+  const ChamberPressureSample* sample = sensor ? &sensor->last_sample() : nullptr;
   const TrialConfig& c = trial.config();
+  // Sealed share of each chamber's opening (the sensor's view).
+  char sealed[160] = "sealed area: (no sample yet)";
+  if (sample && sample->time_s >= 0) {
+    const double quarter = sensor->config().geometry.ChamberOpeningArea();
+    std::snprintf(sealed, sizeof(sealed), "sealed area  1 SE %3.0f%%  2 NE %3.0f%%  3 NW %3.0f%%  4 SW %3.0f%%",
+                  100 * sample->sealed_area_m2[0] / quarter, 100 * sample->sealed_area_m2[1] / quarter,
+                  100 * sample->sealed_area_m2[2] / quarter, 100 * sample->sealed_area_m2[3] / quarter);
+  }
   const TrialResult& r = trial.result();
   const ContourStep& s = trial.last_step();
   char buf[1024];
@@ -129,12 +139,13 @@ std::string TrialStatusText(const ContourTrial& trial, double rtf, bool paused, 
                 "phase %s   outcome %s\n"
                 "mean P %.1f Pa   dPx %.1f  dPy %.1f Pa   c_f %.2f\n"
                 "iterations %d   swept %.0f deg   path points %zu\n"
+                "%s\n"
                 "speed x%.2f %s   real-time factor %.2f   (F1: help)",
                 c.law.p_ref_pa, c.law.beta, c.law.step_mm,
                 static_cast<unsigned long long>(c.seed), PhaseName(trial.phase()),
                 r.outcome.c_str(), s.p_mean_pa, s.dpx_pa, s.dpy_pa, s.cf, r.iterations,
                 trial.phase() == TrialPhase::kDone ? r.swept_deg : 0.0, trial.path().size(),
-                speed, paused ? "PAUSED" : "", rtf);
+                sealed, speed, paused ? "PAUSED" : "", rtf);
   return buf;
 }
 

@@ -8,6 +8,7 @@
 #include <mujoco/mujoco.h>
 
 #include "controller/sim/trial.h"
+#include "plugin/chamber_pressure_sensor.h"
 
 namespace ssc {
 
@@ -32,7 +33,7 @@ class PressureFigures {
 
 // The text panel: parameters, phase, outcome and live metrics.
 std::string TrialStatusText(const ContourTrial& trial, double realtime_factor, bool paused,
-                            double speed);
+                            double speed, const ChamberPressureSensor* sensor);
 std::string ViewerHelpText();
 
 }  // namespace ssc

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <memory>
 #include <vector>
 
@@ -116,7 +117,10 @@ void Render(Session* s, mjrRect viewport, double rtf) {
   mjrRect below = {top.left, top.bottom - fh, fw, fh};
   mjr_figure(top, &s->figures.pressures(), &s->con);
   mjr_figure(below, &s->figures.correction(), &s->con);
-  const std::string status = TrialStatusText(*s->trial, rtf, s->paused, s->speed);
+  int instance = -1;
+  const ChamberPressureSensor* sensor = FindChamberPressureSensor(s->m, s->d, &instance);
+  const std::string status = TrialStatusText(*s->trial, rtf, s->paused, s->speed,
+                                             sensor);
   mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport, status.c_str(), nullptr, &s->con);
   if (s->help) {
     mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMLEFT, viewport, ViewerHelpText().c_str(), nullptr,
@@ -149,9 +153,13 @@ bool WritePng(const std::string& path, int width, int height, const std::vector<
 }
 
 void ListScenes() {
-  std::printf("scenes (ssc view NAME): disk_benchmark, disk_benchmark_gantry, probe_edge; generated\n"
-              "object scenes open by path (ssc objects --write-only writes them into "
-              "out/objects/scenes/)\n");
+  std::printf("scenes (ssc view NAME):");
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(SourceDir() + "/scenes", ec)) {
+    if (e.path().extension() == ".xml") std::printf(" %s", e.path().stem().c_str());
+  }
+  std::printf("\ntest objects by name: disk_d02..disk_d14, disk_r35, hole_d02..hole_d14, "
+              "corner_aNNN, volute, semicircle_strip, semisquare_strip, fillet\n");
 }
 
 }  // namespace

@@ -4,7 +4,11 @@
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "apps/ssc/trial_options.h"
+#include <filesystem>
+
 #include "controller/sim/mujoco_model.h"
+#include "objects/object_mjcf.h"
+#include "objects/object_trials.h"
 #include "viewer/viewer_app.h"
 
 namespace ssc {
@@ -24,7 +28,8 @@ int RunViewCommand(int argc, char** argv) {
   cli::Parser p("view",
                 "ssc view [SCENE] [options]: the twin in a window with the trial controller running\n"
                 "(the same mjcb_control callback as headless trials: same seed, same trajectory).\n"
-                "SCENE: a name under scenes/ (default disk_benchmark) or a path.",
+                "SCENE: a name under scenes/ (default disk_benchmark), a path, or a test object by\n"
+                "name (disk_d10, hole_d06, corner_a090, volute, semicircle_strip, fillet, ...).",
                 options);
   if (!p.Parse(argc, argv)) {
     if (p.help_requested()) return 0;
@@ -57,7 +62,27 @@ int RunViewCommand(int argc, char** argv) {
   v.width = static_cast<int>(width);
   v.height = static_cast<int>(height);
   v.screenshot = p.Get("screenshot");
-  v.scene_path = ResolveScenePath(p.positional().empty() ? "disk_benchmark" : p.positional()[0]);
+  const std::string scene = p.positional().empty() ? "disk_benchmark" : p.positional()[0];
+  v.scene_path = ResolveScenePath(scene);
+  if (!std::filesystem::exists(v.scene_path)) {
+    // A test object by name: write its scenes (out/objects/scenes) and open the arm scene, with
+    // the trial set up for that object.
+    const ObjectSpec spec = ObjectByName(scene);
+    if (spec.name.empty()) {
+      std::fprintf(stderr, "ssc view: '%s' is neither a scene file, a scene under scenes/, nor a "
+                           "test object (ssc objects --help lists them)\n", scene.c_str());
+      return 2;
+    }
+    const std::string dir = (std::filesystem::path("out") / "objects" / "scenes").string();
+    if (!WriteObjectScenes(spec, dir, SourceDir(), &error)) {
+      std::fprintf(stderr, "ssc view: %s\n", error.c_str());
+      return 1;
+    }
+    v.scene_path = std::filesystem::absolute(std::filesystem::path(dir) / (spec.name + ".xml")).string();
+    const ContourLawParams law = v.config.law;
+    const std::uint64_t run_seed = v.config.seed;
+    v.config = ObjectTrialConfig(spec, law, run_seed);
+  }
   return RunViewer(v);
 }
 
