@@ -19,6 +19,8 @@ constexpr const char* kAttributes[] = {
     "noise_pa",          "average_samples",    "lag_ms",             "seed"};
 constexpr int kNumAttributes = sizeof(kAttributes) / sizeof(kAttributes[0]);
 constexpr int kWarmStartSize = kNumChambers + 1;
+// Vertical-ray bisections that locate an edge the horizontal rays missed: 5.5 mm / 2^6 = 0.09 mm.
+constexpr int kRimBisections = 6;
 // Per-mjData noise seed (set by the application after a reset), after the warm start.
 constexpr int kSeedSlot = kSensorChainStateSize + kWarmStartSize;
 
@@ -412,6 +414,19 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
           covered = state;
         }
         t = t_next;
+      }
+      if (n == 0 && kRimBisections > 0) {
+        // No boundary seen by the horizontal ray. A surface the ray plane misses (thinner than
+        // the seal distance, or grazing that plane) can still end inside the opening: compare
+        // the rim with the centre, and bisect with vertical rays if they differ.
+        double inside = 0, outside = radius;
+        if (covered_at(radius) != covered) {
+          for (int b = 0; b < kRimBisections; ++b) {
+            const double mid = 0.5 * (inside + outside);
+            (covered_at(mid) == covered ? inside : outside) = mid;
+          }
+          crossings[n++] = 0.5 * (inside + outside);
+        }
       }
       area += SubSectorCoveredArea(sample->centre_covered, crossings, n, radius, dtheta);
     }
