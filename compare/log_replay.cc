@@ -7,6 +7,8 @@
 #include <numeric>
 
 #include "controller/pure/contour_law.h"
+#include "objects/contour.h"
+#include "controller/sim/mujoco_model.h"
 #include "plugin/chamber_pressure_sensor.h"
 
 namespace ssc {
@@ -179,8 +181,53 @@ RobotLog RobotLogFromTrial(const TrialResult& trial, double tcp_offset_m, double
   return log;
 }
 
+bool CompareClosedLoop(const mjModel* disk_scene, const ProcessedLog& log,
+                       const TrialConfig& config, ClosedLoopComparison* out, std::string* error) {
+  *out = ClosedLoopComparison();
+  const ContourLawParams& law = config.law;
+  size_t first = log.t_s.size();
+  for (size_t i = 0; i < log.t_s.size(); ++i) {
+    const ContourStep s = ComputeContourStep(log.p_pa[i], law);
+    if (s.p_mean_pa > law.p_noise_pa && s.p_mean_pa < law.p_grasp_pa &&
+        std::hypot(s.dpx_pa, s.dpy_pa) > law.p_noise_pa) {
+      first = i;
+      break;
+    }
+  }
+  if (first + 2 >= log.t_s.size()) {
+    *error = "no edge in the log: the pressures never show a differential above P_n";
+    return false;
+  }
+  out->start_t_s = log.t_s[first];
+  out->start = {log.tcp_m[first][0], log.tcp_m[first][1]};
+  TrialConfig c = config;
+  c.target.start = out->start;
+  std::vector<Point2> path;
+  std::vector<double> t;
+  for (size_t i = first; i < log.t_s.size(); ++i) {
+    path.push_back({log.tcp_m[i][0], log.tcp_m[i][1]});
+    t.push_back(log.t_s[i]);
+  }
+  out->log = ComputeDiskMetrics(path, t, c.target.sweep_centre, c.target.disk_radius_m);
+  DataPtr d = MakeData(disk_scene, error);
+  if (!d) return false;
+  auto trial = ContourTrial::Create(disk_scene, d.get(), c, false, error);
+  if (!trial) return false;
+  const TrialResult r = trial->Run();
+  out->twin = r.metrics;
+  out->twin_outcome = r.outcome;
+  Polyline logged;
+  logged.points = path;
+  const auto e = ContourError(trial->path(), [&](double x, double y) { return logged.Distance(x, y); });
+  out->path_distance_mean_mm = e[0] * 1e3;
+  out->path_distance_max_mm = e[1] * 1e3;
+  out->ran = true;
+  return true;
+}
+
 bool WriteComparisonReport(const std::string& dir, const std::string& log_name,
-                           const ReplayComparison& c, std::string* error) {
+                           const ReplayComparison& c, const ClosedLoopComparison* closed,
+                           std::string* error) {
   fs::create_directories(dir);
   std::ofstream md(fs::path(dir) / "report.md");
   md << "# Twin against robot log: " << log_name << "\n\n"
@@ -188,7 +235,7 @@ bool WriteComparisonReport(const std::string& dir, const std::string& log_name,
      << (c.t_s.empty() ? 0 : c.t_s.back() - c.t_s.front()) << " s.\n\n"
      << "| chamber | RMS error (Pa) | RMS error (log10) | correlation | mean sim / mean log |\n"
      << "| --- | --- | --- | --- | --- |\n";
-  char buf[256];
+  char buf[1024];
   for (int k = 0; k < 4; ++k) {
     std::snprintf(buf, sizeof(buf), "| %d | %.1f | %.3f | %.3f | %.3f |\n", k + 1, c.rms_pa[k],
                   c.rms_log10[k], c.correlation[k], c.mean_ratio[k]);
@@ -201,6 +248,23 @@ bool WriteComparisonReport(const std::string& dir, const std::string& log_name,
                 c.pbar_rms_pa, c.pbar_bias_pa, c.direction_rms_deg, c.direction_median_deg,
                 c.direction_samples);
   md << buf;
+  if (closed && closed->ran) {
+    const DiskTrialMetrics& a = closed->log;
+    const DiskTrialMetrics& b = closed->twin;
+    md << "\n## Closed loop\n\nThe twin's controller from the log's start pose (t = "
+       << closed->start_t_s << " s), outcome " << closed->twin_outcome << ".\n\n"
+       << "| metric | robot log | twin |\n| --- | --- | --- |\n";
+    std::snprintf(buf, sizeof(buf),
+                  "| dr (mm) | %.2f | %.2f |\n| sigma_r (mm) | %.2f | %.2f |\n"
+                  "| s_c | %.3f | %.3f |\n| duration (s) | %.1f | %.1f |\n"
+                  "| speed (mm/s) | %.1f | %.1f |\n",
+                  a.dr_mm, b.dr_mm, a.sigma_r_mm, b.sigma_r_mm, a.s_c, b.s_c, a.duration_s,
+                  b.duration_s, a.speed_mm_s, b.speed_mm_s);
+    md << buf;
+    std::snprintf(buf, sizeof(buf), "\nTwin path to logged path: mean %.2f mm, max %.2f mm.\n",
+                  closed->path_distance_mean_mm, closed->path_distance_max_mm);
+    md << buf;
+  }
   std::ofstream js(fs::path(dir) / "report.json");
   js << "{\"log\": \"" << log_name << "\", \"samples\": " << c.t_s.size() << ", \"chambers\": [";
   for (int k = 0; k < 4; ++k) {
@@ -212,10 +276,24 @@ bool WriteComparisonReport(const std::string& dir, const std::string& log_name,
   }
   std::snprintf(buf, sizeof(buf),
                 "], \"pbar_rms_pa\": %.4g, \"pbar_bias_pa\": %.4g, \"direction_rms_deg\": %.4g, "
-                "\"direction_median_deg\": %.4g, \"direction_samples\": %d}\n",
+                "\"direction_median_deg\": %.4g, \"direction_samples\": %d",
                 c.pbar_rms_pa, c.pbar_bias_pa, c.direction_rms_deg, c.direction_median_deg,
                 c.direction_samples);
   js << buf;
+  if (closed && closed->ran) {
+    std::snprintf(buf, sizeof(buf),
+                  ", \"closed_loop\": {\"twin_outcome\": \"%s\", \"log_dr_mm\": %.4g, "
+                  "\"twin_dr_mm\": %.4g, \"log_sigma_r_mm\": %.4g, \"twin_sigma_r_mm\": %.4g, "
+                  "\"log_s_c\": %.4g, \"twin_s_c\": %.4g, \"log_duration_s\": %.4g, "
+                  "\"twin_duration_s\": %.4g, \"path_distance_mean_mm\": %.4g, "
+                  "\"path_distance_max_mm\": %.4g}",
+                  closed->twin_outcome.c_str(), closed->log.dr_mm, closed->twin.dr_mm,
+                  closed->log.sigma_r_mm, closed->twin.sigma_r_mm, closed->log.s_c, closed->twin.s_c,
+                  closed->log.duration_s, closed->twin.duration_s, closed->path_distance_mean_mm,
+                  closed->path_distance_max_mm);
+    js << buf;
+  }
+  js << "}\n";
   std::ofstream series(fs::path(dir) / "series.csv");
   series << "t_s,x_m,y_m,z_m,sim_p1_pa,sim_p2_pa,sim_p3_pa,sim_p4_pa,log_p1_pa,log_p2_pa,"
             "log_p3_pa,log_p4_pa\n";

@@ -41,9 +41,24 @@ bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
 RobotLog RobotLogFromTrial(const TrialResult& trial, double tcp_offset_m, double pressure_scale,
                            double pressure_offset_pa, double ambient_pa = 101325.0);
 
+// Closed loop: the twin's controller with given parameters from the log's start pose (the
+// first sample where the logged pressures show an edge: mean and differential above P_n), on a
+// disk scene, against the logged path from that sample on.
+struct ClosedLoopComparison {
+  bool ran = false;
+  double start_t_s = 0;
+  Point2 start{};
+  DiskTrialMetrics log, twin;
+  std::string twin_outcome;
+  double path_distance_mean_mm = 0, path_distance_max_mm = 0;  // twin path to the logged path
+};
+bool CompareClosedLoop(const mjModel* disk_scene, const ProcessedLog& log,
+                       const TrialConfig& config, ClosedLoopComparison* out, std::string* error);
+
 // Report files: Markdown and JSON.
 bool WriteComparisonReport(const std::string& dir, const std::string& log_name,
-                           const ReplayComparison& c, std::string* error);
+                           const ReplayComparison& c, const ClosedLoopComparison* closed,
+                           std::string* error);
 
 }  // namespace ssc
 

@@ -63,5 +63,24 @@ TEST(CompareTest, ReplayRecoversAKnownScaleAndOffset) {
   EXPECT_NEAR(offset.pbar_bias_pa, Replay(1.0, 0.0).pbar_bias_pa, 3.0);
 }
 
+TEST(CompareTest, ClosedLoopFromTheLogsStartMatchesTheSameController) {
+  const Fixture& f = Shared();
+  const RobotLog robot = RobotLogFromTrial(f.trial, 0.146, 1.0, 0.0);
+  ProcessOptions o;
+  o.moving_average = 1;
+  ProcessedLog log;
+  LoadError e;
+  ASSERT_TRUE(ProcessRobotLog(robot, o, &log, &e));
+  TrialConfig c;
+  c.law.step_mm = 7.5;
+  c.seed = 9;  // another noise realisation of the same controller
+  ClosedLoopComparison closed;
+  std::string error;
+  ASSERT_TRUE(CompareClosedLoop(f.gantry.get(), log, c, &closed, &error)) << error;
+  EXPECT_EQ(closed.twin_outcome, "success");
+  EXPECT_NEAR(closed.twin.dr_mm, closed.log.dr_mm, 0.5);
+  EXPECT_LT(closed.path_distance_mean_mm, 1.5);
+}
+
 }  // namespace
 }  // namespace ssc

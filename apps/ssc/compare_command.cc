@@ -23,6 +23,12 @@ int RunCompareCommand(int argc, char** argv) {
        {"offset-window", "1.0", "in-air offset: mean absolute pressure over the first ... s"},
        {"average", "7", "host moving-average window applied to the log, samples"},
        {"tcp-offset", "146", "tool centre point along the tool0 z axis, mm"},
+       {"closed-loop", "", "also run the twin's controller from the log's start pose", true},
+       {"loop-scene", "disk_benchmark_gantry", "disk scene for the closed loop"},
+       {"pref", "100", "closed loop: the log's P_ref, Pa"},
+       {"beta", "2", "closed loop: the log's beta"},
+       {"step", "7.5", "closed loop: the log's step, mm"},
+       {"seed", "1", "closed loop: noise seed"},
        {"no-plot", "", "skip the PNG plot", true}});
   if (!p.Parse(argc, argv)) {
     if (p.help_requested()) return 0;
@@ -60,8 +66,33 @@ int RunCompareCommand(int argc, char** argv) {
     return 1;
   }
   ReplayComparison c;
-  if (!ReplayLog(model.get(), log, options.tcp_offset_m, &c, &error) ||
-      !WriteComparisonReport(p.Get("out"), p.positional()[0], c, &error)) {
+  if (!ReplayLog(model.get(), log, options.tcp_offset_m, &c, &error)) {
+    std::fprintf(stderr, "ssc compare: %s\n", error.c_str());
+    return 1;
+  }
+  ClosedLoopComparison closed;
+  if (p.Flag("closed-loop")) {
+    TrialConfig tc;
+    long seed = 0;
+    if (!p.GetDouble("pref", &tc.law.p_ref_pa) || !p.GetDouble("beta", &tc.law.beta) ||
+        !p.GetDouble("step", &tc.law.step_mm) || !p.GetInt("seed", &seed) || seed < 0) {
+      std::fprintf(stderr, "ssc compare: %s\n", p.error().c_str());
+      return 2;
+    }
+    tc.seed = static_cast<std::uint64_t>(seed);
+    ModelPtr loop = LoadModel(ResolveScenePath(p.Get("loop-scene")), &error);
+    if (!loop || !CompareClosedLoop(loop.get(), log, tc, &closed, &error)) {
+      std::fprintf(stderr, "ssc compare: closed loop: %s\n", error.c_str());
+      return 1;
+    }
+    std::printf("closed loop: twin %s; dr %.2f vs %.2f mm (log), sigma_r %.2f vs %.2f mm, "
+                "s_c %.3f vs %.3f, duration %.1f vs %.1f s; path distance mean %.2f, max %.2f mm\n",
+                closed.twin_outcome.c_str(), closed.twin.dr_mm, closed.log.dr_mm,
+                closed.twin.sigma_r_mm, closed.log.sigma_r_mm, closed.twin.s_c, closed.log.s_c,
+                closed.twin.duration_s, closed.log.duration_s, closed.path_distance_mean_mm,
+                closed.path_distance_max_mm);
+  }
+  if (!WriteComparisonReport(p.Get("out"), p.positional()[0], c, &closed, &error)) {
     std::fprintf(stderr, "ssc compare: %s\n", error.c_str());
     return 1;
   }
