@@ -50,6 +50,24 @@ void AddObjectGeoms(XMLDocument& doc, XMLElement* root, const ObjectSpec& spec) 
     g->SetAttribute("material", (spec.name + "_material").c_str());
     return g;
   };
+  // A convex piece as a mesh given by its vertices (MuJoCo takes their convex hull, which is the
+  // piece itself, for both collisions and rays), vertices relative to their centroid.
+  auto add_mesh = [&](const std::string& name, const std::vector<std::array<double, 3>>& points) {
+    double c[3] = {0, 0, 0};
+    for (const auto& p : points)
+      for (int k = 0; k < 3; ++k) c[k] += p[k] / static_cast<double>(points.size());
+    std::ostringstream v;
+    for (const auto& p : points) {
+      v << Fmt(p[0] - c[0]) << ' ' << Fmt(p[1] - c[1]) << ' ' << Fmt(p[2] - c[2]) << ' ';
+    }
+    XMLElement* mesh = asset->InsertNewChildElement("mesh");
+    mesh->SetAttribute("name", name.c_str());
+    mesh->SetAttribute("vertex", v.str().c_str());
+    XMLElement* g = object_geom(name);
+    g->SetAttribute("type", "mesh");
+    g->SetAttribute("mesh", name.c_str());
+    g->SetAttribute("pos", Vec({c[0], c[1], c[2]}).c_str());
+  };
   int index = 0;
   for (const ConvexPiece& piece : spec.pieces) {
     const std::string name = spec.name + "_" + std::to_string(index++);
@@ -62,42 +80,14 @@ void AddObjectGeoms(XMLDocument& doc, XMLElement* root, const ObjectSpec& spec) 
       continue;
     }
     if (!piece.hull_points.empty()) {  // free convex hull (fillet slices)
-      double c[3] = {0, 0, 0};
-      for (const auto& p : piece.hull_points)
-        for (int k = 0; k < 3; ++k) c[k] += p[k] / static_cast<double>(piece.hull_points.size());
-      std::ostringstream v;
-      for (const auto& p : piece.hull_points) {
-        v << Fmt(p[0] - c[0]) << ' ' << Fmt(p[1] - c[1]) << ' ' << Fmt(p[2] - c[2]) << ' ';
-      }
-      XMLElement* mesh = asset->InsertNewChildElement("mesh");
-      mesh->SetAttribute("name", name.c_str());
-      mesh->SetAttribute("vertex", v.str().c_str());
-      XMLElement* g = object_geom(name);
-      g->SetAttribute("type", "mesh");
-      g->SetAttribute("mesh", name.c_str());
-      g->SetAttribute("pos", Vec({c[0], c[1], c[2]}).c_str());
+      add_mesh(name, piece.hull_points);
       continue;
     }
-    // A convex prism: a mesh given by its vertices; MuJoCo takes their convex hull, which is the
-    // piece itself, for both collisions and rays. Vertices relative to the polygon's centroid.
-    double cx = 0, cy = 0;
-    for (const Point2& p : piece.polygon) {
-      cx += p[0];
-      cy += p[1];
+    std::vector<std::array<double, 3>> prism;  // the polygon at the bottom and at the top
+    for (double z : {piece.bottom_z, piece.top_z}) {
+      for (const Point2& p : piece.polygon) prism.push_back({p[0], p[1], z});
     }
-    cx /= static_cast<double>(piece.polygon.size());
-    cy /= static_cast<double>(piece.polygon.size());
-    std::ostringstream v;
-    for (double z : {-half_h, half_h}) {
-      for (const Point2& p : piece.polygon) v << Fmt(p[0] - cx) << ' ' << Fmt(p[1] - cy) << ' ' << Fmt(z) << ' ';
-    }
-    XMLElement* mesh = asset->InsertNewChildElement("mesh");
-    mesh->SetAttribute("name", name.c_str());
-    mesh->SetAttribute("vertex", v.str().c_str());
-    XMLElement* g = object_geom(name);
-    g->SetAttribute("type", "mesh");
-    g->SetAttribute("mesh", name.c_str());
-    g->SetAttribute("pos", Vec({cx, cy, mid_z}).c_str());
+    add_mesh(name, prism);
   }
   for (const HeightField& h : spec.heightfields) {
     const std::string name = spec.name + "_hfield" + std::to_string(index++);

@@ -154,60 +154,16 @@ TEST(PressurePluginTest, DeterministicAcrossResetAndCopy) {
 
 // Writes the tool model with one config entry and tries to load it.
 std::string LoadWithConfig(const std::string& key, const std::string& value) {
-  std::ifstream in(SourceDir() + "/models/ssc_tool.xml");
-  std::stringstream buf;
-  buf << in.rdbuf();
-  std::string xml = buf.str();
-  const std::string tag = "<instance name=\"ssc_pressure\"/>";
-  const size_t at = xml.find(tag);
-  if (at == std::string::npos) return "tag not found";
-  xml.replace(at, tag.size(),
-              "<instance name=\"ssc_pressure\"><config key=\"" + key + "\" value=\"" + value +
-                  "\"/></instance>");
+  std::string error;
+  const std::string xml =
+      ToolModelWithConfig("<config key=\"" + key + "\" value=\"" + value + "\"/>", &error);
+  if (xml.empty()) return error;
   const auto path = std::filesystem::temp_directory_path() /
                     ("ssc_bad_config_" + std::to_string(::getpid()) + ".xml");
   std::ofstream(path) << xml;
-  std::string error;
   ModelPtr model = LoadModel(path.string(), &error);
   std::filesystem::remove(path);
   return model ? "" : error;
-}
-
-// A copy of the probe scene whose tool has `config` inside its plugin instance.
-std::string SceneWithToolConfig(const std::string& config, const std::string& tag) {
-  const auto root = std::filesystem::temp_directory_path() /
-                    ("ssc_scene_" + tag + "_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(root / "models");
-  std::filesystem::create_directories(root / "scenes");
-  std::filesystem::copy_file(ProbeScene(), root / "scenes" / "probe_edge.xml",
-                             std::filesystem::copy_options::overwrite_existing);
-  std::ifstream in(SourceDir() + "/models/ssc_tool.xml");
-  std::stringstream buf;
-  buf << in.rdbuf();
-  std::string xml = buf.str();
-  const std::string instance = "<instance name=\"ssc_pressure\"/>";
-  xml.replace(xml.find(instance), instance.size(),
-              "<instance name=\"ssc_pressure\">" + config + "</instance>");
-  std::ofstream(root / "models" / "ssc_tool.xml") << xml;
-  return (root / "scenes" / "probe_edge.xml").string();
-}
-
-TEST(PressurePluginTest, SeedChangesTheNoiseButNotTheSignal) {
-  std::string error;
-  auto a = EdgeProbe3d::Create(SceneWithToolConfig("<config key=\"seed\" value=\"1\"/>", "a"), &error);
-  ASSERT_TRUE(a) << error;
-  auto b = EdgeProbe3d::Create(SceneWithToolConfig("<config key=\"seed\" value=\"2\"/>", "b"), &error);
-  ASSERT_TRUE(b) << error;
-  auto c = EdgeProbe3d::Create(SceneWithToolConfig("<config key=\"seed\" value=\"1\"/>", "c"), &error);
-  ASSERT_TRUE(c) << error;
-  const ProbeReading ra = AtOffset(*a, 2.5e-3), rb = AtOffset(*b, 2.5e-3), rc = AtOffset(*c, 2.5e-3);
-  int differ = 0;
-  for (int k = 0; k < 4; ++k) {
-    EXPECT_EQ(ra.static_pa[k], rb.static_pa[k]);      // same physics
-    EXPECT_EQ(ra.filtered_pa[k], rc.filtered_pa[k]);  // same seed, same noise
-    differ += ra.filtered_pa[k] != rb.filtered_pa[k];
-  }
-  EXPECT_EQ(differ, 4);  // another seed, other noise
 }
 
 TEST(PressurePluginTest, BadConfigFailsTheLoadNamingKeyValueAndRange) {

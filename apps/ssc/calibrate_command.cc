@@ -64,25 +64,19 @@ int RunCalibrateCommand(int argc, char** argv) {
   }
   js << "}}\n";
   // The tool model with the fitted config.
-  std::ifstream in(SourceDir() + "/models/ssc_tool.xml");
-  std::stringstream buf;
-  buf << in.rdbuf();
-  std::string xml = buf.str();
-  const std::string tag = "<instance name=\"ssc_pressure\"/>";
-  std::string config = "<instance name=\"ssc_pressure\">";
+  std::string config;
   char line[160];
   for (const FitParameter& q : fit.parameters) {
     std::snprintf(line, sizeof(line), "\n        <config key=\"%s\" value=\"%.6g\"/>", q.key.c_str(),
                   q.value);
     config += line;
   }
-  config += "\n      </instance>";
-  const size_t at = xml.find(tag);
-  if (at == std::string::npos) {
-    std::fprintf(stderr, "ssc calibrate: models/ssc_tool.xml has no '%s'\n", tag.c_str());
+  std::string error;
+  const std::string xml = ToolModelWithConfig(config + "\n      ", &error);
+  if (xml.empty()) {
+    std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
     return 1;
   }
-  xml.replace(at, tag.size(), config);
   std::ofstream(out / "ssc_tool_calibrated.xml") << xml;
   std::printf("wrote %s and %s\n", (out / "params.json").c_str(),
               (out / "ssc_tool_calibrated.xml").c_str());

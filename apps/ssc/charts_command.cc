@@ -25,24 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A copy of the replay scene whose tool carries `config` (plugin config keys).
-std::string ReplaySceneWithConfig(const fs::path& dir, const std::string& tag,
-                                  const std::string& config) {
-  fs::create_directories(dir / tag / "models");
-  fs::create_directories(dir / tag / "scenes");
-  fs::copy_file(SourceDir() + "/scenes/disk_replay.xml", dir / tag / "scenes" / "disk_replay.xml",
-                fs::copy_options::overwrite_existing);
-  std::ifstream in(SourceDir() + "/models/ssc_tool.xml");
-  std::stringstream buf;
-  buf << in.rdbuf();
-  std::string xml = buf.str();
-  const std::string tag_xml = "<instance name=\"ssc_pressure\"/>";
-  xml.replace(xml.find(tag_xml), tag_xml.size(),
-              "<instance name=\"ssc_pressure\">" + config + "</instance>");
-  std::ofstream(dir / tag / "models" / "ssc_tool.xml") << xml;
-  return (dir / tag / "scenes" / "disk_replay.xml").string();
-}
-
 std::string Key(const char* k, const std::string& v) {
   return std::string("<config key=\"") + k + "\" value=\"" + v + "\"/>";
 }
@@ -136,8 +118,10 @@ int RunChartsCommand(int argc, char** argv) {
          "is_default\n";
   std::vector<std::array<double, 4>> reference;
   for (const Setting& s : settings) {
-    const std::string scene = ReplaySceneWithConfig(out / "scenes", std::to_string(&s - settings.data()), s.config);
-    ModelPtr m = LoadModel(scene, &error);
+    const std::string scene = SceneWithToolConfig(
+        SourceDir() + "/scenes/disk_replay.xml",
+        (out / "scenes" / std::to_string(&s - settings.data())).string(), s.config, &error);
+    ModelPtr m = scene.empty() ? nullptr : LoadModel(scene, &error);
     if (!m) {
       std::fprintf(stderr, "ssc charts: %s\n", error.c_str());
       return 1;

@@ -71,6 +71,41 @@ std::string ResolveScenePath(const std::string& scene) {
   return scene;
 }
 
+std::string ToolModelWithConfig(const std::string& config_xml, std::string* error) {
+  const std::string path = SourceDir() + "/models/ssc_tool.xml";
+  std::ifstream in(path);
+  std::stringstream buf;
+  buf << in.rdbuf();
+  std::string xml = buf.str();
+  const std::string tag = "<instance name=\"ssc_pressure\"/>";
+  const size_t at = xml.find(tag);
+  if (!in || at == std::string::npos) {
+    *error = path + ": cannot read, or no '" + tag + "' in it";
+    return "";
+  }
+  xml.replace(at, tag.size(), "<instance name=\"ssc_pressure\">" + config_xml + "</instance>");
+  return xml;
+}
+
+std::string SceneWithToolConfig(const std::string& scene_path, const std::string& dir,
+                                const std::string& config_xml, std::string* error) {
+  namespace fs = std::filesystem;
+  const std::string tool = ToolModelWithConfig(config_xml, error);
+  if (tool.empty()) return "";
+  std::error_code ec;
+  fs::create_directories(fs::path(dir) / "models", ec);
+  fs::create_directories(fs::path(dir) / "scenes", ec);
+  const fs::path scene = fs::path(dir) / "scenes" / fs::path(scene_path).filename();
+  fs::copy_file(scene_path, scene, fs::copy_options::overwrite_existing, ec);
+  std::ofstream out(fs::path(dir) / "models" / "ssc_tool.xml");
+  out << tool;
+  if (ec || !out) {
+    *error = dir + ": cannot write the scene copy";
+    return "";
+  }
+  return scene.string();
+}
+
 ModelPtr LoadModel(const std::string& path, std::string* error) {
   if (!FileExists(path)) {
     *error = path + ": file not found";

@@ -36,6 +36,15 @@ std::string ResolveScenePath(const std::string& scene);
 // Repository root (compile-time SSC_SOURCE_DIR, overridable by the SSC_SOURCE_DIR variable).
 std::string SourceDir();
 
+// The text of models/ssc_tool.xml with `config_xml` (e.g. <config key="noise_pa" value="0"/>)
+// inside its pressure-plugin instance; empty (and *error set) when the model cannot be read.
+std::string ToolModelWithConfig(const std::string& config_xml, std::string* error);
+
+// Writes a copy of `scene_path` into dir/scenes/ and the tool model with `config_xml` into
+// dir/models/ (scenes refer to ../models/ssc_tool.xml); returns the new scene's path.
+std::string SceneWithToolConfig(const std::string& scene_path, const std::string& dir,
+                                const std::string& config_xml, std::string* error);
+
 }  // namespace ssc
 
 #endif  // SSC_CONTROLLER_SIM_MUJOCO_MODEL_H_
