@@ -28,7 +28,7 @@
 //   and contacts see the same surfaces.
 //
 // Config keys (all optional; units in the key; ranges enforced at load):
-//   geometry:  opening_radius_mm 5.5 [0.5, 50]; seal_distance_mm 0.5 [0, 10];
+//   geometry:  opening_radius_mm 5.5 [0.5, 50]; seal_distance_mm 2.75 [0, 10];
 //              lip_roughness_um 18 [0, 1000]; rays_per_chamber 4 [1, 64];
 //              ray_start_mm 10 [0.1, 1000] (rays start this far above the lip plane);
 //              ray_groups "0 2" (geom groups 0..5 the rays see; group 1 is the robot); lip_geom_group 4 [0, 5]

@@ -117,22 +117,16 @@ TEST(SensorExtremesTest, EdgeOfASheetThinnerThanTheSealDistance) {
 }
 
 TEST(SensorExtremesTest, SurfacePassingTheSealDistanceBelowTheLip) {
-  // Lowering the cup over the plate from 2 mm above to 1 mm into it at 5 mm/s. Where the plate
-  // passes the seal distance the opening changes from open to sealed by design (binary seal),
-  // so this is the one stated step: at most 2.5 decades in one sample, and only once.
+  // Lowering the cup over the plate from 4 mm above to 1 mm into it at 10 mm/s. The seal
+  // distance (2.75 mm) is where a hovering lip's curtain (perimeter x gap) equals the opening's
+  // area, so the leak is continuous through it: no step beyond the smooth bound either.
   const SweepRecord r = Sweep([](double s) {
-    return std::array<double, 3>{-0.03, -0.03, 0.010 + 0.002 - 0.003 * s};
-  }, 0.6);
+    return std::array<double, 3>{-0.03, -0.03, 0.010 + 0.004 - 0.005 * s};
+  }, 0.5);
   EXPECT_TRUE(r.finite);
   EXPECT_LT(r.pbar.front(), 5.0);
   EXPECT_GT(r.pbar.back(), 10000.0);
-  EXPECT_LT(MaxLogJump(r), 2.5);
-  int big_steps = 0;
-  for (size_t i = 21; i < r.pbar.size(); ++i) {
-    big_steps += std::fabs(std::log10(std::max(1.0, r.pbar[i])) -
-                           std::log10(std::max(1.0, r.pbar[i - 1]))) > 0.35;
-  }
-  EXPECT_LE(big_steps, 2);
+  EXPECT_LT(MaxLogJump(r), 0.6) << "bound: 0.6 decades per sample (0.06 mm of travel)";
 }
 
 }  // namespace

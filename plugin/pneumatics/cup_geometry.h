@@ -24,7 +24,7 @@ inline constexpr int kMaxCrossings = 8;  // surface crossings followed along one
 
 struct CupGeometry {
   double opening_radius_m = 5.5e-3;   // internal (opening) radius, published 11 mm diameter
-  double seal_distance_m = 0.5e-3;    // a surface this far below the lip plane still seals
+  double seal_distance_m = 2.75e-3;   // a surface this far below the lip plane still seals
   double lip_roughness_gap_m = 18e-6; // leak gap of a lip segment lying on a surface
   int rays_per_chamber = 4;           // radial rays sampling each chamber's opening
 
