@@ -3,8 +3,9 @@
 //   cup: a sweep over step length (so speed) for a few (P_ref, beta) -> success, sigma_r, |dr|,
 //        contour error vs speed, and the Pareto front of speed vs tracking error;
 //   simulator: one logged path replayed with cheaper and dearer settings (rays per chamber,
-//        sensor rate, time step, integrator) -> wall time per simulated second vs pressure error
-//        against a high-fidelity reference replay (16 rays per chamber, 0.25 ms, RK4).
+//        sensor rate, time step, integrator, lip segments) -> wall time per simulated second vs
+//        pressure error against a high-fidelity reference replay (16 rays per chamber, 32 lip
+//        segments, 0.25 ms, RK4).
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +20,7 @@
 #include "compare/log_replay.h"
 #include "controller/sim/mujoco_model.h"
 #include "controller/sim/sweep.h"
+#include "controller/sim/tool_variants.h"
 
 namespace ssc {
 namespace {
@@ -93,10 +95,12 @@ int RunChartsCommand(int argc, char** argv) {
     double dt;
     int integrator;
     bool reference, is_default;
+    int lip_segments = 16;
   };
   const std::string quiet = Key("noise_pa", "0");  // compare the physics, not the noise
   std::vector<Setting> settings = {
-      {"reference: 16 rays, 0.25 ms, RK4", quiet + Key("rays_per_chamber", "16"), 0.00025, mjINT_RK4, true, false},
+      {"reference: 16 rays, 32 lip segments, 0.25 ms, RK4", quiet + Key("rays_per_chamber", "16"),
+       0.00025, mjINT_RK4, true, false, 32},
       {"default: 4 rays, 160 Hz, 2 ms, implicitfast", quiet, 0.002, mjINT_IMPLICITFAST, false, true}};
   for (int rays : {1, 2, 8, 16}) {
     settings.push_back({std::to_string(rays) + " rays", quiet + Key("rays_per_chamber", std::to_string(rays)),
@@ -111,6 +115,10 @@ int RunChartsCommand(int argc, char** argv) {
     std::snprintf(name, sizeof(name), "%.1f ms step", dt * 1e3);
     settings.push_back({name, quiet, dt, mjINT_IMPLICITFAST, false, false});
   }
+  for (int lips : {8, 32, 64}) {
+    settings.push_back({std::to_string(lips) + " lip segments", quiet, 0.002, mjINT_IMPLICITFAST,
+                        false, false, lips});
+  }
   settings.push_back({"Euler", quiet, 0.002, mjINT_EULER, false, false});
   settings.push_back({"RK4", quiet, 0.002, mjINT_RK4, false, false});
   std::ofstream csv(out / "simulator.csv");
@@ -118,9 +126,18 @@ int RunChartsCommand(int argc, char** argv) {
          "is_default\n";
   std::vector<std::array<double, 4>> reference;
   for (const Setting& s : settings) {
-    const std::string scene = SceneWithToolConfig(
-        SourceDir() + "/scenes/disk_replay.xml",
-        (out / "scenes" / std::to_string(&s - settings.data())).string(), s.config, &error);
+    const std::string dir = (out / "scenes" / std::to_string(&s - settings.data())).string();
+    std::string scene = SceneWithToolConfig(SourceDir() + "/scenes/disk_replay.xml", dir, s.config,
+                                            &error);
+    if (!scene.empty() && s.lip_segments != 16) {
+      const std::string tool = ToolWithLipSegments(ToolModelWithConfig(s.config, &error),
+                                                   s.lip_segments, &error);
+      if (tool.empty()) {
+        scene.clear();
+      } else {
+        std::ofstream(fs::path(dir) / "models" / "ssc_tool.xml") << tool;
+      }
+    }
     ModelPtr m = scene.empty() ? nullptr : LoadModel(scene, &error);
     if (!m) {
       std::fprintf(stderr, "ssc charts: %s\n", error.c_str());
