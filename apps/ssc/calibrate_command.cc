@@ -8,6 +8,7 @@
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "calibration/pneumatic_fit.h"
+#include "controller/sim/dynamic_calibration.h"
 #include "controller/sim/mujoco_model.h"
 
 namespace ssc {
@@ -22,6 +23,11 @@ int RunCalibrateCommand(int argc, char** argv) {
       "sensitivities; writes OUT/params.json and OUT/ssc_tool_calibrated.xml (the tool model with\n"
       "the fitted config; point a scene's <model file=...> at it).",
       {{"start-scale", "1", "multiply the four starting values by this (tests the fit)"},
+       {"wander", "", "also fit sensor noise and lag to the published sigma_r and s_c vs beta "
+                      "(disk trials; about a minute)", true},
+       {"wander-step", "5", "step dL of the wander trials, mm (not published)"},
+       {"wander-seeds", "2", "trials per beta per evaluation"},
+       {"wander-evals", "30", "Nelder-Mead evaluations for the wander fit"},
        {"out", "out/calibrate", "output directory"}});
   if (!p.Parse(argc, argv)) {
     if (p.help_requested()) return 0;
@@ -80,6 +86,41 @@ int RunCalibrateCommand(int argc, char** argv) {
   std::ofstream(out / "ssc_tool_calibrated.xml") << xml;
   std::printf("wrote %s and %s\n", (out / "params.json").c_str(),
               (out / "ssc_tool_calibrated.xml").c_str());
+  if (p.Flag("wander")) {
+    double step = 5;
+    long seeds = 2, evals = 30;
+    if (!p.GetDouble("wander-step", &step) || !p.GetInt("wander-seeds", &seeds) ||
+        !p.GetInt("wander-evals", &evals) || step <= 0 || seeds < 1 || evals < 3) {
+      std::fprintf(stderr, "ssc calibrate: bad --wander-step/--wander-seeds/--wander-evals\n");
+      return 2;
+    }
+    WanderFit w;
+    const std::vector<WanderTarget> targets = PublishedWanderTargets();
+    if (!FitWander(SourceDir() + "/scenes/disk_benchmark_gantry.xml", (out / "wander").string(),
+                   targets, step, static_cast<int>(seeds), static_cast<int>(evals), 6.0, 20.0, &w,
+                   &error)) {
+      std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
+      return 1;
+    }
+    std::printf("\nwander fit (dL %.1f mm, %ld seeds, %d evaluations): noise_pa %.3g, lag_ms %.3g, "
+                "cost %.3g\n", step, seeds, w.evaluations, w.noise_pa, w.lag_ms, w.cost);
+    std::printf("%6s %18s %18s\n", "beta", "sigma_r mm (pub)", "s_c (pub)");
+    for (size_t i = 0; i < targets.size(); ++i) {
+      std::printf("%6.1f %8.2f (%5s) %8.3f (%5.2f)\n", targets[i].beta, w.model[i].sigma_r_mm,
+                  targets[i].sigma_r_mm >= 0 ? std::to_string(targets[i].sigma_r_mm).substr(0, 4).c_str() : "-",
+                  w.model[i].s_c, targets[i].s_c);
+    }
+    // The calibrated tool model with the sensor chain's fit too.
+    std::snprintf(line, sizeof(line),
+                  "\n        <config key=\"noise_pa\" value=\"%.4g\"/>"
+                  "\n        <config key=\"lag_ms\" value=\"%.4g\"/>", w.noise_pa, w.lag_ms);
+    const std::string with_wander = ToolModelWithConfig(config + line + "\n      ", &error);
+    std::ofstream(out / "ssc_tool_calibrated.xml") << with_wander;
+    std::ofstream(out / "params.json", std::ios::app)
+        << "{\"wander\": {\"noise_pa\": " << w.noise_pa << ", \"lag_ms\": " << w.lag_ms
+        << ", \"cost\": " << w.cost << "}}\n";
+    std::printf("updated %s with noise_pa and lag_ms\n", (out / "ssc_tool_calibrated.xml").c_str());
+  }
   return 0;
 }
 
