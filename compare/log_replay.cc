@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numeric>
+#include <random>
 
 #include "controller/pure/contour_law.h"
 #include "objects/contour.h"
@@ -158,13 +159,17 @@ bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
 }
 
 RobotLog RobotLogFromTrial(const TrialResult& trial, double tcp_offset_m, double scale,
-                           double offset_pa, double ambient_pa) {
+                           double offset_pa, double ambient_pa, double noise_pa, unsigned seed) {
   RobotLog log;
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> gauss(0.0, 1.0);
   log.t0_ns = 1700000000000000000LL;  // an arbitrary ROS epoch stamp
   for (const TrialLogRow& r : trial.log) {
     if (!log.pressure_abs.t_s.empty() && r.t_s <= log.pressure_abs.t_s.back()) continue;
     std::vector<double> p = {1.0};
-    for (int c = 0; c < 4; ++c) p.push_back(ambient_pa - (scale * r.p_pa[c] + offset_pa));
+    for (int c = 0; c < 4; ++c) {
+      p.push_back(ambient_pa - (scale * r.p_pa[c] + offset_pa) - noise_pa * gauss(rng));
+    }
     log.pressure_abs.t_s.push_back(r.t_s);
     log.pressure_abs.rows.push_back(p);
     // tool0 from the tool centre point, the project orientation (tool z = world -z).

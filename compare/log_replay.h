@@ -38,8 +38,10 @@ bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
 // A robot-format log from a twin trial (keep_log): absolute pressures at the trial's log rows
 // (ambient `ambient_pa` minus gauge x `pressure_scale` + `pressure_offset_pa`), the tool0 pose
 // in the base frame (= scene frame), F/T normal force.
+// `noise_pa` adds Gaussian noise (seeded, deterministic) to every logged pressure.
 RobotLog RobotLogFromTrial(const TrialResult& trial, double tcp_offset_m, double pressure_scale,
-                           double pressure_offset_pa, double ambient_pa = 101325.0);
+                           double pressure_offset_pa, double ambient_pa = 101325.0,
+                           double noise_pa = 0.0, unsigned seed = 1);
 
 // Closed loop: the twin's controller with given parameters from the log's start pose (the
 // first sample where the logged pressures show an edge: mean and differential above P_n), on a

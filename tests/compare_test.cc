@@ -1,5 +1,8 @@
 // The twin against a robot log made from a twin run: the replay must recover what was changed.
 #include <cmath>
+#include <filesystem>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -61,6 +64,35 @@ TEST(CompareTest, ReplayRecoversAKnownScaleAndOffset) {
   // A constant 40 Pa sensor bias is removed by the in-air offset, as on the robot host.
   const ReplayComparison offset = Replay(1.0, 40.0);
   EXPECT_NEAR(offset.pbar_bias_pa, Replay(1.0, 0.0).pbar_bias_pa, 3.0);
+}
+
+TEST(CompareTest, ReplayExposesARobotWithAStrongerPump) {
+  // The "robot": the twin with a 40 % stronger pump, logged with 8 Pa of extra noise. Replayed
+  // in the default twin, the twin must read less vacuum than the log wherever the cup seals
+  // (ratio of means 0.87, against 1.00 for an unchanged run), and still agree on direction.
+  std::string error;
+  const std::string scene = SceneWithToolConfig(
+      SourceDir() + "/scenes/disk_benchmark_gantry.xml",
+      (std::filesystem::temp_directory_path() / ("ssc_strong_pump_" + std::to_string(::getpid())))
+          .string(),
+      "<config key=\"pump_free_flow_lpm\" value=\"18.06\"/>", &error);
+  ASSERT_FALSE(scene.empty()) << error;
+  ModelPtr strong = LoadModel(scene, &error);
+  ASSERT_TRUE(strong) << error;
+  TrialConfig c;
+  c.law.step_mm = 7.5;
+  const TrialResult robot_run = RunTrial(strong.get(), c, true, &error);
+  ProcessOptions o;
+  o.moving_average = 1;
+  ProcessedLog log;
+  LoadError e;
+  ASSERT_TRUE(ProcessRobotLog(RobotLogFromTrial(robot_run, 0.146, 1.0, 0.0, 101325.0, 8.0, 5), o,
+                              &log, &e)) << e.ToString();
+  ReplayComparison cmp;
+  ASSERT_TRUE(ReplayLog(Shared().replay.get(), log, 0.146, &cmp, &error)) << error;
+  for (int k = 0; k < 4; ++k) EXPECT_LT(cmp.mean_ratio[k], 0.92) << k;  // unchanged: 1 +- 0.05
+  EXPECT_LT(cmp.pbar_bias_pa, -20.0);
+  EXPECT_LT(cmp.direction_median_deg, 10.0);
 }
 
 TEST(CompareTest, ClosedLoopFromTheLogsStartMatchesTheSameController) {
