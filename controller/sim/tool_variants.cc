@@ -65,7 +65,6 @@ std::string ToolWithLipSegments(const std::string& tool_xml, int segments, std::
     }
   }
   for (XMLElement* b : lips) cup->DeleteChild(b);
-  const double cap_r = 0.0005;
   const double half = std::max(0.0002, M_PI * radius / segments - 0.00003);
   for (int i = 0; i < segments; ++i) {
     const double a = 2 * M_PI * (i + 0.5) / segments;
@@ -84,7 +83,6 @@ std::string ToolWithLipSegments(const std::string& tool_xml, int segments, std::
     std::snprintf(buf, sizeof(buf), "%.6f %.6f 0 %.6f %.6f 0", -half * tx, -half * ty, half * tx,
                   half * ty);
     geom->SetAttribute("fromto", buf);
-    (void)cap_r;
   }
   tinyxml2::XMLPrinter printer;
   doc.Print(&printer);
