@@ -1,13 +1,15 @@
-// Writing test objects as MJCF (tinyxml2): a standalone object file and two scenes per object.
+// Writing test objects as MJCF (tinyxml2). Per object, into one directory:
 //
-//   <name>_object.xml  the object alone (convex pieces as mesh/cylinder geoms, or a height
-//                      field); loads on its own in any MuJoCo viewer, and the scenes include it
-//   <name>.xml         the object with the UR-10, F/T and cup (from scenes/disk_benchmark.xml)
-//   <name>_gantry.xml  the object with the cup on the light gantry (disk_benchmark_gantry.xml)
+//   <name>.xml         the object alone: a static body at W holding its convex pieces (boxes,
+//                      cylinders, meshes given by their vertices); loads on its own in MuJoCo
+//   <name>_arm.xml     the UR-10 scene: scenes/disk_benchmark.xml (arm, F/T, cup, table, light,
+//                      `home` keyframe) with its disk replaced by the object
+//   <name>_gantry.xml  the same from scenes/disk_benchmark_gantry.xml (the cup on a gantry)
+//   <name>_probe.xml   the cup on a mocap body "probe" over the object (table, light): for
+//                      kinematic probing and the per-scene step cost
 //
-// Scenes are made from the disk benchmark scenes: the disk is removed, the table lowered under
-// the objects (they extend 50 mm below their top face, so holes are through-holes), the object
-// file included, and model paths made absolute (the files live in the build tree).
+// Scenes include the object file by name and the repository's models by paths relative to the
+// output directory, so the output is the same bytes wherever the tree is checked out.
 #ifndef SSC_OBJECTS_OBJECT_MJCF_H_
 #define SSC_OBJECTS_OBJECT_MJCF_H_
 
@@ -17,13 +19,24 @@
 
 namespace ssc {
 
-// Writes the object's three files into out_dir; false with *error naming the file on failure.
+struct ObjectFiles {
+  std::string object, arm_scene, gantry_scene, probe_scene;  // file names, no directory
+};
+ObjectFiles ObjectFileNames(const std::string& object_name);
+
+// Writes the object's four files into out_dir (created if missing); `repo_dir` holds models/
+// and scenes/ (SourceDir() for the repository). False with *error naming the file on failure.
+bool WriteObjectFiles(const ObjectSpec& spec, const std::string& out_dir,
+                      const std::string& repo_dir, std::string* error);
+
+// Writes the files of every object of AllObjects() into out_dir (e.g. build/scenes/objects/);
+// returns how many objects, or -1 with *error set.
+int WriteAllObjectScenes(const std::string& out_dir, std::string* error);
+
+// Earlier layout, kept for apps/ssc (objects, view) until they call WriteObjectFiles:
+// <name>_object.xml (the object), <name>.xml (the UR-10 scene), <name>_gantry.xml.
 bool WriteObjectScenes(const ObjectSpec& spec, const std::string& out_dir,
                        const std::string& repo_dir, std::string* error);
-
-// Writes every object of AllObjects(); returns how many, or -1 on error.
-int WriteAllObjectScenes(const std::string& out_dir, const std::string& repo_dir,
-                         std::string* error);
 
 }  // namespace ssc
 

@@ -1,87 +1,115 @@
-// The test objects of the published experiments, generated from a few parameters: their true
-// contour, how a trial starts and succeeds on them, and the convex pieces (or height field) that
-// build them in MuJoCo. Pure C++; objects/object_mjcf.h writes them as MJCF.
+// The test objects of the published experiments, each generated from a few parameters: its
+// exact edge (objects/contour_path.h), how a trial starts and succeeds on it, and the convex
+// pieces that build it in MuJoCo. Pure C++; objects/object_mjcf.h writes them as MJCF.
 //
-// World convention (all scenes): z up, north = +y, east = +x; every object's top face is at
-// z = top_z_m (10 mm) and its reference point (disk/hole centre, corner apex, edge start) sits at
-// the workspace point W = (0.65, 0) m. Objects are static geoms in group 2 that collide with the
-// lip (contype/conaffinity 1).
+// World convention (all scenes): z up, north = +y, east = +x, the table a plane at z = 0. Every
+// object stands on the table with its top face at z = 10 mm, and its reference point (disk or
+// hole centre, corner apex, start of an edge) sits at the workspace point W = (0.65, 0) m.
+// Objects are static geoms in group 2 with contype/conaffinity 1 (the lip collides with them,
+// the pressure sensor's rays see them).
+//
+// Why convex pieces: MuJoCo collides a mesh as its convex hull but rays hit its triangles, so a
+// concave mesh would seal the lip where the sensor sees air. Every piece here is convex (box,
+// cylinder, prism over a convex polygon, or convex hull of points), so contacts and rays see the
+// same surface; neighbouring pieces overlap by kSeamOverlapM so no ray slips down a seam.
 #ifndef SSC_OBJECTS_OBJECT_SPEC_H_
 #define SSC_OBJECTS_OBJECT_SPEC_H_
 
+#include <array>
 #include <string>
 #include <vector>
 
 #include "objects/contour.h"
+#include "objects/contour_path.h"
+#include "objects/fillet_profile.h"
 
 namespace ssc {
 
-inline constexpr double kWorkspaceX = 0.65, kWorkspaceY = 0.0;
-inline constexpr double kObjectTopZ = 0.010;     // top face of every object, m
-inline constexpr double kObjectBottomZ = -0.040; // objects extend down to here, m
-inline constexpr double kTableZ = -0.050;        // table plane under generated scenes, m
+inline constexpr double kWorkspaceX = 0.65, kWorkspaceY = 0.0;  // W, world m
+inline constexpr double kTableZ = 0.0;                            // table plane, m
+inline constexpr double kObjectTopZ = 0.010;                      // top face of every object, m
+inline constexpr double kStartInsetM = 0.003;  // cup centre inside the edge at the start
+inline constexpr double kSeamOverlapM = 1e-4;  // neighbouring convex pieces overlap this much
+inline constexpr double kClosedSuccessSweepDeg = 355;  // the implementation's "one loop"
 
 enum class ObjectKind { kDisk, kHole, kCorner, kVolute, kSemicircleStrip, kSemisquareStrip, kFillet };
 const char* ObjectKindName(ObjectKind kind);
 
-// A convex piece: a vertical prism over a convex polygon (world x/y, m, counter-clockwise)
-// from bottom_z to top_z, a cylinder (centre, radius), or the convex hull of free 3-D points
-// (world, m; the fillet's slices).
+// One convex piece, in world coordinates (m).
 struct ConvexPiece {
-  bool cylinder = false;
-  Point2 centre{};
-  double radius_m = 0;
-  std::vector<Point2> polygon;
-  std::vector<std::array<double, 3>> hull_points;
-  double bottom_z = kObjectBottomZ, top_z = kObjectTopZ;
+  enum class Shape { kBox, kCylinder, kPrism, kHull };
+  Shape shape = Shape::kBox;
+  Point2 centre{};                  // box, cylinder: axis through (x, y)
+  double half_x_m = 0, half_y_m = 0;  // box (axis-aligned)
+  double radius_m = 0;              // cylinder
+  std::vector<Point2> polygon;      // prism: a convex polygon (either orientation)
+  std::vector<std::array<double, 3>> hull_points;  // hull: the piece is their convex hull
+  double bottom_z_m = kTableZ, top_z_m = kObjectTopZ;  // box, cylinder, prism
+
+  static ConvexPiece Box(double x_min, double x_max, double y_min, double y_max);
+  static ConvexPiece Cylinder(const Point2& centre, double radius_m);
+  static ConvexPiece Prism(std::vector<Point2> polygon);
+  static ConvexPiece Hull(std::vector<std::array<double, 3>> points);
 };
 
-// A height field over a rectangle: elevation(x, y) sampled on a grid.
-struct HeightField {
-  Point2 centre{};           // world x/y of the grid centre
-  double half_x_m = 0, half_y_m = 0;
-  int nrow = 0, ncol = 0;    // rows along y, columns along x (MuJoCo's order)
-  std::vector<double> z_m;   // nrow * ncol heights, row-major, row 0 at -y
-  double base_z_m = kObjectBottomZ;
+// How the trial runner starts and judges a contour-following trial on an object.
+enum class SuccessRule {
+  kSweptAngle,   // closed contours: the cup's swept angle about sweep_centre passes the target
+  kArcPosition,  // open contours: the tracked arc position along the edge passes end_arc_m
+};
+
+struct ObjectTrialSetup {
+  Point2 landing_xy_m{};    // the cup descends here to the start-up compression (world)
+  Point2 start_xy_m{};      // cup centre when following starts
+  double start_arc_m = 0;   // arc position of the edge point next to the start
+  double start_inset_m = kStartInsetM;  // start lies this far inside the edge (object side)
+  Point2 follow_direction{1, 0};  // unit: the edge's walking direction at the start
+  bool object_on_left = true;     // the published sense: ccw round a disk, cw round a hole
+  SuccessRule success = SuccessRule::kSweptAngle;
+  Point2 sweep_centre_xy_m{};     // kSweptAngle
+  double success_sweep_deg = kClosedSuccessSweepDeg;  // signed: > 0 counter-clockwise
+  double end_arc_m = 0;           // kArcPosition
+  double surface_top_z_m = kObjectTopZ;
 };
 
 struct ObjectSpec {
-  std::string name;   // e.g. disk_d06, hole_d10, corner_a090, volute, fillet
+  std::string name;         // e.g. disk_d06, disk_r35, hole_d10, corner_a090, volute, fillet
   ObjectKind kind = ObjectKind::kDisk;
-  double param = 0;   // diameter (mm), corner angle (deg), or 0
-  Polyline contour;   // the true edge; walking it keeps the object on the left
+  double param = 0;         // diameter (mm) for disks and holes, angle (deg) for corners, else 0
+  std::string description;  // dimensions in words, for the files and docs
+  ContourPath edge;         // the exact followed edge, object on its left
+  Polyline contour;         // the edge as a polyline (chords within 0.02 mm), for plots/CSVs
   double top_z_m = kObjectTopZ;
-  // Trial set-up: the cup lands at `start` (cup centre inside the object near the edge) and
-  // follows with the object on its left. Closed contours succeed after sweeping
-  // `success_sweep_deg` about `sweep_centre`; open ones when the arc position along the contour
-  // passes `end_arc_m`.
-  Point2 start{};
-  Point2 sweep_centre{};
-  double success_sweep_deg = 355;
-  double end_arc_m = 0;
+  ObjectTrialSetup trial;
   std::vector<ConvexPiece> pieces;
-  std::vector<HeightField> heightfields;
-  std::string description;  // dimensions in words, for docs and tables
 
-  bool closed() const { return contour.closed; }
+  bool closed() const { return edge.closed(); }
+  // Signed distance from (x, y) to the edge in the top-face plane, m: negative on the object.
+  double DistanceToContour(double x, double y) const { return edge.SignedDistance(x, y); }
+  // Where along the edge (x, y) is: arc position of the closest edge point, m from its start.
+  double ArcPosition(double x, double y) const { return edge.ArcPosition(x, y); }
 };
 
+// Builders. Diameters in mm (disks 2..14 and the benchmark's 70, holes 2..14; any positive value
+// is accepted); corner angle alpha in deg, 0 < alpha < 360 (convex below 180, concave above).
 ObjectSpec MakeDisk(double diameter_mm);
+ObjectSpec MakeBenchmarkDisk();  // the 35 mm-radius disk
 ObjectSpec MakeHole(double diameter_mm);
-ObjectSpec MakeCorner(double alpha_deg);  // 0 < alpha < 360; convex below 180
+ObjectSpec MakeCorner(double alpha_deg);
 ObjectSpec MakeVolute();
 ObjectSpec MakeSemicircleStrip();
 ObjectSpec MakeSemisquareStrip();
 ObjectSpec MakeFillet();
 
-// Fillet radius (m) at position x_m along the 180 mm edge: monotone cubic through the published
-// cross-sections 0, 4.7, 10.4, 14.5, 16.0 mm at 0, 45, 90, 135, 180 mm.
-double FilletRadius(double x_m);
+// Surface height of the fillet bar (m, world) above world (x, y): the analytic shape the slices
+// approximate (top face, rounded edge of radius FilletRadius, table beyond the edge).
+double FilletSurfaceZ(double x_m, double y_m);
 
-// The published set: disks and holes 2..14 mm, the 35 mm-radius disk, corners every 15 deg from
-// 15 to 345, the three compound shapes and the fillet.
+// The published set: disks and holes 2, 4, ..., 14 mm, the 35 mm-radius disk, corners every
+// 15 deg from 15 to 345, the volute, the two strips and the fillet (42 objects).
 std::vector<ObjectSpec> AllObjects();
-// One object by name (as in AllObjects(), or corner_aNNN for any angle); empty name if unknown.
+// One object by name: a name of AllObjects(), or corner_a<deg> / disk_d<mm> / hole_d<mm> for
+// any value (e.g. corner_a100, corner_a97.5). An empty name when unknown.
 ObjectSpec ObjectByName(const std::string& name);
 
 }  // namespace ssc

@@ -11,29 +11,31 @@ TrialConfig ObjectTrialConfig(const ObjectSpec& spec, const ContourLawParams& la
   TrialConfig c;
   c.law = law;
   c.seed = seed;
+  const ObjectTrialSetup& setup = spec.trial;
   TrialTarget& t = c.target;
-  t.approach = spec.start;
-  t.start = spec.start;
-  t.sweep_centre = spec.closed() ? spec.sweep_centre : spec.start;
-  t.success_sweep_deg = spec.closed() ? spec.success_sweep_deg : 355;
-  t.open_contour = !spec.closed();
-  t.end_arc_m = spec.end_arc_m;
-  t.disk_radius_m = 0;
-  t.surface_top_z_m = spec.top_z_m;
-  const Polyline contour = spec.contour;
-  t.contour_distance_m = [contour](double x, double y) { return contour.Distance(x, y); };
+  t.approach = setup.landing_xy_m;
+  t.start = setup.start_xy_m;
+  const bool closed = setup.success == SuccessRule::kSweptAngle;
+  t.sweep_centre = closed ? setup.sweep_centre_xy_m : setup.start_xy_m;
+  t.success_sweep_deg = closed ? setup.success_sweep_deg : kClosedSuccessSweepDeg;
+  t.open_contour = !closed;
+  t.end_arc_m = setup.end_arc_m;
+  // Radial metrics (r_mean, dr, sigma_r) only mean something round a disk.
+  t.disk_radius_m = spec.kind == ObjectKind::kDisk ? 0.5e-3 * spec.param : 0.0;
+  t.surface_top_z_m = setup.surface_top_z_m;
+  const ContourPath edge = spec.edge;
+  t.contour_distance_m = [edge](double x, double y) { return edge.Project(x, y).distance_m; };
   // Tracked along the edge: within 10 mm of the previous position (s_prev < 0: anywhere).
-  t.arc_position_m = [contour](double x, double y, double s_prev) {
-    if (s_prev < 0) return contour.ArcPosition(x, y);
-    return contour.ArcPositionIn(x, y, s_prev - 0.010, s_prev + 0.010);
+  t.arc_position_m = [edge](double x, double y, double s_prev) {
+    if (s_prev < 0) return edge.ArcPosition(x, y);
+    return edge.ProjectWithin(x, y, s_prev - 0.010, s_prev + 0.010).arc_m;
   };
   // Expected speed: the realised fraction of each step per control period.
   const double speed_m_s = law.step_mm * 1e-3 *
                            (1 - std::exp(-c.control_period_s / std::max(1e-3, c.servo.smoothing_s))) /
                            c.control_period_s;
-  const double path_m = spec.closed() ? spec.contour.Length()
-                                      : std::max(0.01, spec.end_arc_m -
-                                                           spec.contour.ArcPosition(spec.start[0], spec.start[1]));
+  const double path_m =
+      closed ? spec.edge.Length() : std::max(0.01, setup.end_arc_m - setup.start_arc_m);
   c.timeout_s = std::min(3600.0, 30.0 + 2.5 * path_m / speed_m_s);
   return c;
 }
@@ -85,7 +87,7 @@ std::string FilletProfileCsv(const ObjectTrialRow& row) {
   os << "x_mm,fillet_radius_mm,pbar_pa,diff_pa,y_mm\n";
   for (const TrialLogRow& l : row.result.log) {
     if (!l.iteration || l.phase != TrialPhase::kFollow) continue;
-    const double x = l.tool_m[0] - kWorkspaceX;
+    const double x = l.tool_m[0] - kWorkspaceX;  // along the edge from its sharp end
     char buf[160];
     std::snprintf(buf, sizeof(buf), "%.2f,%.3f,%.2f,%.2f,%.3f\n", x * 1e3,
                   FilletRadius(std::max(0.0, x)) * 1e3, l.pbar_pa, std::hypot(l.dpx_pa, l.dpy_pa),

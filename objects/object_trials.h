@@ -11,8 +11,9 @@
 
 namespace ssc {
 
-// Trial settings for an object: its target (start, success rule, true contour) and a follow
-// timeout from its contour length at the expected speed.
+// Trial settings for an object from its ObjectTrialSetup (landing and start points, success
+// rule) and exact edge (metrics, tracked arc position), with a follow timeout from the edge
+// length at the expected speed.
 TrialConfig ObjectTrialConfig(const ObjectSpec& spec, const ContourLawParams& law,
                               std::uint64_t seed);
 
