@@ -24,6 +24,7 @@ constexpr double kCornerEdgeM = 60 * kMm;    // both straight edges of a corner
 constexpr double kCornerReachM = 70 * kMm;   // radius of the corner's round back
 constexpr double kCornerStartM = 40 * kMm;   // start: this far before the apex on edge 1
 constexpr double kCornerPastM = 30 * kMm;    // success: this far past the apex on edge 2
+constexpr double kCupBodyRadiusM = 11.5 * kMm;
 
 ObjectSpec Disk(const std::string& name, double diameter_mm) {
   ObjectSpec s;
@@ -35,7 +36,9 @@ ObjectSpec Disk(const std::string& name, double diameter_mm) {
   s.pieces.push_back(ConvexPiece::Cylinder(W(), r));
   // East side, inside by the inset (a disk smaller than that: the cup starts over its centre).
   FinishSpec(&s, 0, std::min(kStartInsetM, r), W(), 0);
-  s.trial.landing_xy_m = W();  // as published: land on the centre, then move out to the start
+  // A disk wider than the cup body lands on its centre and moves out to the start, as published
+  // for the 35 mm disk; on a smaller one the lip might miss it, so the cup lands at the start.
+  if (r > kCupBodyRadiusM) s.trial.landing_xy_m = W();
   char desc[160];
   std::snprintf(desc, sizeof(desc),
                 "disk of diameter %.4g mm, 10 mm tall: one cylinder; start %.1f mm inside its "

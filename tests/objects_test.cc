@@ -192,7 +192,14 @@ TEST(ObjectRegistryTest, PublishedSetWithStartsOnTheEdge) {
       EXPECT_LE(t.end_arc_m, spec.edge.Length());
     }
   }
-  EXPECT_NEAR(MakeBenchmarkDisk().trial.start_xy_m[0] - kWorkspaceX, 32 * kMm, 1e-12);
+  // The benchmark disk: land on the centre, start 32 mm east of it (as published); elsewhere the
+  // cup lands where it starts.
+  const ObjectTrialSetup benchmark = MakeBenchmarkDisk().trial;
+  EXPECT_NEAR(benchmark.start_xy_m[0] - kWorkspaceX, 32 * kMm, 1e-12);
+  EXPECT_EQ(benchmark.landing_xy_m, (Point2{kWorkspaceX, kWorkspaceY}));
+  for (const char* name : {"disk_d14", "hole_d02", "corner_a090", "volute", "fillet"}) {
+    EXPECT_EQ(ObjectByName(name).trial.landing_xy_m, ObjectByName(name).trial.start_xy_m) << name;
+  }
   const ObjectTrialSetup hole = MakeHole(10).trial;
   EXPECT_NEAR(hole.start_xy_m[0] - kWorkspaceX, 8 * kMm, 1e-12);
   EXPECT_NEAR(hole.follow_direction[1], -1.0, 1e-12);  // clockwise: south at the east side
