@@ -38,6 +38,17 @@ const fs::path& SceneDir() {
   return dir;
 }
 
+// Removes the written files when the test process ends.
+class SceneDirCleanup : public testing::Environment {
+ public:
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(fs::temp_directory_path() / ("ssc_objects_test_" + std::to_string(::getpid())), ec);
+  }
+};
+[[maybe_unused]] testing::Environment* const kCleanup =
+    testing::AddGlobalTestEnvironment(new SceneDirCleanup);
+
 std::string FileOf(const std::string& name) {
   return (SceneDir() / ObjectFileNames(name).object).string();
 }
