@@ -32,7 +32,9 @@ inline constexpr double kStartInsetM = 0.003;  // cup centre inside the edge at 
 inline constexpr double kSeamOverlapM = 1e-4;  // neighbouring convex pieces overlap this much
 inline constexpr double kClosedSuccessSweepDeg = 355;  // the implementation's "one loop"
 
-enum class ObjectKind { kDisk, kHole, kCorner, kVolute, kSemicircleStrip, kSemisquareStrip, kFillet };
+enum class ObjectKind {
+  kDisk, kHole, kCorner, kVolute, kSemicircleStrip, kSemisquareStrip, kFillet
+};
 const char* ObjectKindName(ObjectKind kind);
 
 // One convex piece, in world coordinates (m).

@@ -31,9 +31,9 @@ TrialConfig ObjectTrialConfig(const ObjectSpec& spec, const ContourLawParams& la
     return edge.ProjectWithin(x, y, s_prev - 0.010, s_prev + 0.010).arc_m;
   };
   // Expected speed: the realised fraction of each step per control period.
-  const double speed_m_s = law.step_mm * 1e-3 *
-                           (1 - std::exp(-c.control_period_s / std::max(1e-3, c.servo.smoothing_s))) /
-                           c.control_period_s;
+  const double smoothing_s = std::max(1e-3, c.servo.smoothing_s);
+  const double speed_m_s =
+      law.step_mm * 1e-3 * (1 - std::exp(-c.control_period_s / smoothing_s)) / c.control_period_s;
   const double path_m =
       closed ? spec.edge.Length() : std::max(0.01, setup.end_arc_m - setup.start_arc_m);
   c.timeout_s = std::min(3600.0, 30.0 + 2.5 * path_m / speed_m_s);

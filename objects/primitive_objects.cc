@@ -55,7 +55,9 @@ Point2 OnSquare(double half, double a) {
 
 }  // namespace
 
-ObjectSpec MakeDisk(double diameter_mm) { return Disk(ValueName("disk_d", diameter_mm, 2), diameter_mm); }
+ObjectSpec MakeDisk(double diameter_mm) {
+  return Disk(ValueName("disk_d", diameter_mm, 2), diameter_mm);
+}
 
 ObjectSpec MakeBenchmarkDisk() { return Disk("disk_r35", 70); }
 

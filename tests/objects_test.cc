@@ -27,10 +27,14 @@ namespace fs = std::filesystem;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kMm = 1e-3;
 
+fs::path SceneDirPath() {
+  return fs::temp_directory_path() / ("ssc_objects_test_" + std::to_string(::getpid()));
+}
+
 // Every object's files, written once per test process.
 const fs::path& SceneDir() {
   static const fs::path dir = [] {
-    const fs::path d = fs::temp_directory_path() / ("ssc_objects_test_" + std::to_string(::getpid()));
+    const fs::path d = SceneDirPath();
     std::string error;
     EXPECT_EQ(WriteAllObjectScenes(d.string(), &error), 42) << error;
     return d;
@@ -43,7 +47,7 @@ class SceneDirCleanup : public testing::Environment {
  public:
   void TearDown() override {
     std::error_code ec;
-    fs::remove_all(fs::temp_directory_path() / ("ssc_objects_test_" + std::to_string(::getpid())), ec);
+    fs::remove_all(SceneDirPath(), ec);
   }
 };
 [[maybe_unused]] testing::Environment* const kCleanup =
@@ -99,7 +103,8 @@ TEST(ContourPathTest, LengthsOfArcsSpiralsAndSegments) {
   for (int i = 0; i < n; ++i) {
     const double t0 = 2 * kPi * i / n, t1 = 2 * kPi * (i + 1) / n;
     const double r0 = 0.025 + 0.035 * t0 / (2 * kPi), r1 = 0.025 + 0.035 * t1 / (2 * kPi);
-    chords += std::hypot(r1 * std::cos(t1) - r0 * std::cos(t0), r1 * std::sin(t1) - r0 * std::sin(t0));
+    chords += std::hypot(r1 * std::cos(t1) - r0 * std::cos(t0),
+                         r1 * std::sin(t1) - r0 * std::sin(t0));
   }
   EXPECT_NEAR(spiral.Length(), chords, 1e-8);
   EXPECT_NEAR(volute.Length(), chords + 0.035, 1e-8);
@@ -116,7 +121,9 @@ TEST(ContourPathTest, ArcPositionInvertsPointAt) {
     const ObjectSpec spec = ObjectByName(name);
     const double length = spec.edge.Length();
     std::vector<double> junctions = {0};
-    for (const PathPiece& piece : spec.edge.pieces()) junctions.push_back(junctions.back() + piece.Length());
+    for (const PathPiece& piece : spec.edge.pieces()) {
+      junctions.push_back(junctions.back() + piece.Length());
+    }
     for (int i = 1; i < 50; ++i) {
       const double s = length * i / 50.0;
       // Near a corner an offset point may be closer to the next piece: not this check's case.
@@ -189,7 +196,8 @@ TEST(ObjectRegistryTest, PublishedSetWithStartsOnTheEdge) {
     EXPECT_NEAR(std::hypot(t.follow_direction[0], t.follow_direction[1]), 1.0, 1e-12);
     // The start lies inside the edge by the inset (the small disks: over their centre).
     EXPECT_NEAR(spec.DistanceToContour(t.start_xy_m[0], t.start_xy_m[1]), -t.start_inset_m, 1e-9);
-    const bool over_centre = spec.kind == ObjectKind::kDisk && t.start_inset_m >= 0.5e-3 * spec.param;
+    const bool over_centre =
+        spec.kind == ObjectKind::kDisk && t.start_inset_m >= 0.5e-3 * spec.param;
     if (!over_centre) {  // (over a disk's centre every edge point is closest)
       EXPECT_NEAR(spec.ArcPosition(t.start_xy_m[0], t.start_xy_m[1]), t.start_arc_m, 1e-7);
     }
@@ -319,7 +327,8 @@ TEST(ObjectGeometryTest, WrittenGeometryMatchesTheExactEdge) {
       }
       // Where the edge is locally a clean boundary (0.5 mm either side are 0.5 mm away).
       const double h = 0.5 * kMm;
-      const Point2 in = {p[0] + h * n[0], p[1] + h * n[1]}, out = {p[0] - h * n[0], p[1] - h * n[1]};
+      const Point2 in = {p[0] + h * n[0], p[1] + h * n[1]};
+      const Point2 out = {p[0] - h * n[0], p[1] - h * n[1]};
       if (spec.DistanceToContour(in[0], in[1]) > -0.49 * kMm ||
           spec.DistanceToContour(out[0], out[1]) < 0.49 * kMm) {
         continue;
@@ -386,17 +395,17 @@ TEST(ObjectGeometryTest, FilletSurfaceFollowsTheRadiusProfile) {
 // Rays and contacts on concave objects.
 
 // A lip-like sphere (radius 0.5 mm, contype 1, conaffinity 0, on a free joint; group 3, unseen by
-// the rays) placed with its
-// bottom 0.1 mm below the top face: where the ray says "top face", it touches; where the ray
-// finds no surface within the lip's 3 mm reach, it touches nothing. Returns the disagreements.
+// the rays) placed with its bottom 0.1 mm below the top face: where the ray says "top face", it
+// touches; where the ray finds no surface within the lip's 3 mm reach, it touches nothing.
+// Returns the disagreements.
 int RayContactDisagreements(const std::string& object_file, const ObjectSpec& spec,
                             int* checked) {
   const fs::path scene = fs::path(object_file).parent_path() /
                          (fs::path(object_file).stem().string() + "_sphere_probe.xml");
   std::ofstream(scene) << "<mujoco><include file=\"" << fs::path(object_file).filename().string()
                        << "\"/><worldbody><body name=\"sphere\"><freejoint/><geom type=\"sphere\""
-                       << " size=\"0.0005\" group=\"3\" contype=\"1\" conaffinity=\"0\"/></body></worldbody>"
-                       << "</mujoco>";
+                       << " size=\"0.0005\" group=\"3\" contype=\"1\" conaffinity=\"0\"/>"
+                       << "</body></worldbody></mujoco>";
   const Loaded l = Load(scene.string());
   if (!l.m) return -1;
   int disagree = 0;
@@ -468,7 +477,8 @@ TEST(RaysAndContactsTest, TheCheckCatchesAConcaveMesh) {
     base += 2 * k;
   }
   std::ofstream(file) << "<mujoco><asset><mesh name=\"plate\" vertex=\"" << vertex
-                      << "\" face=\"" << face << "\" inertia=\"convex\"/></asset><worldbody><body pos=\""
+                      << "\" face=\"" << face << "\" inertia=\"convex\"/></asset>"
+                      << "<worldbody><body pos=\""
                       << kWorkspaceX << " 0 0\"><geom type=\"mesh\" mesh=\"plate\" group=\"2\"/>"
                       << "</body></worldbody></mujoco>";
   int checked = 0;
