@@ -83,7 +83,7 @@ int RunObjectsCommand(int argc, char** argv) {
   const std::string scene_dir = (out / "scenes").string();
   std::string error;
   for (const ObjectSpec& s : specs) {
-    if (!WriteObjectScenes(s, scene_dir, SourceDir(), &error)) {
+    if (!WriteObjectFiles(s, scene_dir, SourceDir(), &error)) {
       std::fprintf(stderr, "ssc objects: %s\n", error.c_str());
       return 1;
     }
@@ -114,7 +114,8 @@ int RunObjectsCommand(int argc, char** argv) {
     for (size_t j = next++; j < jobs.size(); j = next++) {
       const ObjectSpec& spec = specs[jobs[j].object];
       const std::string scene = (std::filesystem::path(scene_dir) /
-                                 (spec.name + (kind == "gantry" ? "_gantry.xml" : ".xml"))).string();
+                                 (kind == "gantry" ? ObjectFileNames(spec.name).gantry_scene
+                                                   : ObjectFileNames(spec.name).arm_scene)).string();
       std::string load_error;
       ModelPtr model = LoadModel(scene, &load_error);
       if (!model) {

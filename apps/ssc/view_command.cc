@@ -74,11 +74,11 @@ int RunViewCommand(int argc, char** argv) {
       return 2;
     }
     const std::string dir = (std::filesystem::path("out") / "objects" / "scenes").string();
-    if (!WriteObjectScenes(spec, dir, SourceDir(), &error)) {
+    if (!WriteObjectFiles(spec, dir, SourceDir(), &error)) {
       std::fprintf(stderr, "ssc view: %s\n", error.c_str());
       return 1;
     }
-    v.scene_path = std::filesystem::absolute(std::filesystem::path(dir) / (spec.name + ".xml")).string();
+    v.scene_path = std::filesystem::absolute(std::filesystem::path(dir) / ObjectFileNames(spec.name).arm_scene).string();
     const ContourLawParams law = v.config.law;
     const std::uint64_t run_seed = v.config.seed;
     v.config = ObjectTrialConfig(spec, law, run_seed);
