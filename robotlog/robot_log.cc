@@ -1,411 +1,280 @@
 #include "robotlog/robot_log.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
+#include <exception>
 #include <sstream>
+#include <string>
+
+#include "robotlog/text_cells.h"
 
 namespace ssc {
 namespace {
 
-const std::vector<std::string> kPressureFields = {"ch", "P1", "P2", "P3", "P4"};
-const std::vector<std::string> kPoseFields = {"orientation.w", "orientation.x", "orientation.y",
-                                              "orientation.z", "position.x",    "position.y",
-                                              "position.z"};
-const std::vector<std::string> kFtFields = {"force.x",  "force.y",  "force.z",
-                                            "torque.x", "torque.y", "torque.z"};
-const std::vector<std::string> kPwmFields = {"pwm"};
-
-void Fail(LoadError* e, const std::string& file, int line, int column, const std::string& msg) {
-  e->file = file;
-  e->line = line;
-  e->column = column;
-  e->message = msg;
-}
-
-std::vector<std::string> SplitCsv(const std::string& line) {
-  std::vector<std::string> cells;
-  std::string cell;
-  std::stringstream ss(line);
-  while (std::getline(ss, cell, ',')) cells.push_back(cell);
-  if (!line.empty() && line.back() == ',') cells.push_back("");
-  return cells;
-}
-
-std::string Trim(const std::string& s) {
-  const size_t a = s.find_first_not_of(" \t\r");
-  if (a == std::string::npos) return "";
-  const size_t b = s.find_last_not_of(" \t\r");
-  return s.substr(a, b - a + 1);
-}
-
-bool ParseDouble(const std::string& text, double* out) {
-  const std::string t = Trim(text);
-  if (t.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  *out = std::strtod(t.c_str(), &end);
-  return end && *end == '\0' && errno != ERANGE;
-}
-
-bool ParseInt64(const std::string& text, long long* out) {
-  const std::string t = Trim(text);
-  if (t.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  *out = std::strtoll(t.c_str(), &end, 10);
-  return end && *end == '\0' && errno != ERANGE;
-}
-
-bool ReadFile(const std::string& path, std::string* text, LoadError* e) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) {
-    Fail(e, path, 0, 0, "cannot open the file");
-    return false;
+const char* StreamName(StreamId id) {
+  switch (id) {
+    case StreamId::kPressure:
+      return "pressure";
+    case StreamId::kPose:
+      return "tool pose";
+    case StreamId::kFt:
+      return "F/T";
+    case StreamId::kPwm:
+      break;
   }
-  std::stringstream ss;
-  ss << f.rdbuf();
-  *text = ss.str();
+  return "PWM";
+}
+
+std::string Num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.6g", v);
+  return buf;
+}
+
+// An error at row i of a stream; `field` is the 0-based field index (-1: the time column).
+// Columns count the time stamp as column 1, as in the files.
+bool Fail(const Stream& s, StreamId id, size_t i, int field, const std::string& message,
+          LoadError* e) {
+  const std::string file = s.source.empty() ? std::string(StreamName(id)) + " stream" : s.source;
+  const int line = i < s.lines.size() ? s.lines[i] : text::ToInt(i + 1);
+  const std::string prefix = s.variable.empty() ? "" : "variable '" + s.variable + "': ";
+  text::SetError(e, file, line, field + 2, prefix + message);
+  return false;
+}
+
+bool CheckShape(const Stream& s, StreamId id, LoadError* e) {
+  const StreamSpec& spec = GetStreamSpec(id);
+  if (s.rows.size() != s.t_s.size()) {
+    return Fail(s, id, 0, -1, "has " + std::to_string(s.t_s.size()) + " times but " +
+                                  std::to_string(s.rows.size()) + " rows", e);
+  }
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (s.rows[i].size() != spec.fields()) {
+      return Fail(s, id, i, -1, "row has " + std::to_string(s.rows[i].size()) +
+                                    " fields, the topic has " + std::to_string(spec.fields()),
+                  e);
+    }
+    if (!std::isfinite(s.t_s[i]) || (i > 0 && !(s.t_s[i] > s.t_s[i - 1]))) {
+      return Fail(s, id, i, -1, "non-finite, duplicate or non-monotonic time", e);
+    }
+    for (size_t k = 0; k < spec.fields(); ++k) {
+      if (!std::isfinite(s.rows[i][k])) {
+        return Fail(s, id, i, static_cast<int>(k), "non-finite value (" +
+                                                       spec.columns[k].front() + ")", e);
+      }
+    }
+  }
   return true;
 }
 
-Stream ToStream(const std::vector<long long>& t_ns, std::vector<std::vector<double>> rows,
-                long long t0) {
-  Stream s;
-  for (long long t : t_ns) s.t_s.push_back(static_cast<double>(t - t0) * 1e-9);
-  s.rows = std::move(rows);
-  return s;
+bool CheckSampleInterval(const Stream& s, StreamId id, LoadError* e) {
+  if (s.size() < 2) return true;
+  std::vector<double> dt(s.size() - 1);
+  for (size_t i = 1; i < s.size(); ++i) dt[i - 1] = s.t_s[i] - s.t_s[i - 1];
+  std::nth_element(dt.begin(), dt.begin() + static_cast<long>(dt.size() / 2), dt.end());
+  const double median_s = dt[dt.size() / 2];
+  if (median_s < kSampleIntervalMinS || median_s > kSampleIntervalMaxS) {
+    return Fail(s, id, 1, -1,
+                "time stamps advance by a median of " + Num(median_s * 1e9) +
+                    " ns per sample: not nanoseconds? (expected 10 us to 60 s between samples)",
+                e);
+  }
+  return true;
 }
 
-// Linear interpolation of stream column `c` at time t (clamped at the ends).
-double Interp(const Stream& s, size_t c, double t) {
-  if (t <= s.t_s.front()) return s.rows.front()[c];
-  if (t >= s.t_s.back()) return s.rows.back()[c];
-  const size_t i = static_cast<size_t>(std::upper_bound(s.t_s.begin(), s.t_s.end(), t) - s.t_s.begin());
-  const double u = (t - s.t_s[i - 1]) / (s.t_s[i] - s.t_s[i - 1]);
-  return s.rows[i - 1][c] + u * (s.rows[i][c] - s.rows[i - 1][c]);
+bool CheckPressure(const Stream& s, LoadError* e) {
+  for (size_t i = 0; i < s.size(); ++i) {
+    for (int c = 1; c <= 4; ++c) {
+      const double p = s.rows[i][c];
+      if (p < kAbsolutePressureMinPa) {
+        return Fail(s, StreamId::kPressure, i, c,
+                    "P" + std::to_string(c) + " = " + Num(p) +
+                        " Pa is not an absolute pressure (raw sensor readings lie within 15-175 "
+                        "kPa): gauge vacuum or another unit? This stream takes raw absolute Pa",
+                    e);
+      }
+      if (p > kAbsolutePressureMaxPa) {
+        return Fail(s, StreamId::kPressure, i, c,
+                    "P" + std::to_string(c) + " = " + Num(p) +
+                        " Pa is above the sensor's absolute range (15-175 kPa): another unit?",
+                    e);
+      }
+    }
+  }
+  return true;
 }
 
-void QuatMul(const double a[4], const double b[4], double out[4]) {
-  out[0] = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3];
-  out[1] = a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2];
-  out[2] = a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1];
-  out[3] = a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0];
+bool CheckPose(const Stream& s, LoadError* e) {
+  static const char* kAxes[3] = {"position.x", "position.y", "position.z"};
+  for (size_t i = 0; i < s.size(); ++i) {
+    const std::vector<double>& r = s.rows[i];
+    const double n = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3]);
+    if (std::fabs(n - 1.0) > kQuaternionNormTolerance) {
+      return Fail(s, StreamId::kPose, i, 0,
+                  "orientation is not a unit quaternion (norm " + Num(n) + ")", e);
+    }
+    for (int k = 0; k < 3; ++k) {
+      if (std::fabs(r[4 + k]) > kPositionMaxM) {
+        return Fail(s, StreamId::kPose, i, 4 + k,
+                    std::string(kAxes[k]) + " = " + Num(r[4 + k]) +
+                        " is more than 5 m from the robot base: millimetres? The pose takes m",
+                    e);
+      }
+    }
+  }
+  return true;
 }
 
-void Rotate(const double q[4], const double v[3], double out[3]) {
-  const double p[4] = {0, v[0], v[1], v[2]}, qc[4] = {q[0], -q[1], -q[2], -q[3]};
-  double t[4], r[4];
-  QuatMul(q, p, t);
-  QuatMul(t, qc, r);
-  out[0] = r[1];
-  out[1] = r[2];
-  out[2] = r[3];
+bool CheckPwm(const Stream& s, LoadError* e) {
+  for (size_t i = 0; i < s.size(); ++i) {
+    const double v = s.rows[i][0];
+    if (v < 0 || v > 255) {
+      return Fail(s, StreamId::kPwm, i, 0,
+                  "PWM " + Num(v) + " is outside 0..255 (fraction, percent or 8-bit duty)", e);
+    }
+  }
+  return true;
+}
+
+std::string Span(const Stream& s) {
+  return "[" + Num(s.t_s.front()) + ", " + Num(s.t_s.back()) + "] s";
 }
 
 }  // namespace
 
 std::string LoadError::ToString() const {
   std::ostringstream os;
-  os << file;
-  if (line > 0) os << ":" << line;
-  if (column > 0) os << ":" << column;
+  os << (file.empty() ? "log" : file);
+  if (line > 0) os << ':' << line;
+  if (line > 0 && column > 0) os << ':' << column;
   os << ": " << message;
   return os.str();
 }
 
-bool ParseTopicCsv(const std::string& text, const std::string& name,
-                   const std::vector<std::string>& expected, std::vector<long long>* t_ns,
-                   std::vector<std::vector<double>>* rows, LoadError* e,
-                   std::vector<int>* lines) {
-  t_ns->clear();
-  rows->clear();
-  if (lines) lines->clear();
-  const size_t n_cols = expected.size() + 1;
-  std::stringstream in(text);
-  std::string line;
-  int line_no = 0;
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (Trim(line).empty()) continue;
-    const std::vector<std::string> cells = SplitCsv(line);
-    long long t = 0;
-    double first_cell = 0;
-    if (t_ns->empty() && rows->empty() && !ParseDouble(cells[0], &first_cell)) {
-      // A header: it must name the documented fields in order.
-      if (cells.size() != n_cols) {
-        Fail(e, name, line_no, 0, "header has " + std::to_string(cells.size()) +
-                                      " columns, expected " + std::to_string(n_cols) +
-                                      " (time + " + std::to_string(expected.size()) + " fields)");
-        return false;
-      }
-      for (size_t c = 1; c < n_cols; ++c) {
-        const std::string h = Trim(cells[c]);
-        if (h != expected[c - 1]) {
-          Fail(e, name, line_no, static_cast<int>(c + 1),
-               "header names '" + h + "', expected '" + expected[c - 1] + "'");
+bool ValidateRobotLog(const RobotLog& log, LoadError* error) {
+  try {
+    const Stream* streams[] = {&log.pressure_abs, &log.tool_pose, &log.ft, &log.pwm};
+    for (const StreamSpec& spec : AllStreamSpecs()) {
+      const Stream& s = *streams[static_cast<size_t>(spec.id)];
+      if (s.empty()) {
+        if (spec.required) {
+          text::SetError(error, s.source.empty() ? "log" : s.source, 0, 0,
+                         std::string("empty stream: the ") + StreamName(spec.id) +
+                             " stream is required");
           return false;
         }
+        continue;
       }
-      continue;
+      if (!CheckShape(s, spec.id, error) || !CheckSampleInterval(s, spec.id, error)) return false;
     }
-    if (cells.size() != n_cols) {
-      Fail(e, name, line_no, static_cast<int>(std::min(cells.size(), n_cols) + 1),
-           "row has " + std::to_string(cells.size()) + " columns, expected " +
-               std::to_string(n_cols) + (cells.size() < n_cols ? " (missing columns)" : ""));
-      return false;
-    }
-    if (!ParseInt64(cells[0], &t)) {
-      Fail(e, name, line_no, 1, "time stamp '" + Trim(cells[0]) + "' is not an integer (ns)");
-      return false;
-    }
-    if (!t_ns->empty() && t <= t_ns->back()) {
-      Fail(e, name, line_no, 1, std::string(t == t_ns->back() ? "duplicate" : "non-monotonic") +
-                                    " time stamp " + std::to_string(t) + " (previous " +
-                                    std::to_string(t_ns->back()) + ")");
-      return false;
-    }
-    std::vector<double> values(expected.size());
-    for (size_t c = 1; c < n_cols; ++c) {
-      if (!ParseDouble(cells[c], &values[c - 1])) {
-        Fail(e, name, line_no, static_cast<int>(c + 1),
-             "'" + Trim(cells[c]) + "' is not a number (" + expected[c - 1] + ")");
-        return false;
-      }
-      if (!std::isfinite(values[c - 1])) {
-        Fail(e, name, line_no, static_cast<int>(c + 1), "non-finite value (" + expected[c - 1] + ")");
-        return false;
-      }
-    }
-    t_ns->push_back(t);
-    rows->push_back(std::move(values));
-    if (lines) lines->push_back(line_no);
-  }
-  if (t_ns->empty()) {
-    Fail(e, name, 0, 0, "empty stream: no data rows");
+    return CheckPressure(log.pressure_abs, error) && CheckPose(log.tool_pose, error) &&
+           CheckPwm(log.pwm, error);
+  } catch (const std::exception& ex) {
+    text::SetError(error, "log", 0, 0, std::string("cannot check: ") + ex.what());
     return false;
   }
-  return true;
-}
-
-bool ReadTopicCsv(const std::string& path, const std::vector<std::string>& expected,
-                  std::vector<long long>* t_ns, std::vector<std::vector<double>>* rows,
-                  LoadError* e, std::vector<int>* lines) {
-  std::string text;
-  return ReadFile(path, &text, e) && ParseTopicCsv(text, path, expected, t_ns, rows, e, lines);
-}
-
-namespace {
-
-bool CheckAbsolutePressure(const std::string& file, const Stream& s, LoadError* e) {
-  for (size_t i = 0; i < s.rows.size(); ++i) {
-    for (int c = 1; c <= 4; ++c) {
-      const double p = s.rows[i][c];
-      if (p < 30000 || p > 130000) {
-        Fail(e, file, i < s.lines.size() ? s.lines[i] : static_cast<int>(i + 1), c + 2,
-             "pressure " + std::to_string(p) + " Pa is not an absolute pressure (expected "
-             "30-130 kPa; gauge vacuum belongs in the plain format)");
-        return false;
-      }
-    }
-  }
-  return true;
-}
-
-}  // namespace
-
-bool LoadRobotLogDir(const std::string& dir, RobotLog* log, LoadError* e) {
-  namespace fs = std::filesystem;
-  struct Topic {
-    const char* file;
-    const std::vector<std::string>* fields;
-    Stream* stream;
-    bool required;
-  };
-  std::vector<long long> t[4];
-  std::vector<std::vector<double>> rows[4];
-  std::vector<int> lines[4];
-  const Topic topics[4] = {{"pressure.csv", &kPressureFields, &log->pressure_abs, true},
-                           {"tool_pose.csv", &kPoseFields, &log->tool_pose, true},
-                           {"ft.csv", &kFtFields, &log->ft, false},
-                           {"pwm.csv", &kPwmFields, &log->pwm, false}};
-  long long t0 = -1;
-  for (int i = 0; i < 4; ++i) {
-    const std::string path = (fs::path(dir) / topics[i].file).string();
-    if (!fs::exists(path)) {
-      if (topics[i].required) {
-        Fail(e, path, 0, 0, "missing stream (required)");
-        return false;
-      }
-      continue;
-    }
-    if (!ReadTopicCsv(path, *topics[i].fields, &t[i], &rows[i], e, &lines[i])) return false;
-    t0 = t0 < 0 ? t[i].front() : std::min(t0, t[i].front());
-  }
-  log->t0_ns = t0;
-  for (int i = 0; i < 4; ++i) {
-    if (!t[i].empty()) {
-      *topics[i].stream = ToStream(t[i], std::move(rows[i]), t0);
-      topics[i].stream->lines = std::move(lines[i]);
-    }
-  }
-  return CheckAbsolutePressure((fs::path(dir) / "pressure.csv").string(), log->pressure_abs, e);
-}
-
-bool WriteRobotLogDir(const std::string& dir, const RobotLog& log, std::string* error) {
-  namespace fs = std::filesystem;
-  fs::create_directories(dir);
-  auto write = [&](const char* file, const std::vector<std::string>& fields, const Stream& s) {
-    if (s.empty()) return true;
-    std::ofstream f(fs::path(dir) / file);
-    f << "t_ns";
-    for (const std::string& h : fields) f << ',' << h;
-    f << '\n';
-    char buf[64];
-    for (size_t i = 0; i < s.t_s.size(); ++i) {
-      f << log.t0_ns + std::llround(s.t_s[i] * 1e9);
-      for (double v : s.rows[i]) {
-        std::snprintf(buf, sizeof(buf), ",%.10g", v);
-        f << buf;
-      }
-      f << '\n';
-    }
-    if (!f) *error = (fs::path(dir) / file).string() + ": write failed";
-    return static_cast<bool>(f);
-  };
-  return write("pressure.csv", kPressureFields, log.pressure_abs) &&
-         write("tool_pose.csv", kPoseFields, log.tool_pose) && write("ft.csv", kFtFields, log.ft) &&
-         write("pwm.csv", kPwmFields, log.pwm);
 }
 
 bool ProcessRobotLog(const RobotLog& log, const ProcessOptions& o, ProcessedLog* out,
-                     LoadError* e) {
-  *out = ProcessedLog();
-  const Stream& p = log.pressure_abs;
-  if (p.empty() || log.tool_pose.empty()) {
-    Fail(e, "log", 0, 0, p.empty() ? "empty pressure stream" : "empty tool pose stream");
-    return false;
-  }
-  // In-air offset: mean absolute pressure per chamber over the first offset_window_s.
-  std::array<double, 4> offset{};
-  int n = 0;
-  for (size_t i = 0; i < p.t_s.size() && p.t_s[i] <= p.t_s.front() + o.offset_window_s; ++i) {
-    for (int c = 0; c < 4; ++c) offset[c] += p.rows[i][c + 1];
-    ++n;
-  }
-  for (double& v : offset) v /= n;
-  const int window = std::max(1, o.moving_average);
-  std::vector<std::array<double, 4>> raw(p.t_s.size());
-  for (size_t i = 0; i < p.t_s.size(); ++i)
-    for (int c = 0; c < 4; ++c) raw[i][c] = offset[c] - p.rows[i][c + 1];
-  for (size_t i = 0; i < p.t_s.size(); ++i) {
-    std::array<double, 4> avg{};
-    const size_t from = i + 1 >= static_cast<size_t>(window) ? i + 1 - window : 0;
-    for (size_t k = from; k <= i; ++k)
-      for (int c = 0; c < 4; ++c) avg[c] += raw[k][c] / static_cast<double>(i - from + 1);
-    // Pose at this time: interpolated position; orientation from the nearest sample.
-    double q[4], pos[3];
-    for (int k = 0; k < 4; ++k) q[k] = Interp(log.tool_pose, k, p.t_s[i]);
-    for (int k = 0; k < 3; ++k) pos[k] = Interp(log.tool_pose, 4 + k, p.t_s[i]);
-    const double qn = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    if (!(qn > 0.5 && qn < 1.5)) {
-      Fail(e, "tool_pose", 0, 0, "orientation is not a unit quaternion near t = " +
-                                     std::to_string(p.t_s[i]) + " s");
+                     LoadError* error) {
+  try {
+    *out = ProcessedLog();
+    if (!ValidateRobotLog(log, error)) return false;
+    const Stream& p = log.pressure_abs;
+    const Stream& pose = log.tool_pose;
+    const std::string p_file = p.source.empty() ? "pressure stream" : p.source;
+    if (!(o.offset_window_s > 0) || !(o.tcp_offset_m >= 0 && o.tcp_offset_m < 1) ||
+        (o.clock == ClockSource::kUniform && !(o.clock_rate_hz > 0 && o.clock_rate_hz <= 1e5))) {
+      text::SetError(error, p_file, 0, 0,
+                     "bad processing options: need offset window > 0 s, TCP offset in [0, 1) m "
+                     "and a uniform clock rate in (0, 100000] Hz");
       return false;
     }
-    for (double& v : q) v /= qn;
-    // TCP = tool0 + R * (0, 0, tcp_offset), then base -> scene.
-    const double along[3] = {0, 0, o.tcp_offset_m};
-    double d[3], tcp_base[3], tcp_scene[3], q_scene[4];
-    Rotate(q, along, d);
-    for (int k = 0; k < 3; ++k) tcp_base[k] = pos[k] + d[k];
-    const double bq[4] = {o.base_quat[0], o.base_quat[1], o.base_quat[2], o.base_quat[3]};
-    Rotate(bq, tcp_base, tcp_scene);
-    QuatMul(bq, q, q_scene);
-    out->t_s.push_back(p.t_s[i]);
-    out->p_pa.push_back(avg);
-    out->tcp_m.push_back({tcp_scene[0] + o.base_pos_m[0], tcp_scene[1] + o.base_pos_m[1],
-                          tcp_scene[2] + o.base_pos_m[2]});
-    out->quat.push_back({q_scene[0], q_scene[1], q_scene[2], q_scene[3]});
-  }
-  return true;
-}
 
-bool LoadPlainLog(const std::string& path, ProcessedLog* out, LoadError* e) {
-  *out = ProcessedLog();
-  std::string text;
-  if (!ReadFile(path, &text, e)) return false;
-  std::stringstream in(text);
-  std::string line;
-  int line_no = 0;
-  const std::vector<std::string> want = {"t_s", "x_m",   "y_m",   "z_m",   "qw",   "qx",
-                                         "qy",  "qz",    "p1_pa", "p2_pa", "p3_pa", "p4_pa"};
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (Trim(line).empty()) continue;
-    const std::vector<std::string> cells = SplitCsv(line);
-    if (line_no == 1) {
-      for (size_t c = 0; c < want.size(); ++c) {
-        if (c >= cells.size() || Trim(cells[c]) != want[c]) {
-          Fail(e, path, 1, static_cast<int>(c + 1),
-               "header must start with " + want[c] + " (the plain format: t_s,x_m,y_m,z_m,qw,qx,"
-               "qy,qz,p1_pa..p4_pa)");
-          return false;
+    // 1. In-air offset, as the robot host took it before the trial.
+    const double start_s = o.trial_start_s >= 0 ? o.trial_start_s
+                                                : p.t_s.front() + o.offset_window_s;
+    const double begin_s = start_s - o.offset_window_s;
+    std::array<double, 4> offset{};
+    if (InAirOffset(p, begin_s, start_s, &offset) == 0) {
+      text::SetError(error, p_file, 0, 0,
+                     "no pressure sample in the in-air offset window [" + Num(begin_s) + ", " +
+                         Num(start_s) + ") s; the stream covers " + Span(p));
+      return false;
+    }
+    size_t first_in_window = 0;
+    while (p.t_s[first_in_window] < begin_s) ++first_in_window;
+    for (int c = 0; c < 4; ++c) {
+      if (offset[c] < kAmbientMinPa || offset[c] > kAmbientMaxPa) {
+        return Fail(p, StreamId::kPressure, first_in_window, c + 1,
+                    "P" + std::to_string(c + 1) + " averages " + Num(offset[c]) +
+                        " Pa over the in-air window [" + Num(begin_s) + ", " + Num(start_s) +
+                        ") s, not an ambient pressure (70-110 kPa): is the cup in air then?",
+                    error);
+      }
+    }
+    out->offset_pa = offset;
+
+    // 2. Gauge vacuum and the host's filter, on the pressure samples.
+    const std::vector<std::array<double, 4>> vacuum =
+        MovingAverage(GaugeVacuum(p, offset), o.moving_average);
+
+    // 3. The clock: inside the span covered by both pressure and pose.
+    const double from_s = std::max(p.t_s.front(), pose.t_s.front());
+    const double to_s = std::min(p.t_s.back(), pose.t_s.back());
+    std::vector<size_t> p_index;  // pressure clock: which samples
+    if (o.clock == ClockSource::kPressure) {
+      for (size_t i = 0; i < p.size(); ++i) {
+        if (p.t_s[i] >= from_s && p.t_s[i] <= to_s) {
+          out->t_s.push_back(p.t_s[i]);
+          p_index.push_back(i);
         }
       }
-      continue;
+    } else {
+      out->t_s = UniformClock(from_s, to_s, o.clock_rate_hz);
     }
-    if (cells.size() < want.size()) {
-      Fail(e, path, line_no, static_cast<int>(cells.size() + 1), "missing columns");
+    if (out->t_s.empty()) {
+      text::SetError(error, p_file, 0, 0,
+                     "the pressure and pose streams do not overlap in time: pressure covers " +
+                         Span(p) + ", pose " + Span(pose));
       return false;
     }
-    double v[12];
-    for (size_t c = 0; c < 12; ++c) {
-      if (!ParseDouble(cells[c], &v[c]) || !std::isfinite(v[c])) {
-        Fail(e, path, line_no, static_cast<int>(c + 1), "'" + Trim(cells[c]) + "' is not a finite number");
-        return false;
+
+    // 4. Everything onto the clock.
+    if (o.clock == ClockSource::kPressure) {
+      for (size_t i : p_index) out->p_pa.push_back(vacuum[i]);
+    } else {
+      Stream v;
+      v.t_s = p.t_s;
+      for (const auto& row : vacuum) v.rows.push_back({row[0], row[1], row[2], row[3]});
+      for (const auto& row : ResampleRows(v, out->t_s, o.interpolation)) {
+        out->p_pa.push_back({row[0], row[1], row[2], row[3]});
       }
     }
-    if (!out->t_s.empty() && v[0] <= out->t_s.back()) {
-      Fail(e, path, line_no, 1, "non-monotonic or duplicate time");
-      return false;
+    const Eigen::Quaterniond q_scene_base(o.X_scene_base.rotation());
+    std::vector<Eigen::Quaterniond> q_base_tool0;
+    const std::vector<Eigen::Isometry3d> X_base_tool0 =
+        ResamplePose(pose, out->t_s, o.interpolation, &q_base_tool0);
+    for (size_t i = 0; i < X_base_tool0.size(); ++i) {
+      const Eigen::Isometry3d X_scene_tool0 = o.X_scene_base * X_base_tool0[i];
+      const Eigen::Vector3d tcp = TcpFromTool0(X_scene_tool0, o.tcp_offset_m);
+      const Eigen::Quaterniond q = q_scene_base * q_base_tool0[i];
+      out->tcp_m.push_back({tcp.x(), tcp.y(), tcp.z()});
+      out->quat.push_back({q.w(), q.x(), q.y(), q.z()});
     }
-    for (int c = 8; c < 12; ++c) {
-      if (v[c] > 80000) {
-        Fail(e, path, line_no, c + 1, "pressure " + std::to_string(v[c]) +
-                                          " Pa looks absolute; the plain format takes gauge vacuum");
-        return false;
-      }
+    for (const auto& row : ResampleRows(log.ft, out->t_s, o.interpolation)) {
+      out->ft.push_back({row[0], row[1], row[2], row[3], row[4], row[5]});
     }
-    out->t_s.push_back(v[0]);
-    out->tcp_m.push_back({v[1], v[2], v[3]});
-    out->quat.push_back({v[4], v[5], v[6], v[7]});
-    out->p_pa.push_back({v[8], v[9], v[10], v[11]});
-  }
-  if (out->t_s.empty()) {
-    Fail(e, path, 0, 0, "empty log: no data rows");
+    const PwmScale scale = o.pwm_scale == PwmScale::kAuto ? DetectPwmScale(log.pwm) : o.pwm_scale;
+    for (const auto& row : ResampleRows(log.pwm, out->t_s, Interpolation::kZeroOrderHold)) {
+      out->pwm_pct.push_back(PwmPercent(row[0], scale));
+    }
+    return true;
+  } catch (const std::exception& ex) {
+    text::SetError(error, "log", 0, 0, std::string("cannot process: ") + ex.what());
     return false;
   }
-  return true;
-}
-
-bool WritePlainLog(const std::string& path, const ProcessedLog& log, std::string* error) {
-  std::ofstream f(path);
-  f << "t_s,x_m,y_m,z_m,qw,qx,qy,qz,p1_pa,p2_pa,p3_pa,p4_pa\n";
-  char buf[512];
-  for (size_t i = 0; i < log.t_s.size(); ++i) {
-    std::snprintf(buf, sizeof(buf), "%.6f,%.9f,%.9f,%.9f,%.9f,%.9f,%.9f,%.9f,%.4f,%.4f,%.4f,%.4f\n",
-                  log.t_s[i], log.tcp_m[i][0], log.tcp_m[i][1], log.tcp_m[i][2], log.quat[i][0],
-                  log.quat[i][1], log.quat[i][2], log.quat[i][3], log.p_pa[i][0], log.p_pa[i][1],
-                  log.p_pa[i][2], log.p_pa[i][3]);
-    f << buf;
-  }
-  if (!f) *error = path + ": write failed";
-  return static_cast<bool>(f);
 }
 
 }  // namespace ssc

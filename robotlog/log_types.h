@@ -1,0 +1,64 @@
+// The data every robot-log reader fills and every writer takes, and the error they report.
+//
+// Conventions: times in seconds relative to the log's first time stamp (`t0_ns`, the earliest
+// first stamp of all streams); per-topic rows hold the message fields in the documented order
+// (robotlog/topic_csv.h); pressures in a RobotLog are raw ABSOLUTE Pa, pressures in a
+// ProcessedLog are GAUGE vacuum Pa, positive = vacuum.
+#ifndef SSC_ROBOTLOG_LOG_TYPES_H_
+#define SSC_ROBOTLOG_LOG_TYPES_H_
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace ssc {
+
+// Where and why a log was refused. `line` and `column` are 1-based; 0 means the error is not
+// about one cell (a missing file, an empty stream). For a .mat file they are the matrix row and
+// column of the named variable.
+struct LoadError {
+  std::string file;
+  int line = 0;
+  int column = 0;
+  std::string message;
+  // "file:line:column: message" (line and column left out when 0).
+  std::string ToString() const;
+};
+
+// One stream of a robot log: time stamps and rows of the message's fields (without the time).
+struct Stream {
+  std::vector<double> t_s;
+  std::vector<std::vector<double>> rows;
+  // Where each row came from, for errors found after parsing (unit checks): the file line
+  // (1-based) of a CSV row or the matrix row of a .mat variable. May be empty (built in code).
+  std::vector<int> lines;
+  std::string source;    // file the stream was read from
+  std::string variable;  // .mat variable name; empty for CSV
+  bool empty() const { return t_s.empty(); }
+  size_t size() const { return t_s.size(); }
+};
+
+// The merged robot log: what the robot stack recorded, in its own units and frames.
+struct RobotLog {
+  Stream pressure_abs;  // ch, P1..P4: raw absolute chamber pressures, Pa (chambers 1..4)
+  Stream tool_pose;     // qw, qx, qy, qz, x, y, z: tool0 in the robot base frame, m
+  Stream ft;            // fx, fy, fz (N), tx, ty, tz (N m) in the transducer frame; optional
+  Stream pwm;           // pump drive as logged (fraction, percent or 0..255); optional
+  long long t0_ns = 0;  // ROS time stamp of t = 0
+};
+
+// The twin's view of a log, on one clock: gauge vacuum per chamber, the tool centre point and
+// tool0's orientation in the scene frame, and the optional streams interpolated onto the clock.
+struct ProcessedLog {
+  std::vector<double> t_s;
+  std::vector<std::array<double, 4>> p_pa;   // gauge vacuum, positive = vacuum
+  std::vector<std::array<double, 3>> tcp_m;  // tool centre point, scene frame
+  std::vector<std::array<double, 4>> quat;   // tool0 orientation in the scene frame (w, x, y, z)
+  std::vector<std::array<double, 6>> ft;     // fx, fy, fz (N), tx, ty, tz (N m); empty if none
+  std::vector<double> pwm_pct;               // pump drive, percent; empty if none
+  std::array<double, 4> offset_pa{};         // the in-air absolute pressure subtracted, Pa
+};
+
+}  // namespace ssc
+
+#endif  // SSC_ROBOTLOG_LOG_TYPES_H_
