@@ -232,6 +232,14 @@ bool ProcessRobotLog(const RobotLog& log, const ProcessOptions& o, ProcessedLog*
         }
       }
     } else {
+      const double ticks = (to_s - from_s) * o.clock_rate_hz;
+      if (ticks > 1e8) {
+        text::SetError(error, p_file, 0, 0,
+                       "a uniform clock at " + Num(o.clock_rate_hz) + " Hz over " +
+                           Num(to_s - from_s) + " s would have " + Num(ticks) +
+                           " samples (limit 1e8)");
+        return false;
+      }
       out->t_s = UniformClock(from_s, to_s, o.clock_rate_hz);
     }
     if (out->t_s.empty()) {

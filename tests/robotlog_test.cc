@@ -488,7 +488,8 @@ struct BadCase {
 
 TEST(RobotLogTest, BadTopicCsvErrorsNameFileLineAndColumn) {
   const BadCase cases[] = {
-      {StreamId::kPressure, "t_ns,ch,P1,P2,P3,P4\n1,1,1e5,1e5,1e5\n", 2, 6, "missing column 'P4'"},
+      {StreamId::kPressure, "t_ns,ch,P1,P2,P3,P4\n1,1,1e5,1e5,1e5\n", 2, 6,
+       "missing column 'P4'"},
       {StreamId::kPressure, "t_ns,ch,P1,P2,P3\n", 1, 6, "header is missing column 'P4'"},
       {StreamId::kPressure, "1,1,1e5,1e5,1e5,1e5,7\n", 1, 7, "unexpected extra column"},
       {StreamId::kPressure, "t_ns,ch,P1,P2,P3,P4,P5\n", 1, 7, "unexpected extra column"},
@@ -499,7 +500,8 @@ TEST(RobotLogTest, BadTopicCsvErrorsNameFileLineAndColumn) {
       {StreamId::kPressure, "1,1,1e5,1e999,1e5,1e5\n", 1, 4, "non-finite"},
       {StreamId::kPressure, "5,1,1e5,1e5,1e5,1e5\n3,1,1e5,1e5,1e5,1e5\n", 2, 1, "non-monotonic"},
       {StreamId::kPressure, "5,1,1e5,1e5,1e5,1e5\n\n5,1,1e5,1e5,1e5,1e5\n", 3, 1, "duplicate"},
-      {StreamId::kPressure, "1.5,1,1e5,1e5,1e5,1e5\n", 1, 1, "not an integer number of nanoseconds"},
+      {StreamId::kPressure, "1.5,1,1e5,1e5,1e5,1e5\n", 1, 1,
+       "not an integer number of nanoseconds"},
       {StreamId::kPressure, "-5,1,1e5,1e5,1e5,1e5\n", 1, 1, "negative time stamp"},
       {StreamId::kPressure, "x1,1,1e5,1e5,1e5,1e5\n", 1, 1, "not a time-stamp column"},
       {StreamId::kPressure, "t_s,ch,P1,P2,P3,P4\n", 1, 1, "reads as seconds"},

@@ -21,14 +21,15 @@ mkdir -p "$WORK/corpus"
   robotlog/text_cells.cc robotlog/topic_csv.cc -lmatio -o "$WORK/topic_csv_fuzz"
 
 # Seeds: the first byte picks the topic (0 pressure, 1 pose, 2 F/T, 3 PWM).
-printf '\x00t_ns,ch,P1,P2,P3,P4\n1000000000,1,101000,101010,101020,101030\n1010000000,1,100000,100010,100020,100030\n' \
-  > "$WORK/corpus/seed_pressure"
+printf '\x00t_ns,ch,P1,P2,P3,P4\n%s\n%s\n' '1000000000,1,101000,101010,101020,101030' \
+  '1010000000,1,100000,100010,100020,100030' > "$WORK/corpus/seed_pressure"
 printf '\x011,1,0,0,0,0.5,0.1,0.3\n2,0.7071,0.7071,0,0,0.5,0.1,0.3\n' > "$WORK/corpus/seed_pose"
-printf '\x02%%time,field.force.x,field.force.y,field.force.z,field.torque.x,field.torque.y,field.torque.z\r\n5,0.1,-2e-1,1.5,0,0,nan\r\n' \
+printf '\x02%s\r\n5,0.1,-2e-1,1.5,0,0,nan\r\n' \
+  '%time,field.force.x,field.force.y,field.force.z,field.torque.x,field.torque.y,field.torque.z' \
   > "$WORK/corpus/seed_ft"
 printf '\x03stamp,data\n1,255\n2,128\n' > "$WORK/corpus/seed_pwm"
-printf '\x00t_s,x_m,y_m,z_m,qw,qx,qy,qz,p1_pa,p2_pa,p3_pa,p4_pa,pwm_pct\n0,0.1,0.2,0.3,1,0,0,0,10,20,30,40,100\n' \
-  > "$WORK/corpus/seed_plain"
+printf '\x00%s\n%s\n' 't_s,x_m,y_m,z_m,qw,qx,qy,qz,p1_pa,p2_pa,p3_pa,p4_pa,pwm_pct' \
+  '0,0.1,0.2,0.3,1,0,0,0,10,20,30,40,100' > "$WORK/corpus/seed_plain"
 
 # -rss_limit_mb and -max_len keep a 2-core, shared machine usable; -timeout flags hangs.
 "$WORK/topic_csv_fuzz" -max_total_time="$SECONDS_TO_RUN" -print_final_stats=1 \
