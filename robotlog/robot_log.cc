@@ -106,7 +106,7 @@ bool CheckPressure(const Stream& s, LoadError* e) {
 }
 
 bool CheckPose(const Stream& s, LoadError* e) {
-  static const char* kAxes[3] = {"position.x", "position.y", "position.z"};
+  static const char* const kAxes[3] = {"position.x", "position.y", "position.z"};
   for (size_t i = 0; i < s.size(); ++i) {
     const std::vector<double>& r = s.rows[i];
     const double n = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3]);
@@ -185,10 +185,12 @@ bool ProcessRobotLog(const RobotLog& log, const ProcessOptions& o, ProcessedLog*
     const Stream& pose = log.tool_pose;
     const std::string p_file = p.source.empty() ? "pressure stream" : p.source;
     if (!(o.offset_window_s > 0) || !(o.tcp_offset_m >= 0 && o.tcp_offset_m < 1) ||
+        o.moving_average > 100000 ||
         (o.clock == ClockSource::kUniform && !(o.clock_rate_hz > 0 && o.clock_rate_hz <= 1e5))) {
       text::SetError(error, p_file, 0, 0,
-                     "bad processing options: need offset window > 0 s, TCP offset in [0, 1) m "
-                     "and a uniform clock rate in (0, 100000] Hz");
+                     "bad processing options: need offset window > 0 s, TCP offset in [0, 1) m, "
+                     "moving average <= 100000 samples and a uniform clock rate in (0, 100000] "
+                     "Hz");
       return false;
     }
 

@@ -55,7 +55,8 @@ RobotLog MakeRobotLog(const std::vector<TwinSample>& run_in, const LogPerturbati
   // The run with its in-air lead: the cup held at the first pose, no vacuum.
   std::vector<TwinSample> run;
   const double step_s = o.pressure_rate_hz > 0 ? 1.0 / o.pressure_rate_hz : MedianStep(run_in);
-  const int lead = o.in_air_s > 0 ? static_cast<int>(std::ceil(o.in_air_s / step_s)) : 0;
+  // Whole samples; the 1e-9 keeps 1 s at 160 Hz from rounding up to 161 samples.
+  const int lead = o.in_air_s > 0 ? static_cast<int>(std::ceil(o.in_air_s / step_s - 1e-9)) : 0;
   for (int k = lead; k > 0; --k) {
     TwinSample s = run_in.front();
     s.t_s -= k * step_s;
@@ -75,7 +76,10 @@ RobotLog MakeRobotLog(const std::vector<TwinSample>& run_in, const LogPerturbati
   // Pressures: absolute, with the sensors' offsets, scale and noise.
   Stream& p = log.pressure_abs;
   if (o.pressure_rate_hz > 0) {
-    for (double t = run.front().t_s; t <= run.back().t_s + 1e-12; t += step_s) p.t_s.push_back(t);
+    const double span_s = run.back().t_s - run.front().t_s;
+    for (long k = 0; static_cast<double>(k) * step_s <= span_s + 1e-12; ++k) {
+      p.t_s.push_back(run.front().t_s + static_cast<double>(k) * step_s);
+    }
   } else {
     for (const TwinSample& s : run) p.t_s.push_back(s.t_s);
   }

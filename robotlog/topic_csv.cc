@@ -5,6 +5,8 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string_view>
 #include <system_error>
 
 #include "robotlog/robot_log.h"
@@ -15,9 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::vector<std::string> kTimeNames = {"t_ns",      "time",         "%time",
-                                             "stamp",     "timestamp",    "header.stamp",
-                                             "rosbagtimestamp", "time_ns", "stamp_ns"};
+constexpr std::string_view kTimeNames[] = {"t_ns",         "time",           "%time",
+                                           "stamp",        "timestamp",      "header.stamp",
+                                           "rosbagtimestamp", "time_ns",     "stamp_ns"};
 
 // Header cell -> comparable name: lower case, quotes and export prefixes dropped.
 std::string NormalizeName(std::string_view cell) {
@@ -46,7 +48,8 @@ std::string ColumnList(const StreamSpec& spec) {
 bool CheckHeader(const std::vector<std::string_view>& cells, const std::string& file, int line_no,
                  const StreamSpec& spec, LoadError* e) {
   const std::string time_name = NormalizeName(cells[0]);
-  if (std::find(kTimeNames.begin(), kTimeNames.end(), time_name) == kTimeNames.end()) {
+  if (std::find(std::begin(kTimeNames), std::end(kTimeNames), time_name) ==
+      std::end(kTimeNames)) {
     const bool seconds = time_name == "t_s" || time_name == "t" || time_name == "time_s";
     text::SetError(e, file, line_no, 1,
                    "first column " + text::Quote(cells[0]) +
@@ -187,7 +190,8 @@ bool WriteTopicFile(const fs::path& path, const StreamSpec& spec, const Stream& 
 }  // namespace
 
 const std::vector<StreamSpec>& AllStreamSpecs() {
-  static const std::vector<StreamSpec> specs = {
+  // Never destroyed: other statics may still read it at exit.
+  static const auto* const specs = new std::vector<StreamSpec>{
       {StreamId::kPressure,
        {"pressure.csv"},
        {"pressure"},
@@ -211,7 +215,7 @@ const std::vector<StreamSpec>& AllStreamSpecs() {
        {{"force.x"}, {"force.y"}, {"force.z"}, {"torque.x"}, {"torque.y"}, {"torque.z"}}},
       {StreamId::kPwm, {"pwm.csv"}, {"pwm"}, false, {{"pwm", "data"}}},
   };
-  return specs;
+  return *specs;
 }
 
 const StreamSpec& GetStreamSpec(StreamId id) {
