@@ -23,6 +23,7 @@ struct Session {
   const mjModel* m = nullptr;
   mjData* d = nullptr;
   ContourTrial* trial = nullptr;
+  const ChamberPressureSensor* sensor = nullptr;  // looked up once, for the status text
   int tool_site = -1;
   mjvCamera cam;
   mjvOption opt;
@@ -117,10 +118,7 @@ void Render(Session* s, mjrRect viewport, double rtf) {
   mjrRect below = {top.left, top.bottom - fh, fw, fh};
   mjr_figure(top, &s->figures.pressures(), &s->con);
   mjr_figure(below, &s->figures.correction(), &s->con);
-  int instance = -1;
-  const ChamberPressureSensor* sensor = FindChamberPressureSensor(s->m, s->d, &instance);
-  const std::string status = TrialStatusText(*s->trial, rtf, s->paused, s->speed,
-                                             sensor);
+  const std::string status = TrialStatusText(*s->trial, rtf, s->paused, s->speed, s->sensor);
   mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport, status.c_str(), nullptr, &s->con);
   if (s->help) {
     mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMLEFT, viewport, ViewerHelpText().c_str(), nullptr,
@@ -207,7 +205,8 @@ int RunViewer(const ViewerOptions& options) {
   s->d = data.get();
   s->trial = trial.get();
   int instance = -1;
-  s->tool_site = FindChamberPressureSensor(s->m, s->d, &instance)->site_id();
+  s->sensor = FindChamberPressureSensor(s->m, s->d, &instance);
+  s->tool_site = s->sensor->site_id();
   mjv_defaultCamera(&s->cam);
   mjv_defaultOption(&s->opt);
   s->opt.geomgroup[4] = 1;  // the lip segments

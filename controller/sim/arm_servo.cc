@@ -62,9 +62,4 @@ void ArmServo::Command(const mjModel* m, mjData* d, const Vec3& tool_site_world)
   }
 }
 
-std::unique_ptr<ToolServo> MakeToolServo(const mjModel* m) {
-  if (mj_name2id(m, mjOBJ_JOINT, "gantry_x") >= 0) return std::make_unique<GantryServo>();
-  return std::make_unique<ArmServo>();
-}
-
 }  // namespace ssc

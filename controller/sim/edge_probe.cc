@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "controller/pure/contour_law.h"
+
 namespace ssc {
 
 std::unique_ptr<EdgeProbe3d> EdgeProbe3d::Create(const std::string& scene_path,
@@ -68,16 +70,14 @@ ProbeReading EdgeProbe3d::Read(double x_m, double y_m, double yaw_rad, double su
     r.leak_area_mm2[c] = s.leak_area_m2[c] * 1e6;
   }
   for (const LipSegmentState& l : s.lip) r.lip_contacts += l.in_contact ? 1 : 0;
-  const auto& p = r.filtered_pa;
-  const double ps = 0.5 * (p[0] + p[3]), pn = 0.5 * (p[1] + p[2]);
-  const double pw = 0.5 * (p[2] + p[3]), pe = 0.5 * (p[0] + p[1]);
-  r.pbar_pa = 0.25 * (ps + pn + pw + pe);
-  r.dpx_pa = pn - ps;
-  r.dpy_pa = pw - pe;
-  r.static_pbar_pa = 0.25 * (s.flow.tap_pa[0] + s.flow.tap_pa[1] + s.flow.tap_pa[2] +
-                             s.flow.tap_pa[3]);
-  // g in the tool frame: north = -x_tool, west = +y_tool; then to world with the site rotation.
-  const mjtNum g_tool[3] = {-r.dpx_pa, r.dpy_pa, 0};
+  // The reference formulas are the controller's own (controller/pure/contour_law.h).
+  const ContourStep law = ComputeContourStep(r.filtered_pa, ContourLawParams{});
+  r.pbar_pa = law.p_mean_pa;
+  r.dpx_pa = law.dpx_pa;
+  r.dpy_pa = law.dpy_pa;
+  r.static_pbar_pa = ComputeContourStep(r.static_pa, ContourLawParams{}).p_mean_pa;
+  // g is in the tool frame; to world with the site rotation.
+  const mjtNum g_tool[3] = {law.g[0], law.g[1], 0};
   mjtNum g_world[3];
   mju_mulMatVec3(g_world, d->site_xmat + 9 * sensor_->site_id(), g_tool);
   r.g_world_rad = std::atan2(g_world[1], g_world[0]);

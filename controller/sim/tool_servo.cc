@@ -1,5 +1,7 @@
 #include "controller/sim/tool_servo.h"
 
+#include "controller/sim/arm_servo.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -49,6 +51,11 @@ bool GantryServo::Init(const mjModel* m, mjData* d, int tool_site, std::string* 
 void GantryServo::Command(const mjModel* m, mjData* d, const Vec3& tool_site_world) {
   (void)m;
   for (int k = 0; k < 3; ++k) d->ctrl[actuator_[k]] = tool_site_world[k] - site_minus_joints_[k];
+}
+
+std::unique_ptr<ToolServo> MakeToolServo(const mjModel* m) {
+  if (mj_name2id(m, mjOBJ_JOINT, "gantry_x") >= 0) return std::make_unique<GantryServo>();
+  return std::make_unique<ArmServo>();
 }
 
 }  // namespace ssc
