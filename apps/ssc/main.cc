@@ -5,6 +5,7 @@
 
 #include "apps/ssc/commands.h"
 #include "controller/sim/mujoco_model.h"
+#include "studies/job_runner.h"
 
 namespace {
 
@@ -55,7 +56,13 @@ int main(int argc, char** argv) {
     return argc < 2 ? 2 : 0;
   }
   for (const Command& c : kCommands) {
-    if (!std::strcmp(argv[1], c.name)) return c.run(argc - 2, argv + 2);
+    if (!std::strcmp(argv[1], c.name)) {
+      // Under mpirun the studies share their trials between ranks (studies/job_runner.h).
+      ssc::InitJobRunnerMpi(&argc, &argv);
+      const int rc = c.run(argc - 2, argv + 2);
+      ssc::FinalizeJobRunnerMpi(/*abort=*/rc != 0);  // a failed rank must not leave others waiting
+      return rc;
+    }
   }
   std::fprintf(stderr, "ssc: unknown command '%s'\n\n", argv[1]);
   PrintUsage();

@@ -12,6 +12,7 @@
 #include "apps/ssc/trial_options.h"
 #include "controller/sim/mujoco_model.h"
 #include "controller/sim/sweep.h"
+#include "studies/job_runner.h"
 
 namespace ssc {
 
@@ -70,7 +71,8 @@ int RunSweepCommand(int argc, char** argv) {
     std::fprintf(stderr, "ssc sweep: %s\n", error.c_str());
     return 1;
   }
-  const bool bar = !p.Flag("no-progress") && isatty(STDERR_FILENO);
+  const bool rank0 = JobRunnerRank() == 0;
+  const bool bar = rank0 && !p.Flag("no-progress") && isatty(STDERR_FILENO);
   auto progress = [&](const SweepProgress& s) {
     if (!bar) return;
     const int ran = s.done - s.skipped;
@@ -88,10 +90,25 @@ int RunSweepCommand(int argc, char** argv) {
     return 1;
   }
   if (bar) std::fprintf(stderr, "\n");
-  std::printf("sweep: %d trials (%d already in %s, %d run) in %.1f s wall on %d threads "
-              "(%.2f trials/s)\n",
+  if (!rank0) return summary.interrupted ? 130 : 0;
+  std::printf("sweep: %d trials (%d already in %s, %d run) in %.1f s wall on %d rank(s) x %d "
+              "threads (%.2f trials/s)\n",
               summary.total, summary.skipped, spec.out_csv.c_str(), summary.ran, summary.wall_s,
-              spec.threads, summary.wall_s > 0 ? summary.ran / summary.wall_s : 0.0);
+              summary.ranks, summary.threads,
+              summary.wall_s > 0 ? summary.ran / summary.wall_s : 0.0);
+  double busy = 0;
+  for (double b : summary.rank_busy_s) busy += b;
+  std::printf("load: %.1f trial-s busy, longest trial %.2f s; rank busy max/mean %.3f (",
+              busy, summary.longest_trial_s, summary.balance_max_over_mean);
+  for (size_t r = 0; r < summary.rank_busy_s.size(); ++r) {
+    std::printf("%s%.1f", r ? " " : "", summary.rank_busy_s[r]);
+  }
+  std::printf(" s)\n");
+  if (summary.interrupted) {
+    std::fprintf(stderr, "ssc sweep: interrupted; %d finished rows kept in %s, re-run the same "
+                         "command to resume\n", summary.ran, spec.out_csv.c_str());
+    return 130;
+  }
   if (!p.Flag("no-plot")) {
     const std::string png = (out / "success_maps.png").string();
     if (RunPlotScript("plot_success_maps.py", {spec.out_csv, png})) {

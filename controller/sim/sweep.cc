@@ -1,19 +1,18 @@
 #include "controller/sim/sweep.h"
 
-#include <atomic>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <mutex>
 #include <set>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 #include <tuple>
 
 #include "controller/sim/mujoco_model.h"
 #include "controller/sim/trial_io.h"
+#include "studies/job_runner.h"
 
 namespace ssc {
 namespace {
@@ -79,6 +78,13 @@ std::uint64_t TrialSeed(std::uint64_t base, double pref, double beta, double ste
   return h & ((std::uint64_t{1} << 53) - 1);
 }
 
+// Estimated simulated time of a trial, for the longest-first handout: a lap of the disk at
+// about four step lengths per second (docs/trials.md) plus the approach and move.
+double EstimatedTrialCost(const TrialConfig& c) {
+  const double lap_mm = 2 * 3.14159265358979 * c.target.disk_radius_m * 1e3;
+  return 5.0 + lap_mm / (4.0 * std::max(c.law.step_mm, 0.1));
+}
+
 bool RunSweep(const mjModel* m, const SweepSpec& spec,
               const std::function<void(const SweepProgress&)>& progress, SweepSummary* summary,
               std::string* error) {
@@ -90,19 +96,12 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
     TrialConfig config;
     int repeat;
   };
+  // The whole grid, the same on every rank; only rank 0 reads the CSV to skip finished rows.
   std::vector<Job> jobs;
-  bool has_header = false;
-  const std::set<Key> done = FinishedRows(spec.out_csv, &has_header);
-  int total = 0, skipped = 0;
   for (double pref : spec.pref_pa) {
     for (double beta : spec.beta) {
       for (double step : spec.step_mm) {
         for (int rep = 0; rep < spec.repeats; ++rep) {
-          ++total;
-          if (done.count(MakeKey(pref, beta, step, rep))) {
-            ++skipped;
-            continue;
-          }
           Job job{spec.base, rep};
           job.config.law.p_ref_pa = pref;
           job.config.law.beta = beta;
@@ -118,57 +117,74 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
       }
     }
   }
-  std::ofstream out(spec.out_csv, std::ios::app);
-  if (!out) {
-    *error = spec.out_csv + ": cannot open for appending";
-    return false;
+  const bool writer = JobRunnerRank() == 0;
+  std::set<Key> done;
+  std::ofstream out;
+  if (writer) {
+    bool has_header = false;
+    done = FinishedRows(spec.out_csv, &has_header);
+    out.open(spec.out_csv, std::ios::app);
+    if (!out) {
+      *error = spec.out_csv + ": cannot open for appending";
+      return false;
+    }
+    if (!has_header) out << SweepCsvHeader() << '\n' << std::flush;
   }
-  if (!has_header) out << SweepCsvHeader() << '\n' << std::flush;
 
+  JobSet set;
+  set.count = jobs.size();
+  set.cost = [&](std::size_t i) { return EstimatedTrialCost(jobs[i].config); };
+  set.skip = [&](std::size_t i) {
+    const ContourLawParams& k = jobs[i].config.law;
+    return done.count(MakeKey(k.p_ref_pa, k.beta, k.step_mm, jobs[i].repeat)) > 0;
+  };
+  set.run = [&](std::size_t i) {
+    TrialResult result;
+    std::string trial_error;
+    t_in_trial = true;
+    try {
+      result = RunTrial(m, jobs[i].config, false, &trial_error);
+    } catch (const std::exception& e) {
+      result = TrialResult();
+      result.outcome = "unstable";
+      result.detail = std::string("MuJoCo error: ") + e.what();
+    }
+    t_in_trial = false;
+    return SweepCsvRow(spec.scene_name, jobs[i].config, jobs[i].repeat, result);
+  };
   auto* previous_error = mju_user_error;
   mju_user_error = ThrowingError;
-  std::mutex out_mutex;
-  std::atomic<size_t> next{0};
-  int finished = 0;
+  int skipped = 0, finished = 0;
+  if (writer) {
+    for (std::size_t i = 0; i < jobs.size(); ++i) skipped += set.skip(i) ? 1 : 0;
+  }
   const auto t0 = std::chrono::steady_clock::now();
-  auto worker = [&]() {
-    for (size_t i = next++; i < jobs.size(); i = next++) {
-      TrialResult result;
-      std::string trial_error;
-      t_in_trial = true;
-      try {
-        result = RunTrial(m, jobs[i].config, false, &trial_error);
-      } catch (const std::exception& e) {
-        result = TrialResult();
-        result.outcome = "unstable";
-        result.detail = std::string("MuJoCo error: ") + e.what();
-      }
-      t_in_trial = false;
-      const std::string row = SweepCsvRow(spec.scene_name, jobs[i].config, jobs[i].repeat, result);
-      std::lock_guard<std::mutex> lock(out_mutex);
-      out << row << '\n' << std::flush;
-      ++finished;
-      if (progress) {
-        SweepProgress p;
-        p.done = finished + skipped;
-        p.total = total;
-        p.skipped = skipped;
-        p.elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        progress(p);
-      }
+  JobRunnerOptions options;
+  options.threads = spec.threads;
+  const JobRunStats stats = RunJobs(set, options, [&](std::size_t, const std::string& row) {
+    out << row << '\n' << std::flush;
+    ++finished;
+    if (progress) {
+      SweepProgress p;
+      p.total = static_cast<int>(jobs.size());
+      p.skipped = skipped;
+      p.done = finished + skipped;
+      p.elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      progress(p);
     }
-  };
-  const int n_threads = std::max(1, std::min<int>(spec.threads, static_cast<int>(jobs.size())));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < n_threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
+  });
   mju_user_error = previous_error;
 
-  summary->total = total;
-  summary->skipped = skipped;
-  summary->ran = static_cast<int>(jobs.size());
-  summary->wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  summary->total = static_cast<int>(stats.total);
+  summary->skipped = static_cast<int>(stats.skipped);
+  summary->ran = static_cast<int>(stats.ran);
+  summary->wall_s = stats.wall_s;
+  summary->ranks = stats.ranks;
+  summary->threads = stats.threads;
+  summary->rank_busy_s = stats.rank_busy_s;
+  summary->balance_max_over_mean = stats.BalanceMaxOverMean();
+  summary->longest_trial_s = stats.longest_job_s;
+  summary->interrupted = stats.interrupted;
   return true;
 }
 
