@@ -8,8 +8,8 @@
 #include <cstring>
 #include <string>
 
-#include "controller/sim/mujoco_model.h"
-#include "controller/sim/trial.h"
+#include "runtime/mujoco_model.h"
+#include "runtime/trial.h"
 #include "plugin/chamber_pressure_sensor.h"
 
 namespace {

@@ -8,8 +8,8 @@
 #include <random>
 
 #include "controller/pure/contour_law.h"
-#include "objects/contour.h"
-#include "controller/sim/mujoco_model.h"
+#include "geometry/contour.h"
+#include "runtime/mujoco_model.h"
 #include "plugin/chamber_pressure_sensor.h"
 
 namespace ssc {

@@ -9,7 +9,7 @@
 
 #include <mujoco/mujoco.h>
 
-#include "controller/sim/trial.h"
+#include "runtime/trial.h"
 #include "robotlog/robot_log.h"
 
 namespace ssc {

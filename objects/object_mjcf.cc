@@ -7,7 +7,6 @@
 #include <sstream>
 #include <vector>
 
-#include "controller/sim/mujoco_model.h"
 
 namespace ssc {
 namespace {
@@ -252,11 +251,11 @@ bool WriteObjectFiles(const ObjectSpec& spec, const std::string& out_dir,
          WriteProbeScene(spec, repo_dir, out, files, error);
 }
 
-int WriteAllObjectScenes(const std::string& out_dir, std::string* error) {
+int WriteAllObjectScenes(const std::string& out_dir, const std::string& repo_dir,
+                         std::string* error) {
   int count = 0;
-  const std::string repo = SourceDir();
   for (const ObjectSpec& spec : AllObjects()) {
-    if (!WriteObjectFiles(spec, out_dir, repo, error)) return -1;
+    if (!WriteObjectFiles(spec, out_dir, repo_dir, error)) return -1;
     ++count;
   }
   return count;

@@ -31,7 +31,8 @@ bool WriteObjectFiles(const ObjectSpec& spec, const std::string& out_dir,
 
 // Writes the files of every object of AllObjects() into out_dir (e.g. build/scenes/objects/);
 // returns how many objects, or -1 with *error set.
-int WriteAllObjectScenes(const std::string& out_dir, std::string* error);
+int WriteAllObjectScenes(const std::string& out_dir, const std::string& repo_dir,
+                         std::string* error);
 
 // Earlier layout, kept for apps/ssc (objects, view) until they call WriteObjectFiles:
 // <name>_object.xml (the object), <name>.xml (the UR-10 scene), <name>_gantry.xml.

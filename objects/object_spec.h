@@ -1,5 +1,5 @@
 // The test objects of the published experiments, each generated from a few parameters: its
-// exact edge (objects/contour_path.h), how a trial starts and succeeds on it, and the convex
+// exact edge (geometry/contour_path.h), how a trial starts and succeeds on it, and the convex
 // pieces that build it in MuJoCo. Pure C++; objects/object_mjcf.h writes them as MJCF.
 //
 // World convention (all scenes): z up, north = +y, east = +x, the table a plane at z = 0. Every
@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "objects/contour.h"
-#include "objects/contour_path.h"
+#include "geometry/contour.h"
+#include "geometry/contour_path.h"
 #include "objects/fillet_profile.h"
 
 namespace ssc {

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "compare/log_replay.h"
-#include "controller/sim/mujoco_model.h"
+#include "runtime/mujoco_model.h"
 
 namespace ssc {
 namespace {

@@ -14,11 +14,11 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "controller/sim/mujoco_model.h"
+#include "runtime/mujoco_model.h"
 #include "objects/object_mjcf.h"
 #include "objects/object_spec.h"
-#include "objects/object_step_cost.h"
-#include "objects/object_trials.h"
+#include "studies/object_step_cost.h"
+#include "studies/object_trials.h"
 
 namespace ssc {
 namespace {
@@ -36,7 +36,7 @@ const fs::path& SceneDir() {
   static const fs::path dir = [] {
     const fs::path d = SceneDirPath();
     std::string error;
-    EXPECT_EQ(WriteAllObjectScenes(d.string(), &error), 42) << error;
+    EXPECT_EQ(WriteAllObjectScenes(d.string(), SourceDir(), &error), 42) << error;
     return d;
   }();
   return dir;
@@ -279,7 +279,7 @@ TEST(ObjectFilesTest, EveryFileLoadsAndOutputIsDeterministic) {
   // Same bytes when written again elsewhere (at the same depth: the model paths are relative).
   const fs::path again = SceneDir().string() + "_again";
   std::string error;
-  ASSERT_EQ(WriteAllObjectScenes(again.string(), &error), 42) << error;
+  ASSERT_EQ(WriteAllObjectScenes(again.string(), SourceDir(), &error), 42) << error;
   auto read = [](const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
     std::stringstream s;

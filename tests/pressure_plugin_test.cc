@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "controller/sim/edge_probe.h"
-#include "controller/sim/mujoco_model.h"
+#include "studies/edge_probe.h"
+#include "runtime/mujoco_model.h"
 
 namespace ssc {
 namespace {

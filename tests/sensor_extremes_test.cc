@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "controller/sim/mujoco_model.h"
+#include "runtime/mujoco_model.h"
 #include "plugin/chamber_pressure_sensor.h"
 
 namespace ssc {

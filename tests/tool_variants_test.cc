@@ -1,4 +1,4 @@
-#include "controller/sim/tool_variants.h"
+#include "studies/tool_variants.h"
 
 #include <filesystem>
 #include <fstream>
@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "controller/sim/mujoco_model.h"
+#include "runtime/mujoco_model.h"
 #include "plugin/chamber_pressure_sensor.h"
 
 namespace ssc {

@@ -10,10 +10,10 @@
 
 #include <gtest/gtest.h>
 
-#include "controller/sim/control_dispatch.h"
-#include "controller/sim/mujoco_model.h"
-#include "controller/sim/sweep.h"
-#include "controller/sim/trial.h"
+#include "runtime/control_dispatch.h"
+#include "runtime/mujoco_model.h"
+#include "studies/sweep.h"
+#include "runtime/trial.h"
 
 namespace ssc {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "controller/sim/mujoco_model.h"
-#include "controller/sim/trial.h"
+#include "runtime/mujoco_model.h"
+#include "runtime/trial.h"
 
 namespace ssc {
 namespace {

@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "controller/sim/dynamic_calibration.h"
-#include "controller/sim/mujoco_model.h"
+#include "studies/dynamic_calibration.h"
+#include "runtime/mujoco_model.h"
 
 namespace ssc {
 namespace {

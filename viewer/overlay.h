@@ -7,7 +7,7 @@
 
 #include <mujoco/mujoco.h>
 
-#include "controller/sim/trial.h"
+#include "runtime/trial.h"
 #include "plugin/chamber_pressure_sensor.h"
 
 namespace ssc {

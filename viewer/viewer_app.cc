@@ -12,7 +12,7 @@
 #include <memory>
 #include <vector>
 
-#include "controller/sim/mujoco_model.h"
+#include "runtime/mujoco_model.h"
 #include "viewer/overlay.h"
 
 namespace ssc {

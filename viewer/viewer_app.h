@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "controller/sim/trial.h"
+#include "runtime/trial.h"
 
 namespace ssc {
 

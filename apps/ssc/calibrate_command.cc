@@ -8,8 +8,8 @@
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "calibration/pneumatic_fit.h"
-#include "controller/sim/dynamic_calibration.h"
-#include "controller/sim/mujoco_model.h"
+#include "studies/dynamic_calibration.h"
+#include "runtime/mujoco_model.h"
 
 namespace ssc {
 

@@ -19,9 +19,9 @@
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
 #include "compare/log_replay.h"
-#include "controller/sim/mujoco_model.h"
-#include "controller/sim/sweep.h"
-#include "controller/sim/tool_variants.h"
+#include "runtime/mujoco_model.h"
+#include "studies/sweep.h"
+#include "studies/tool_variants.h"
 
 namespace ssc {
 namespace {

@@ -6,7 +6,7 @@
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
 #include "compare/log_replay.h"
-#include "controller/sim/mujoco_model.h"
+#include "runtime/mujoco_model.h"
 
 namespace ssc {
 

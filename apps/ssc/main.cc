@@ -4,7 +4,7 @@
 #include <string>
 
 #include "apps/ssc/commands.h"
-#include "controller/sim/mujoco_model.h"
+#include "runtime/mujoco_model.h"
 #include "studies/job_runner.h"
 
 namespace {

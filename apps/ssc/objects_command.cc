@@ -10,9 +10,9 @@
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
-#include "controller/sim/mujoco_model.h"
+#include "runtime/mujoco_model.h"
 #include "objects/object_mjcf.h"
-#include "objects/object_trials.h"
+#include "studies/object_trials.h"
 
 namespace ssc {
 

@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "controller/sim/mujoco_model.h"
+#include "runtime/mujoco_model.h"
 
 namespace ssc {
 

@@ -8,7 +8,7 @@
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
-#include "controller/sim/edge_probe.h"
+#include "studies/edge_probe.h"
 
 namespace ssc {
 namespace {

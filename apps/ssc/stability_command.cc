@@ -8,8 +8,8 @@
 
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
-#include "controller/sim/mujoco_model.h"
-#include "controller/sim/trial.h"
+#include "runtime/mujoco_model.h"
+#include "runtime/trial.h"
 
 namespace ssc {
 

@@ -10,9 +10,9 @@
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
 #include "apps/ssc/trial_options.h"
-#include "controller/sim/mujoco_model.h"
-#include "controller/sim/sweep.h"
+#include "runtime/mujoco_model.h"
 #include "studies/job_runner.h"
+#include "studies/sweep.h"
 
 namespace ssc {
 

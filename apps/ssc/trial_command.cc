@@ -6,9 +6,9 @@
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
 #include "apps/ssc/trial_options.h"
-#include "controller/sim/mujoco_model.h"
+#include "runtime/mujoco_model.h"
 #include "compare/log_replay.h"
-#include "controller/sim/trial_io.h"
+#include "studies/trial_io.h"
 
 namespace ssc {
 

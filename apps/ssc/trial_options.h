@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "apps/ssc/cli.h"
-#include "controller/sim/trial.h"
+#include "runtime/trial.h"
 
 namespace ssc {
 

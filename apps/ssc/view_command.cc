@@ -6,9 +6,9 @@
 #include "apps/ssc/trial_options.h"
 #include <filesystem>
 
-#include "controller/sim/mujoco_model.h"
+#include "runtime/mujoco_model.h"
 #include "objects/object_mjcf.h"
-#include "objects/object_trials.h"
+#include "studies/object_trials.h"
 #include "viewer/viewer_app.h"
 
 namespace ssc {

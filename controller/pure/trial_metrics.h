@@ -8,6 +8,8 @@
 #include <functional>
 #include <vector>
 
+#include "geometry/point2.h"
+
 namespace ssc {
 
 inline constexpr double kCupBodyDiameterMm = 23.0;
@@ -25,7 +27,6 @@ struct DiskTrialMetrics {
   double contour_max_mm = 0;    // max distance from the true contour
 };
 
-using Point2 = std::array<double, 2>;
 // Unsigned distance (m) of a point from the true contour.
 using ContourDistance = std::function<double(double x_m, double y_m)>;
 

@@ -1,0 +1,151 @@
+#include "runtime/mujoco_model.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+
+namespace ssc {
+namespace {
+
+// MuJoCo reports plugin init failures through mju_warning; capture them while loading.
+std::mutex g_warning_mutex;
+std::string* g_captured = nullptr;
+void (*g_previous_warning)(const char*) = nullptr;
+
+void CaptureWarning(const char* msg) {
+  if (g_captured) {
+    if (!g_captured->empty()) *g_captured += "; ";
+    *g_captured += msg;
+  } else if (g_previous_warning) {
+    g_previous_warning(msg);
+  }
+}
+
+class WarningCapture {
+ public:
+  explicit WarningCapture(std::string* sink) : lock_(g_warning_mutex) {
+    g_previous_warning = mju_user_warning;
+    g_captured = sink;
+    mju_user_warning = CaptureWarning;
+  }
+  ~WarningCapture() {
+    mju_user_warning = g_previous_warning;
+    g_captured = nullptr;
+  }
+
+ private:
+  std::lock_guard<std::mutex> lock_;
+};
+
+bool FileExists(const std::string& path) { return std::ifstream(path).good(); }
+
+}  // namespace
+
+std::string CheckMuJoCoVersion() {
+  if (mj_version() != mjVERSION_HEADER) {
+    std::ostringstream os;
+    os << "MuJoCo library version " << mj_versionString() << " (" << mj_version()
+       << ") does not match the headers this program was built with (" << mjVERSION_HEADER
+       << "); the project pins mujoco==" << SSC_MUJOCO_PINNED
+       << ". Rebuild with tools/setup.sh.";
+    return os.str();
+  }
+  return "";
+}
+
+std::string SourceDir() {
+  const char* env = std::getenv("SSC_SOURCE_DIR");
+  return (env && env[0]) ? env : SSC_SOURCE_DIR;
+}
+
+std::string ResolveScenePath(const std::string& scene) {
+  // Absolute: MuJoCo 4.0 mis-resolves a model asset's relative path inside an <include> of a
+  // relatively named main file ("scenes/x.xml" + "../models/..." loses the "..").
+  if (FileExists(scene)) return std::filesystem::absolute(scene).lexically_normal().string();
+  const std::string dir = SourceDir() + "/scenes/";
+  if (FileExists(dir + scene)) return dir + scene;
+  if (FileExists(dir + scene + ".xml")) return dir + scene + ".xml";
+  return scene;
+}
+
+std::string ToolModelWithConfig(const std::string& config_xml, std::string* error) {
+  const std::string path = SourceDir() + "/models/ssc_tool.xml";
+  std::ifstream in(path);
+  std::stringstream buf;
+  buf << in.rdbuf();
+  std::string xml = buf.str();
+  const std::string tag = "<instance name=\"ssc_pressure\"/>";
+  const size_t at = xml.find(tag);
+  if (!in || at == std::string::npos) {
+    *error = path + ": cannot read, or no '" + tag + "' in it";
+    return "";
+  }
+  xml.replace(at, tag.size(), "<instance name=\"ssc_pressure\">" + config_xml + "</instance>");
+  return xml;
+}
+
+std::string SceneWithToolConfig(const std::string& scene_path, const std::string& dir,
+                                const std::string& config_xml, std::string* error) {
+  namespace fs = std::filesystem;
+  const std::string tool = ToolModelWithConfig(config_xml, error);
+  if (tool.empty()) return "";
+  std::error_code ec;
+  fs::create_directories(fs::path(dir) / "models", ec);
+  fs::create_directories(fs::path(dir) / "scenes", ec);
+  const fs::path scene = fs::path(dir) / "scenes" / fs::path(scene_path).filename();
+  fs::copy_file(scene_path, scene, fs::copy_options::overwrite_existing, ec);
+  std::ofstream out(fs::path(dir) / "models" / "ssc_tool.xml");
+  out << tool;
+  if (ec || !out) {
+    *error = dir + ": cannot write the scene copy";
+    return "";
+  }
+  return scene.string();
+}
+
+ModelPtr LoadModel(const std::string& path, std::string* error) {
+  if (!FileExists(path)) {
+    *error = path + ": file not found";
+    return nullptr;
+  }
+  char buffer[2048] = "";
+  std::string warnings;
+  mjModel* m = nullptr;
+  {
+    WarningCapture capture(&warnings);
+    m = mj_loadXML(path.c_str(), nullptr, buffer, sizeof(buffer));
+  }
+  if (m == nullptr) {
+    *error = path + ": " + buffer;
+    if (!warnings.empty()) *error += " (" + warnings + ")";
+    return nullptr;
+  }
+  // Plugins validate their config when data is made; fail the load here if any refuse.
+  std::string data_error;
+  DataPtr probe = MakeData(m, &data_error);
+  if (!probe) {
+    mj_deleteModel(m);
+    *error = path + ": " + data_error;
+    return nullptr;
+  }
+  return ModelPtr(m);
+}
+
+DataPtr MakeData(const mjModel* m, std::string* error) {
+  std::string warnings;
+  mjData* d = nullptr;
+  {
+    WarningCapture capture(&warnings);
+    d = mj_makeData(m);
+  }
+  if (d == nullptr) {
+    *error = warnings.empty() ? "mj_makeData failed" : warnings;
+    return nullptr;
+  }
+  return DataPtr(d);
+}
+
+}  // namespace ssc

@@ -1,0 +1,370 @@
+#include "runtime/trial.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "runtime/mujoco_model.h"
+
+namespace ssc {
+namespace {
+
+std::string RangeError(const char* field, double v, const char* range) {
+  std::ostringstream os;
+  os << field << " = " << v << " is out of range " << range;
+  return os.str();
+}
+
+bool Finite(double v) { return std::isfinite(v); }
+
+}  // namespace
+
+TrialTarget TrialTarget::Disk(double centre_x_m, double centre_y_m, double radius_m,
+                              double start_offset_m) {
+  TrialTarget t;
+  t.approach = {centre_x_m, centre_y_m};
+  t.start = {centre_x_m + start_offset_m, centre_y_m};
+  t.sweep_centre = {centre_x_m, centre_y_m};
+  t.disk_radius_m = radius_m;
+  return t;
+}
+
+const char* PhaseName(TrialPhase phase) {
+  switch (phase) {
+    case TrialPhase::kApproach: return "approach";
+    case TrialPhase::kMoveToStart: return "move";
+    case TrialPhase::kFollow: return "follow";
+    case TrialPhase::kDone: return "done";
+  }
+  return "?";
+}
+
+std::string TrialConfig::Validate() const {
+  if (const std::string e = law.Validate(); !e.empty()) return e;
+  if (!Finite(control_period_s) || control_period_s < 0.002 || control_period_s > 10)
+    return RangeError("control_period_s", control_period_s, "[0.002, 10] s");
+  if (!Finite(approach_force_n) || approach_force_n <= 0 || approach_force_n > 50)
+    return RangeError("approach_force_n", approach_force_n, "(0, 50] N");
+  if (!Finite(approach_speed_m_s) || approach_speed_m_s <= 0 || approach_speed_m_s > 0.1)
+    return RangeError("approach_speed_m_s", approach_speed_m_s, "(0, 0.1] m/s");
+  if (!Finite(move_speed_m_s) || move_speed_m_s <= 0 || move_speed_m_s > 0.5)
+    return RangeError("move_speed_m_s", move_speed_m_s, "(0, 0.5] m/s");
+  if (!Finite(target.start[0]) || !Finite(target.start[1]) || !Finite(target.approach[0]) ||
+      !Finite(target.approach[1]))
+    return "target start/approach points must be finite";
+  if (!Finite(target.success_sweep_deg) || std::fabs(target.success_sweep_deg) < 1 ||
+      std::fabs(target.success_sweep_deg) > 3600)
+    return RangeError("success_sweep_deg", target.success_sweep_deg, "+-[1, 3600] deg");
+  if (!Finite(timeout_s) || timeout_s <= 0 || timeout_s > 3600)
+    return RangeError("timeout_s", timeout_s, "(0, 3600] s");
+  if (!Finite(servo.smoothing_s) || servo.smoothing_s < 0 || servo.smoothing_s > 5)
+    return RangeError("servo smoothing_s", servo.smoothing_s, "[0, 5] s");
+  if (!Finite(log_period_s) || log_period_s <= 0 || log_period_s > 1)
+    return RangeError("log_period_s", log_period_s, "(0, 1] s");
+  return "";
+}
+
+ContourTrial::ContourTrial(const mjModel* m, mjData* d, const TrialConfig& config, bool keep_log)
+    : m_(m), d_(d), config_(config), keep_log_(keep_log) {}
+
+std::unique_ptr<ContourTrial> ContourTrial::Create(const mjModel* m, mjData* d,
+                                                   const TrialConfig& config, bool keep_log,
+                                                   std::string* error) {
+  if (const std::string e = config.Validate(); !e.empty()) {
+    *error = "trial config: " + e;
+    return nullptr;
+  }
+  std::unique_ptr<ContourTrial> trial(new ContourTrial(m, d, config, keep_log));
+  ChamberPressureSensor* sensor = FindChamberPressureSensor(m, d, &trial->pressure_instance_);
+  if (sensor == nullptr) {
+    *error = "scene has no ssc.chamber_pressure sensor";
+    return nullptr;
+  }
+  trial->tool_site_ = sensor->site_id();
+  for (int i = 0; i < m->nsensor; ++i) {
+    if (m->sensor_type[i] == mjSENS_PLUGIN && m->sensor_plugin[i] == trial->pressure_instance_) {
+      trial->pressure_adr_ = m->sensor_adr[i];
+    }
+  }
+  const int ft = mj_name2id(m, mjOBJ_SENSOR, "ft_force");
+  if (ft < 0 || m->sensor_type[ft] != mjSENS_FORCE) {
+    *error = "scene has no force sensor named 'ft_force' (the F/T transducer)";
+    return nullptr;
+  }
+  trial->ft_adr_ = m->sensor_adr[ft];
+  trial->servo_ = MakeToolServo(m);
+  if (!trial->servo_) {
+    *error = "scene has neither a gantry (gantry_x/y/z) nor a UR-10 to move the tool";
+    return nullptr;
+  }
+  trial->servo_->set_params(config.servo);
+  trial->registration_ = std::make_unique<ScopedControl>(d, trial.get());
+  if (!trial->registration_->ok()) {
+    *error = "mjcb_control is owned by other code; cannot install the trial controller";
+    return nullptr;
+  }
+  trial->Reset();
+  if (!trial->active_) {
+    // Bind once more to get the servo's reason.
+    trial->servo_->Init(m, d, trial->tool_site_, error);
+    return nullptr;
+  }
+  return trial;
+}
+
+void ContourTrial::Reset() {
+  active_ = false;  // mj_forward below calls the control callback: not before the servo is bound
+  if (m_->nkey > 0) {
+    mj_resetDataKeyframe(m_, d_, 0);
+  } else {
+    mj_resetData(m_, d_);
+  }
+  ChamberPressureSensor::SetRunSeed(m_, d_, pressure_instance_, config_.seed);
+  mj_forward(m_, d_);
+  phase_ = TrialPhase::kApproach;
+  ft_tare_n_ = 0;
+  tare_samples_ = 0;
+  next_iteration_s_ = 0;
+  next_log_s_ = 0;
+  next_log_time_s_ = 0;
+  follow_start_s_ = 0;
+  sweep_ = SweepTracker();
+  tracked_arc_m_ = 0;
+  path_xy_.clear();
+  path_t_.clear();
+  result_ = TrialResult();
+  last_step_ = ContourStep{};
+  if (servo_) {
+    std::string ignored;
+    active_ = servo_->Init(m_, d_, tool_site_, &ignored);
+  }
+  start_point_ = {config_.target.start[0], config_.target.start[1], 0};
+  transfer_done_ = false;
+}
+
+double ContourTrial::FtNormalForce() const {
+  // Force the transducer exerts on the cup, in the F/T site frame (z along the cup axis, down).
+  // Pressing on a surface pushes the cup up: the reading along +z grows; tared in air.
+  return d_->sensordata[ft_adr_ + 2] - ft_tare_n_;
+}
+
+std::array<double, 4> ContourTrial::Pressures() const {
+  return {d_->sensordata[pressure_adr_], d_->sensordata[pressure_adr_ + 1],
+          d_->sensordata[pressure_adr_ + 2], d_->sensordata[pressure_adr_ + 3]};
+}
+
+void ContourTrial::Log(bool iteration) {
+  if (!keep_log_) return;
+  TrialLogRow row;
+  row.t_s = d_->time;
+  row.tool_m = servo_->Measured(d_);
+  row.p_pa = Pressures();
+  row.pbar_pa = last_step_.p_mean_pa;
+  row.dpx_pa = last_step_.dpx_pa;
+  row.dpy_pa = last_step_.dpy_pa;
+  row.cf = last_step_.cf;
+  row.step_x_m = last_step_world_[0];
+  row.step_y_m = last_step_world_[1];
+  row.ft_normal_n = FtNormalForce();
+  row.phase = phase_;
+  row.iteration = iteration;
+  result_.log.push_back(row);
+}
+
+void ContourTrial::Finish(const std::string& outcome, const std::string& detail) {
+  if (phase_ == TrialPhase::kDone) return;
+  phase_ = TrialPhase::kDone;
+  result_.outcome = outcome;
+  result_.detail = detail;
+  result_.sim_time_s = d_->time;
+  result_.follow_time_s = follow_start_s_ > 0 ? d_->time - follow_start_s_ : 0;
+  result_.swept_deg = sweep_.swept_deg();
+  const TrialTarget& tg = config_.target;
+  if (tg.arc_position_m) result_.end_arc_mm = tracked_arc_m_ * 1e3;
+  if (path_xy_.size() >= 2) {
+    result_.metrics = ComputeDiskMetrics(path_xy_, path_t_, tg.sweep_centre,
+                                         tg.disk_radius_m > 0 ? tg.disk_radius_m : 1.0);
+    if (tg.disk_radius_m <= 0) {  // r_mean etc. mean nothing without a disk
+      result_.metrics.r_mean_mm = result_.metrics.dr_mm = result_.metrics.sigma_r_mm = 0;
+      result_.metrics.s_c = 0;
+    }
+    if (tg.contour_distance_m) {
+      const auto e = ContourError(path_xy_, tg.contour_distance_m);
+      result_.metrics.contour_mean_mm = e[0] * 1e3;
+      result_.metrics.contour_max_mm = e[1] * 1e3;
+    }
+  }
+}
+
+void ContourTrial::Control(const mjModel* m, mjData* d) {
+  (void)m;
+  (void)d;
+  if (!active_) return;
+  const double t = d_->time;
+  const Vec3 tool = servo_->Measured(d_);
+  // The log keeps every phase (the approach gives the in-air start a robot log also has),
+  // one row per log period; a control iteration logs its own row instead.
+  const bool iteration_now = phase_ == TrialPhase::kFollow && t + 1e-9 >= next_iteration_s_;
+  if (keep_log_ && t >= next_log_time_s_ && !iteration_now) {
+    Log(false);
+    next_log_time_s_ = t + config_.log_period_s;
+  }
+  switch (phase_) {
+    case TrialPhase::kApproach: {
+      // Tare the F/T over the first 50 ms in air, then descend until the compression is read.
+      if (t < 0.05) {
+        ft_tare_n_ = (ft_tare_n_ * tare_samples_ + d_->sensordata[ft_adr_ + 2]) / (tare_samples_ + 1);
+        ++tare_samples_;
+        break;
+      }
+      // First carry the cup, at its starting height, over the landing point.
+      if (!transfer_done_) {
+        Vec3 target = servo_->target();
+        const double dx = config_.target.approach[0] - target[0];
+        const double dy = config_.target.approach[1] - target[1];
+        const double dist = std::hypot(dx, dy), step = config_.move_speed_m_s * m_->opt.timestep;
+        if (dist > step) {
+          target[0] += dx / dist * step;
+          target[1] += dy / dist * step;
+          servo_->SetTarget(target);
+          break;
+        }
+        target[0] = config_.target.approach[0];
+        target[1] = config_.target.approach[1];
+        servo_->SetTarget(target);
+        if (std::hypot(tool[0] - target[0], tool[1] - target[1]) > 2e-4) break;
+        transfer_done_ = true;
+      }
+      const bool deep_enough =
+          tool[2] <= config_.target.surface_top_z_m - config_.target.max_compression_m;
+      if (FtNormalForce() >= config_.approach_force_n || deep_enough) {
+        hold_z_ = tool[2];
+        result_.hold_height_m = hold_z_;
+        servo_->SetTarget({tool[0], tool[1], hold_z_});
+        phase_ = TrialPhase::kMoveToStart;
+        break;
+      }
+      Vec3 target = servo_->target();
+      target[2] -= config_.approach_speed_m_s * m_->opt.timestep;
+      servo_->SetTarget(target);
+      if (t > 30) Finish("timeout", "approach never reached the start-up force");
+      break;
+    }
+    case TrialPhase::kMoveToStart: {
+      Vec3 target = servo_->target();
+      const double dx = start_point_[0] - target[0], dy = start_point_[1] - target[1];
+      const double dist = std::hypot(dx, dy);
+      const double step = config_.move_speed_m_s * m_->opt.timestep;
+      if (dist > step) {
+        target[0] += dx / dist * step;
+        target[1] += dy / dist * step;
+      } else {
+        target[0] = start_point_[0];
+        target[1] = start_point_[1];
+        if (std::hypot(tool[0] - start_point_[0], tool[1] - start_point_[1]) < 2e-4) {
+          phase_ = TrialPhase::kFollow;
+          follow_start_s_ = t;
+          next_iteration_s_ = t;
+          next_log_s_ = t;
+          sweep_.Reset(config_.target.sweep_centre[0], config_.target.sweep_centre[1], tool[0],
+                       tool[1]);
+          if (config_.target.arc_position_m) {
+            tracked_arc_m_ = config_.target.arc_position_m(tool[0], tool[1], -1.0);
+          }
+        }
+      }
+      target[2] = hold_z_;
+      servo_->SetTarget(target);
+      break;
+    }
+    case TrialPhase::kFollow: {
+      if (t >= next_log_s_) {
+        path_xy_.push_back({tool[0], tool[1]});
+        path_t_.push_back(t);
+        sweep_.Add(tool[0], tool[1]);
+        if (config_.target.arc_position_m) {
+          tracked_arc_m_ = config_.target.arc_position_m(tool[0], tool[1], tracked_arc_m_);
+        }
+        next_log_s_ += config_.log_period_s;
+      }
+      if (t + 1e-9 < next_iteration_s_) break;
+      next_iteration_s_ += config_.control_period_s;
+      ++result_.iterations;
+      const std::array<double, 4> p = Pressures();
+      last_step_ = ComputeContourStep(p, config_.law);
+      // Tool frame -> world with the tool site's rotation (orientation is held).
+      const mjtNum* R = d_->site_xmat + 9 * tool_site_;
+      last_step_world_ = {R[0] * last_step_.step_m[0] + R[1] * last_step_.step_m[1],
+                          R[3] * last_step_.step_m[0] + R[4] * last_step_.step_m[1]};
+      // Measured pose + step, height held.
+      servo_->SetTarget({tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], hold_z_});
+      Log(true);
+      // Progress toward success, in the classifier's terms (degrees of sweep).
+      const TrialTarget& tg = config_.target;
+      double progress_deg = 0;
+      TrialThresholds thresholds = config_.thresholds;
+      if (tg.open_contour) {
+        const bool reached = tg.arc_position_m && tracked_arc_m_ >= tg.end_arc_m;
+        progress_deg = reached ? thresholds.success_sweep_deg : 0;
+      } else {
+        thresholds.success_sweep_deg = std::fabs(tg.success_sweep_deg);
+        progress_deg = tg.success_sweep_deg < 0 ? -sweep_.swept_deg() : sweep_.swept_deg();
+      }
+      const SampleCheck check = ClassifySample(thresholds, p, FtNormalForce(), progress_deg,
+                                               t - follow_start_s_, config_.timeout_s);
+      if (check.outcome != Outcome::kRunning) Finish(OutcomeName(check.outcome), check.detail);
+      break;
+    }
+    case TrialPhase::kDone:
+      break;
+  }
+  servo_->Track(m_, d_);
+}
+
+bool ContourTrial::Step() {
+  if (phase_ == TrialPhase::kDone) return false;
+  mj_step(m_, d_);
+  // A numerically broken run is never a controller result.
+  if (d_->warning[mjWARN_BADQACC].number > 0) {
+    Finish("unstable", "MuJoCo warning: bad qacc (simulation diverged)");
+  } else {
+    for (int i = 0; i < m_->nq; ++i) {
+      if (!std::isfinite(d_->qpos[i])) {
+        Finish("unstable", "non-finite qpos");
+        break;
+      }
+    }
+  }
+  return phase_ != TrialPhase::kDone;
+}
+
+TrialResult ContourTrial::Run(double max_sim_s) {
+  const auto t0 = std::chrono::steady_clock::now();
+  while (d_->time < max_sim_s && Step()) {
+  }
+  if (phase_ != TrialPhase::kDone) Finish("timeout", "simulation time limit");
+  result_.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result_;
+}
+
+TrialResult RunTrial(const mjModel* m, const TrialConfig& config, bool keep_log,
+                     std::string* error) {
+  DataPtr data = MakeData(m, error);
+  if (!data) {
+    TrialResult r;
+    r.outcome = "unstable";
+    r.detail = "could not make mjData: " + *error;
+    return r;
+  }
+  auto trial = ContourTrial::Create(m, data.get(), config, keep_log, error);
+  if (!trial) {
+    TrialResult r;
+    r.outcome = "unstable";
+    r.detail = *error;
+    return r;
+  }
+  return trial->Run();
+}
+
+}  // namespace ssc

@@ -1,0 +1,163 @@
+// One contour-following trial, headless or in the viewer: the same control callback.
+//
+// Phases (as on the robot): APPROACH from above the object's centre until the tared F/T reads
+// the start-up compression, then hold that height; MOVE to the start point (start_offset from the
+// centre toward start_direction); FOLLOW the edge with the contour law, one control iteration per
+// control_period; then DONE with one outcome. Failure checks run only while following.
+#ifndef SSC_RUNTIME_TRIAL_H_
+#define SSC_RUNTIME_TRIAL_H_
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <mujoco/mujoco.h>
+
+#include "controller/pure/contour_law.h"
+#include "controller/pure/trial_metrics.h"
+#include "controller/pure/trial_outcome.h"
+#include "runtime/control_dispatch.h"
+#include "runtime/tool_servo.h"
+#include "plugin/chamber_pressure_sensor.h"
+
+namespace ssc {
+
+enum class TrialPhase { kApproach, kMoveToStart, kFollow, kDone };
+const char* PhaseName(TrialPhase phase);
+
+// What the trial follows: the landing and start points, how it succeeds, and the true contour
+// for the metrics. The default is the disk benchmark (35 mm disk at W = (0.65, 0), start 32 mm
+// east of its centre).
+struct TrialTarget {
+  Point2 approach{0.65, 0.0};      // the cup descends here (world x/y, m)
+  Point2 start{0.682, 0.0};        // cup centre when following starts
+  Point2 sweep_centre{0.65, 0.0};  // closed contours: swept angle measured about this point
+  double success_sweep_deg = 355;  // > 0 counter-clockwise, < 0 clockwise (holes)
+  bool open_contour = false;       // open: success when arc position passes end_arc_m
+  double end_arc_m = 0;
+  double disk_radius_m = 0.035;    // > 0: r_mean / dr / sigma_r about sweep_centre
+  double surface_top_z_m = 0.010;  // the approach never takes the lip plane deeper than
+                                   // max_compression_m below this
+  double max_compression_m = 0.002;
+  std::function<double(double, double)> contour_distance_m;  // unset: the disk circle
+  // Open contours: arc position (m) of (x, y) near the previous tracked position s_prev (so the
+  // tracked position cannot jump to another part of the contour that passes close by).
+  std::function<double(double x, double y, double s_prev)> arc_position_m;
+
+  // The disk benchmark with its start point `start_offset_m` east of the centre.
+  static TrialTarget Disk(double centre_x_m, double centre_y_m, double radius_m,
+                          double start_offset_m);
+};
+
+struct TrialConfig {
+  ContourLawParams law;            // P_ref, beta, step, thresholds of the law
+  TrialThresholds thresholds;      // success sweep, failure I/II, safety force
+  ServoParams servo;               // look-ahead smoothing of the arm
+  // One control iteration. 0.15 s with the 0.15 s servo smoothing below gives the published
+  // speeds (about 4 step lengths per second) AND keeps dL = 7.5 mm stable; see docs/trials.md.
+  double control_period_s = 0.15;
+  double approach_force_n = 1.5;   // tared F/T compression that ends the approach, (0, 50]
+  double approach_speed_m_s = 0.005;
+  double move_speed_m_s = 0.02;    // to the start point
+  TrialTarget target;              // where to land, start and finish (default: the disk)
+  double timeout_s = 120;          // follow phase limit, simulated seconds
+  std::uint64_t seed = 1;          // sensor noise seed for this trial
+  double log_period_s = 0.02;      // path sampling for metrics and the log
+
+  // Empty when valid, else names the field and its range.
+  std::string Validate() const;
+};
+
+// One logged row (every control iteration and every log_period while following).
+struct TrialLogRow {
+  double t_s = 0;
+  Vec3 tool_m{};
+  std::array<double, 4> p_pa{};
+  double pbar_pa = 0, dpx_pa = 0, dpy_pa = 0, cf = 0;
+  double step_x_m = 0, step_y_m = 0;  // world frame
+  double ft_normal_n = 0;
+  TrialPhase phase = TrialPhase::kApproach;
+  bool iteration = false;  // a control iteration happened at this row
+};
+
+struct TrialResult {
+  std::string outcome = "running";  // success, failure_I, failure_II, timeout, unstable
+  std::string detail;               // why (e.g. the warning or the failing value)
+  DiskTrialMetrics metrics;
+  double follow_time_s = 0;         // duration of the follow phase, s
+  double sim_time_s = 0;            // total simulated time, s
+  double wall_time_s = 0;
+  double hold_height_m = 0;         // tool site height held after the approach
+  double swept_deg = 0;
+  double end_arc_mm = 0;            // open contours: arc position reached (where it was lost)
+  int iterations = 0;
+  std::vector<TrialLogRow> log;     // filled when requested
+};
+
+// The controller behind mjcb_control for one mjData.
+class ContourTrial : public ControlCallback {
+ public:
+  // Binds to a model/data pair (finds the pressure sensor, the F/T sensor and the servo).
+  static std::unique_ptr<ContourTrial> Create(const mjModel* m, mjData* d,
+                                              const TrialConfig& config, bool keep_log,
+                                              std::string* error);
+  // Resets d to the scene's first keyframe (or qpos0), sets the noise seed, restarts phases.
+  void Reset();
+  void Control(const mjModel* m, mjData* d) override;
+
+  // Steps until the trial ends (or max_sim_s of simulated time). Returns the result.
+  TrialResult Run(double max_sim_s = 1e9);
+  // One physics step with instability checks; false when the trial has ended.
+  bool Step();
+
+  TrialPhase phase() const { return phase_; }
+  const TrialResult& result() const { return result_; }
+  const TrialConfig& config() const { return config_; }
+  TrialConfig& mutable_config() { return config_; }
+  const ContourStep& last_step() const { return last_step_; }
+  const std::vector<Point2>& path() const { return path_xy_; }
+  int tool_site() const { return tool_site_; }
+  // The four filtered chamber pressures now (the plugin's output), Pa.
+  std::array<double, 4> Pressures() const;
+
+ private:
+  ContourTrial(const mjModel* m, mjData* d, const TrialConfig& config, bool keep_log);
+  void Finish(const std::string& outcome, const std::string& detail);
+  double FtNormalForce() const;
+  void Log(bool iteration);
+
+  const mjModel* m_;
+  mjData* d_;
+  TrialConfig config_;
+  bool keep_log_;
+  std::unique_ptr<ToolServo> servo_;
+  int pressure_instance_ = -1, pressure_adr_ = -1, ft_adr_ = -1, tool_site_ = -1;
+  TrialPhase phase_ = TrialPhase::kApproach;
+  bool active_ = false;  // the servo is bound; the callback may act
+  bool transfer_done_ = false;  // over the landing point
+  double tracked_arc_m_ = 0;    // open contours: progress along the edge
+  double ft_tare_n_ = 0;
+  int tare_samples_ = 0;
+  double hold_z_ = 0;
+  double next_iteration_s_ = 0, next_log_s_ = 0, follow_start_s_ = 0;
+  double next_log_time_s_ = 0;  // next row of the trial log (all phases)
+  Vec3 start_point_{};
+  SweepTracker sweep_;
+  ContourStep last_step_{};
+  std::array<double, 2> last_step_world_{};
+  std::vector<Point2> path_xy_;
+  std::vector<double> path_t_;
+  TrialResult result_;
+  std::unique_ptr<ScopedControl> registration_;
+};
+
+// Loads nothing: runs one trial on an existing model with its own mjData.
+TrialResult RunTrial(const mjModel* m, const TrialConfig& config, bool keep_log,
+                     std::string* error);
+
+}  // namespace ssc
+
+#endif  // SSC_RUNTIME_TRIAL_H_

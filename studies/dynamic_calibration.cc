@@ -1,0 +1,66 @@
+#include "studies/dynamic_calibration.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "calibration/nelder_mead.h"
+#include "runtime/mujoco_model.h"
+#include "runtime/trial.h"
+
+namespace ssc {
+
+std::vector<WanderTarget> PublishedWanderTargets() {
+  return {{1.5, 1.36, 0.11}, {2.5, -1, 0.21}, {3.5, 1.89, 0.31}};
+}
+
+bool FitWander(const std::string& scene, const std::string& work_dir,
+               const std::vector<WanderTarget>& targets, double step_mm, int seeds,
+               int max_evaluations, double noise0, double lag0, WanderFit* fit,
+               std::string* error) {
+  bool failed = false;
+  std::vector<WanderTarget> last;
+  auto evaluate = [&](double noise, double lag, std::vector<WanderTarget>* model) {
+    char config[256];
+    std::snprintf(config, sizeof(config),
+                  "<config key=\"noise_pa\" value=\"%.6g\"/><config key=\"lag_ms\" value=\"%.6g\"/>",
+                  noise, lag);
+    const std::string path = SceneWithToolConfig(scene, work_dir, config, error);
+    ModelPtr m = path.empty() ? nullptr : LoadModel(path, error);
+    if (!m) {
+      failed = true;
+      return 1e300;
+    }
+    double cost = 0;
+    model->clear();
+    for (const WanderTarget& t : targets) {
+      double sigma = 0, sc = 0;
+      for (int k = 0; k < seeds; ++k) {
+        TrialConfig c;
+        c.law.beta = t.beta;
+        c.law.step_mm = step_mm;
+        c.seed = static_cast<std::uint64_t>(k + 1);
+        std::string e;
+        const TrialResult r = RunTrial(m.get(), c, false, &e);
+        sigma += r.metrics.sigma_r_mm / seeds;
+        sc += r.metrics.s_c / seeds;
+      }
+      model->push_back({t.beta, sigma, sc});
+      if (t.sigma_r_mm >= 0) cost += std::pow((sigma - t.sigma_r_mm) / 0.2, 2);
+      if (t.s_c >= -1) cost += std::pow((sc - t.s_c) / 0.05, 2);
+    }
+    return cost;
+  };
+  auto f = [&](const std::vector<double>& x) {
+    return evaluate(std::exp(x[0]), std::exp(x[1]) - 1, &last);
+  };
+  const NelderMeadResult r =
+      NelderMead(f, {std::log(noise0), std::log(lag0 + 1)}, {0.7, 0.7}, 1e-4, max_evaluations);
+  if (failed) return false;
+  fit->noise_pa = std::exp(r.x[0]);
+  fit->lag_ms = std::exp(r.x[1]) - 1;
+  fit->evaluations = r.evaluations;
+  fit->cost = evaluate(fit->noise_pa, fit->lag_ms, &fit->model);
+  return !failed;
+}
+
+}  // namespace ssc

@@ -1,0 +1,38 @@
+// Calibrating the sensor chain to the published wander of the cup: sigma_r and s_c against beta
+// (P_ref 100 Pa). Each evaluation runs disk trials with fixed seeds (a deterministic objective)
+// in a scene whose tool carries the candidate noise and lag; Nelder-Mead on log scales.
+#ifndef SSC_STUDIES_DYNAMIC_CALIBRATION_H_
+#define SSC_STUDIES_DYNAMIC_CALIBRATION_H_
+
+#include <string>
+#include <vector>
+
+namespace ssc {
+
+struct WanderTarget {
+  double beta;
+  double sigma_r_mm;  // < 0: not a target
+  double s_c;         // < -1: not a target
+};
+
+// The published means (reference table): beta 1.5: sigma_r 1.36 mm, s_c 0.11; beta 2.5: s_c
+// 0.21; beta 3.5: sigma_r 1.89 mm, s_c 0.31.
+std::vector<WanderTarget> PublishedWanderTargets();
+
+struct WanderFit {
+  double noise_pa = 0, lag_ms = 0;
+  double cost = 0;
+  int evaluations = 0;
+  std::vector<WanderTarget> model;  // the twin's sigma_r and s_c at each target beta
+};
+
+// Fits noise_pa and lag_ms from (noise0, lag0). `scene` is a disk scene using
+// ../models/ssc_tool.xml; work files go under work_dir. False + *error on I/O or load failure.
+bool FitWander(const std::string& scene, const std::string& work_dir,
+               const std::vector<WanderTarget>& targets, double step_mm, int seeds,
+               int max_evaluations, double noise0, double lag0, WanderFit* fit,
+               std::string* error);
+
+}  // namespace ssc
+
+#endif  // SSC_STUDIES_DYNAMIC_CALIBRATION_H_

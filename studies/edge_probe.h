@@ -1,0 +1,57 @@
+// Kinematic probe of the pressure sensor: the cup held by a mocap body (scenes/probe_edge.xml)
+// and placed at given offsets across a straight edge or around a disk edge. The lip segments
+// still settle dynamically on the surface at each placement; the cup body does not move.
+#ifndef SSC_STUDIES_EDGE_PROBE_H_
+#define SSC_STUDIES_EDGE_PROBE_H_
+
+#include <array>
+#include <memory>
+#include <string>
+
+#include "runtime/mujoco_model.h"
+#include "plugin/chamber_pressure_sensor.h"
+
+namespace ssc {
+
+struct ProbeReading {
+  double x_m = 0, y_m = 0, yaw_rad = 0;
+  std::array<double, 4> filtered_pa{};  // plugin output (noise + moving average)
+  std::array<double, 4> static_pa{};    // noiseless tap pressures of the newest sample
+  std::array<double, 4> sealed_area_mm2{};
+  std::array<double, 4> leak_area_mm2{};
+  int lip_contacts = 0;
+  // Reference formulas on the filtered pressures (docs/controller.md): differentials and the
+  // world-frame direction toward the object (g) and of travel with the object on the left.
+  double pbar_pa = 0, dpx_pa = 0, dpy_pa = 0;
+  double g_world_rad = 0, travel_world_rad = 0;
+  double static_pbar_pa = 0;
+};
+
+class EdgeProbe3d {
+ public:
+  // Loads the probe scene; null on error (message in *error).
+  static std::unique_ptr<EdgeProbe3d> Create(const std::string& scene_path, std::string* error);
+
+  // Places the tool centre (lip plane) at world (x, y), the lip plane `compression_m` below the
+  // surface top `surface_z_m`, the tool rotated by yaw about the world z axis relative to the
+  // project's convention, lets the lip settle for settle_s and reads the sensor.
+  ProbeReading Read(double x_m, double y_m, double yaw_rad, double surface_z_m,
+                    double compression_m, double settle_s);
+
+  const mjModel* model() const { return model_.get(); }
+  mjData* data() const { return data_.get(); }
+
+ private:
+  EdgeProbe3d() = default;
+  ModelPtr model_;
+  DataPtr data_;
+  ChamberPressureSensor* sensor_ = nullptr;
+  int instance_ = -1;
+  int mocap_id_ = -1;
+  int sensor_adr_ = -1;
+  double tool_length_m_ = 0.146;
+};
+
+}  // namespace ssc
+
+#endif  // SSC_STUDIES_EDGE_PROBE_H_

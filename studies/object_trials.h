@@ -1,0 +1,43 @@
+// Contour-following trials on the test objects (the published primitive-geometry controller by
+// default: P_ref 100 Pa, beta 2, dL 0.5 mm) and the table of their outcomes.
+#ifndef SSC_STUDIES_OBJECT_TRIALS_H_
+#define SSC_STUDIES_OBJECT_TRIALS_H_
+
+#include <string>
+#include <vector>
+
+#include "runtime/trial.h"
+#include "objects/object_spec.h"
+
+namespace ssc {
+
+// Trial settings for an object from its ObjectTrialSetup (landing and start points, success
+// rule) and exact edge (metrics, tracked arc position), with a follow timeout from the edge
+// length at the expected speed.
+TrialConfig ObjectTrialConfig(const ObjectSpec& spec, const ContourLawParams& law,
+                              std::uint64_t seed);
+
+struct ObjectTrialRow {
+  std::string object, kind;
+  double param = 0;
+  std::uint64_t seed = 0;
+  TrialResult result;
+  double lost_at_mm = -1;        // arc position (open) or swept angle in deg (closed) at the end
+  double lost_fillet_radius_mm = -1;  // fillet only: radius where tracking ended
+  double step_cost_us = 0;            // wall time per physics step of this trial
+};
+
+// Runs one object trial on `model` (a scene written by WriteObjectScenes).
+ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,
+                              const ContourLawParams& law, std::uint64_t seed, bool keep_log);
+
+std::string ObjectTableHeader();
+std::string ObjectTableRow(const ObjectTrialRow& row);
+
+// Along-edge profile of a logged fillet trial: x (mm from the sharp end), fillet radius (mm),
+// mean P (Pa) and |(dPx, dPy)| (Pa) at every control iteration.
+std::string FilletProfileCsv(const ObjectTrialRow& row);
+
+}  // namespace ssc
+
+#endif  // SSC_STUDIES_OBJECT_TRIALS_H_

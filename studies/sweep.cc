@@ -1,0 +1,191 @@
+#include "studies/sweep.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+
+#include "runtime/mujoco_model.h"
+#include "studies/job_runner.h"
+#include "studies/trial_io.h"
+
+namespace ssc {
+namespace {
+
+using Key = std::tuple<long, long, long, int>;  // pref, beta, step in 1e-6 units; repeat
+
+Key MakeKey(double pref, double beta, double step, int repeat) {
+  auto q = [](double v) { return std::lround(v * 1e6); };
+  return {q(pref), q(beta), q(step), repeat};
+}
+
+std::uint64_t Mix(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ULL;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
+  return x ^ (x >> 31);
+}
+
+// Reads the keys of rows already in the CSV (resume). Rows that do not parse are ignored.
+std::set<Key> FinishedRows(const std::string& path, bool* has_header) {
+  std::set<Key> done;
+  *has_header = false;
+  std::ifstream f(path);
+  std::string line;
+  while (std::getline(f, line)) {
+    if (line.rfind("scene,", 0) == 0) {
+      *has_header = true;
+      continue;
+    }
+    std::stringstream ss(line);
+    std::string cell;
+    std::vector<std::string> cells;
+    while (std::getline(ss, cell, ',') && cells.size() < 7) cells.push_back(cell);
+    if (cells.size() < 7 || cells[6].empty()) continue;
+    try {
+      done.insert(MakeKey(std::stod(cells[1]), std::stod(cells[2]), std::stod(cells[3]),
+                          std::stoi(cells[4])));
+    } catch (...) {
+      continue;  // a torn last line from an interrupted run: that trial runs again
+    }
+  }
+  return done;
+}
+
+// MuJoCo calls mju_user_error on fatal errors (the default exits the process); a sweep turns
+// them into an exception caught per trial so the sweep goes on.
+thread_local bool t_in_trial = false;
+void ThrowingError(const char* msg) {
+  if (t_in_trial) throw std::runtime_error(msg);
+  std::fprintf(stderr, "MuJoCo error: %s\n", msg);
+  std::abort();
+}
+
+}  // namespace
+
+std::uint64_t TrialSeed(std::uint64_t base, double pref, double beta, double step, int repeat) {
+  const Key k = MakeKey(pref, beta, step, repeat);
+  std::uint64_t h = Mix(base);
+  h = Mix(h ^ static_cast<std::uint64_t>(std::get<0>(k)));
+  h = Mix(h ^ static_cast<std::uint64_t>(std::get<1>(k)));
+  h = Mix(h ^ static_cast<std::uint64_t>(std::get<2>(k)));
+  h = Mix(h ^ static_cast<std::uint64_t>(std::get<3>(k)));
+  return h & ((std::uint64_t{1} << 53) - 1);
+}
+
+// Estimated simulated time of a trial, for the longest-first handout: a lap of the disk at
+// about four step lengths per second (docs/trials.md) plus the approach and move.
+double EstimatedTrialCost(const TrialConfig& c) {
+  const double lap_mm = 2 * 3.14159265358979 * c.target.disk_radius_m * 1e3;
+  return 5.0 + lap_mm / (4.0 * std::max(c.law.step_mm, 0.1));
+}
+
+bool RunSweep(const mjModel* m, const SweepSpec& spec,
+              const std::function<void(const SweepProgress&)>& progress, SweepSummary* summary,
+              std::string* error) {
+  if (spec.pref_pa.empty() || spec.beta.empty() || spec.step_mm.empty() || spec.repeats < 1) {
+    *error = "sweep grid is empty (need at least one P_ref, beta, step and repeat)";
+    return false;
+  }
+  struct Job {
+    TrialConfig config;
+    int repeat;
+  };
+  // The whole grid, the same on every rank; only rank 0 reads the CSV to skip finished rows.
+  std::vector<Job> jobs;
+  for (double pref : spec.pref_pa) {
+    for (double beta : spec.beta) {
+      for (double step : spec.step_mm) {
+        for (int rep = 0; rep < spec.repeats; ++rep) {
+          Job job{spec.base, rep};
+          job.config.law.p_ref_pa = pref;
+          job.config.law.beta = beta;
+          job.config.law.step_mm = step;
+          job.config.seed = TrialSeed(spec.seed, pref, beta, step, rep);
+          if (const std::string e = job.config.Validate(); !e.empty()) {
+            *error = "sweep point P_ref=" + std::to_string(pref) + " beta=" +
+                     std::to_string(beta) + " step=" + std::to_string(step) + ": " + e;
+            return false;
+          }
+          jobs.push_back(job);
+        }
+      }
+    }
+  }
+  const bool writer = JobRunnerRank() == 0;
+  std::set<Key> done;
+  std::ofstream out;
+  if (writer) {
+    bool has_header = false;
+    done = FinishedRows(spec.out_csv, &has_header);
+    out.open(spec.out_csv, std::ios::app);
+    if (!out) {
+      *error = spec.out_csv + ": cannot open for appending";
+      return false;
+    }
+    if (!has_header) out << SweepCsvHeader() << '\n' << std::flush;
+  }
+
+  JobSet set;
+  set.count = jobs.size();
+  set.cost = [&](std::size_t i) { return EstimatedTrialCost(jobs[i].config); };
+  set.skip = [&](std::size_t i) {
+    const ContourLawParams& k = jobs[i].config.law;
+    return done.count(MakeKey(k.p_ref_pa, k.beta, k.step_mm, jobs[i].repeat)) > 0;
+  };
+  set.run = [&](std::size_t i) {
+    TrialResult result;
+    std::string trial_error;
+    t_in_trial = true;
+    try {
+      result = RunTrial(m, jobs[i].config, false, &trial_error);
+    } catch (const std::exception& e) {
+      result = TrialResult();
+      result.outcome = "unstable";
+      result.detail = std::string("MuJoCo error: ") + e.what();
+    }
+    t_in_trial = false;
+    return SweepCsvRow(spec.scene_name, jobs[i].config, jobs[i].repeat, result);
+  };
+  auto* previous_error = mju_user_error;
+  mju_user_error = ThrowingError;
+  int skipped = 0, finished = 0;
+  if (writer) {
+    for (std::size_t i = 0; i < jobs.size(); ++i) skipped += set.skip(i) ? 1 : 0;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  JobRunnerOptions options;
+  options.threads = spec.threads;
+  const JobRunStats stats = RunJobs(set, options, [&](std::size_t, const std::string& row) {
+    out << row << '\n' << std::flush;
+    ++finished;
+    if (progress) {
+      SweepProgress p;
+      p.total = static_cast<int>(jobs.size());
+      p.skipped = skipped;
+      p.done = finished + skipped;
+      p.elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      progress(p);
+    }
+  });
+  mju_user_error = previous_error;
+
+  summary->total = static_cast<int>(stats.total);
+  summary->skipped = static_cast<int>(stats.skipped);
+  summary->ran = static_cast<int>(stats.ran);
+  summary->wall_s = stats.wall_s;
+  summary->ranks = stats.ranks;
+  summary->threads = stats.threads;
+  summary->rank_busy_s = stats.rank_busy_s;
+  summary->balance_max_over_mean = stats.BalanceMaxOverMean();
+  summary->longest_trial_s = stats.longest_job_s;
+  summary->interrupted = stats.interrupted;
+  return true;
+}
+
+}  // namespace ssc
