@@ -8,6 +8,7 @@
 #include <cstring>
 #include <string>
 
+#include "apps/ssc/cli.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/trial.h"
 #include "plugin/chamber_pressure_sensor.h"
@@ -26,20 +27,14 @@ double MeanStepMicros(const mjModel* m, mjData* d, int steps) {
 
 int main(int argc, char** argv) {
   std::string scene = "disk_benchmark";
-  int steps = 20000;
-  for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--scene") && i + 1 < argc) {
-      scene = argv[++i];
-    } else if (!std::strcmp(argv[i], "--steps") && i + 1 < argc) {
-      steps = std::atoi(argv[++i]);
-    } else {
-      std::printf("usage: ssc bench [--scene NAME|PATH] [--steps N]\n"
-                  "  prints mean mj_step cost with/without the pressure sensor, their ratio and\n"
-                  "  the cost of one sensor sample (defaults: disk_benchmark, 20000 steps)\n");
-      return std::strcmp(argv[i], "--help") ? 2 : 0;
-    }
-  }
-  if (steps < 100) steps = 100;
+  long steps_arg = 20000;
+  ssc::cli::Command cmd("bench",
+                        "Prints the mean mj_step cost with and without the pressure sensor, their\n"
+                        "ratio and the cost of one sensor sample.");
+  cmd.Text("scene", &scene, "scene (name under scenes/ or a path)");
+  cmd.Integer("steps", &steps_arg, "timed steps per model", ssc::NumberRange::Closed(100, 1e8));
+  if (int rc = 0; !cmd.Parse(argc - 1, argv + 1, &rc)) return rc;
+  const int steps = static_cast<int>(steps_arg);
   const std::string path = ssc::ResolveScenePath(scene);
   std::string error;
   ssc::ModelPtr model = ssc::LoadModel(path, &error);

@@ -14,31 +14,29 @@
 namespace ssc {
 
 int RunCalibrateCommand(int argc, char** argv) {
-  cli::Parser p(
+  cli::Command cmd(
       "calibrate",
       "Fits the pneumatic model (pump free flow, port area, jet area, lip roughness; log scale,\n"
       "Nelder-Mead) to the published disk results: the offsets inside an edge where the mean\n"
       "vacuum is 40, 100, 200 Pa (0.7, 2.5, 3.2 mm), the differential at 100 Pa (~200 Pa), the\n"
       "cup in air (< 5 Pa) and on a plate (> 10 kPa). Prints residuals, fitted values and\n"
       "sensitivities; writes OUT/params.json and OUT/ssc_tool_calibrated.xml (the tool model with\n"
-      "the fitted config; point a scene's <model file=...> at it).",
-      {{"start-scale", "1", "multiply the four starting values by this (tests the fit)"},
-       {"wander", "", "also fit sensor noise and lag to the published sigma_r and s_c vs beta "
-                      "(disk trials; about a minute)", true},
-       {"wander-step", "5", "step dL of the wander trials, mm (not published)"},
-       {"wander-seeds", "2", "trials per beta per evaluation"},
-       {"wander-evals", "30", "Nelder-Mead evaluations for the wander fit"},
-       {"out", "out/calibrate", "output directory"}});
-  if (!p.Parse(argc, argv)) {
-    if (p.help_requested()) return 0;
-    std::fprintf(stderr, "%s\n", p.error().c_str());
-    return 2;
-  }
-  double scale = 1;
-  if (!p.GetDouble("start-scale", &scale) || scale <= 0) {
-    std::fprintf(stderr, "ssc calibrate: --start-scale must be a positive number\n");
-    return 2;
-  }
+      "the fitted config; point a scene's <model file=...> at it).");
+  double scale = 1, wander_step = 5;
+  long seeds = 2, evals = 30;
+  bool wander = false;
+  std::string out_dir = "out/calibrate";
+  cmd.Number("start-scale", &scale, "multiply the four starting values by this (tests the fit)",
+             "", NumberRange::Closed(1e-3, 1e3));
+  cmd.Flag("wander", &wander, "also fit sensor noise and lag to the published sigma_r and s_c vs "
+                              "beta (disk trials; about a minute)");
+  cmd.Number("wander-step", &wander_step, "step dL of the wander trials (not published)", "mm",
+             NumberRange::Positive(100));
+  cmd.Integer("wander-seeds", &seeds, "trials per beta per evaluation", NumberRange::Closed(1, 100));
+  cmd.Integer("wander-evals", &evals, "Nelder-Mead evaluations for the wander fit",
+              NumberRange::Closed(3, 10000));
+  cmd.OutputDir("out", &out_dir, "output directory");
+  if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
   PneumaticModel start;
   start.pneumatics.pump_free_flow_m3_s *= scale;
   start.pneumatics.port_area_m2 *= scale;
@@ -56,8 +54,7 @@ int RunCalibrateCommand(int argc, char** argv) {
   }
   std::printf("cost %.4g after %d evaluations\n", fit.cost, fit.evaluations);
 
-  const std::filesystem::path out = p.Get("out");
-  std::filesystem::create_directories(out);
+  const std::filesystem::path out = out_dir;
   std::ofstream js(out / "params.json");
   js << "{\"cost\": " << fit.cost << ", \"parameters\": {";
   for (size_t i = 0; i < fit.parameters.size(); ++i) {
@@ -86,14 +83,8 @@ int RunCalibrateCommand(int argc, char** argv) {
   std::ofstream(out / "ssc_tool_calibrated.xml") << xml;
   std::printf("wrote %s and %s\n", (out / "params.json").c_str(),
               (out / "ssc_tool_calibrated.xml").c_str());
-  if (p.Flag("wander")) {
-    double step = 5;
-    long seeds = 2, evals = 30;
-    if (!p.GetDouble("wander-step", &step) || !p.GetInt("wander-seeds", &seeds) ||
-        !p.GetInt("wander-evals", &evals) || step <= 0 || seeds < 1 || evals < 3) {
-      std::fprintf(stderr, "ssc calibrate: bad --wander-step/--wander-seeds/--wander-evals\n");
-      return 2;
-    }
+  if (wander) {
+    const double step = wander_step;
     WanderFit w;
     const std::vector<WanderTarget> targets = PublishedWanderTargets();
     if (!FitWander(SourceDir() + "/scenes/disk_benchmark_gantry.xml", (out / "wander").string(),

@@ -35,35 +35,27 @@ std::string Key(const char* k, const std::string& v) {
 }  // namespace
 
 int RunChartsCommand(int argc, char** argv) {
-  const std::string cores = std::to_string(std::max(1u, std::thread::hardware_concurrency()));
-  cli::Parser p("charts",
-                "Makes the speed-accuracy charts from the project's own runs: OUT/cup.csv (a\n"
-                "sweep over dL), OUT/simulator.csv (replays at several fidelities), and\n"
-                "OUT/speed_accuracy.png. Re-running resumes the sweep.",
-                {{"pref", "70,100,200", "P_ref values, Pa"},
-                 {"beta", "1,2,3", "beta values"},
-                 {"step", "1,2.5,5,7.5,10,12.5", "step lengths, mm"},
-                 {"repeats", "3", "trials per point"},
-                 {"threads", cores, "threads for the sweep"},
-                 {"out", "out/charts", "output directory"}});
-  if (!p.Parse(argc, argv)) {
-    if (p.help_requested()) return 0;
-    std::fprintf(stderr, "%s\n", p.error().c_str());
-    return 2;
-  }
+  cli::Command cmd("charts",
+                   "Makes the speed-accuracy charts from the project's own runs: OUT/cup.csv (a\n"
+                   "sweep over dL), OUT/simulator.csv (replays at several fidelities), and\n"
+                   "OUT/speed_accuracy.png. Re-running resumes the sweep.");
   SweepSpec spec;
-  long repeats = 0, threads = 0;
-  if (!p.GetDoubleList("pref", &spec.pref_pa) || !p.GetDoubleList("beta", &spec.beta) ||
-      !p.GetDoubleList("step", &spec.step_mm) || !p.GetInt("repeats", &repeats) ||
-      !p.GetInt("threads", &threads) || repeats < 1 || threads < 1) {
-    std::fprintf(stderr, "ssc charts: %s\n", p.error().empty() ? "bad repeats/threads" : p.error().c_str());
-    return 2;
-  }
+  spec.pref_pa = {70, 100, 200};
+  spec.beta = {1, 2, 3};
+  spec.step_mm = {1, 2.5, 5, 7.5, 10, 12.5};
+  long repeats = 3, threads = std::max(1u, std::thread::hardware_concurrency());
+  std::string out_dir = "out/charts";
+  cmd.NumberList("pref", &spec.pref_pa, "P_ref values", "Pa", NumberRange::Positive(1e6).OpenHigh());
+  cmd.NumberList("beta", &spec.beta, "beta values", "", NumberRange::Closed(0, 100));
+  cmd.NumberList("step", &spec.step_mm, "step lengths", "mm", NumberRange::Positive(100));
+  cmd.Integer("repeats", &repeats, "trials per point", NumberRange::Closed(1, 1000));
+  cmd.Integer("threads", &threads, "threads for the sweep", NumberRange::Closed(1, 256));
+  cmd.OutputDir("out", &out_dir, "output directory");
+  if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
   spec.repeats = static_cast<int>(repeats);
   spec.threads = static_cast<int>(threads);
   spec.scene_name = "disk_benchmark_gantry";
-  const fs::path out = p.Get("out");
-  fs::create_directories(out);
+  const fs::path out = out_dir;
   spec.out_csv = (out / "cup.csv").string();
   std::string error;
   ModelPtr gantry = LoadModel(SourceDir() + "/scenes/disk_benchmark_gantry.xml", &error);

@@ -1,128 +1,280 @@
 #include "apps/ssc/cli.h"
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <sstream>
+#include <filesystem>
+#include <limits>
+#include <system_error>
+
+#include <CLI/CLI.hpp>
+#include <mujoco/mujoco.h>
+
+#ifndef SSC_VERSION
+#define SSC_VERSION "unknown"
+#endif
 
 namespace ssc::cli {
+namespace fs = std::filesystem;
 
-Parser::Parser(std::string command, std::string summary, std::vector<Option> options)
-    : command_(std::move(command)), summary_(std::move(summary)), options_(std::move(options)) {
-  options_.push_back({"help", "", "print this help", true});
-  for (const Option& o : options_) {
-    if (!o.is_flag) values_[o.name] = o.def;
-  }
+std::string VersionText() {
+  return std::string("ssc ") + SSC_VERSION + " (MuJoCo " + mj_versionString() + ")";
 }
 
-std::string Parser::Help() const {
-  std::ostringstream os;
-  os << "usage: ssc " << command_ << " [options]\n\n" << summary_ << "\n\noptions:\n";
-  for (const Option& o : options_) {
-    std::string left = "  --" + o.name + (o.is_flag ? "" : " VALUE");
-    os << left;
-    for (size_t i = left.size(); i < 28; ++i) os << ' ';
-    os << o.help;
-    if (!o.is_flag && !o.def.empty()) os << " (default: " << o.def << ")";
-    os << "\n";
+bool PrepareOutputDir(const std::string& dir, std::string* error) {
+  if (dir.empty()) {
+    *error = "empty output directory";
+    return false;
   }
-  return os.str();
+  std::error_code ec;
+  const fs::path p(dir);
+  if (fs::exists(p, ec) && !fs::is_directory(p, ec)) {
+    *error = "'" + dir + "' exists and is not a directory";
+    return false;
+  }
+  fs::create_directories(p, ec);
+  if (ec || !fs::is_directory(p)) {
+    *error = "cannot create directory '" + dir + "': " +
+             (ec ? ec.message() : std::string("not a directory"));
+    return false;
+  }
+  if (access(dir.c_str(), W_OK | X_OK) != 0) {
+    *error = "directory '" + dir + "' is not writable";
+    return false;
+  }
+  return true;
 }
 
-bool Parser::Parse(int argc, char** argv) {
-  for (int i = 0; i < argc; ++i) {
-    std::string arg = argv[i];
-    if (arg.rfind("--", 0) != 0) {
-      positional_.push_back(arg);
-      continue;
-    }
-    std::string name = arg.substr(2);
-    std::string value;
-    bool has_value = false;
-    if (auto eq = name.find('='); eq != std::string::npos) {
-      value = name.substr(eq + 1);
-      name = name.substr(0, eq);
-      has_value = true;
-    }
-    const Option* opt = nullptr;
-    for (const Option& o : options_) {
-      if (o.name == name) opt = &o;
-    }
-    if (opt == nullptr) {
-      error_ = "ssc " + command_ + ": unknown option --" + name + " (see ssc " + command_ +
-               " --help)";
+bool PrepareOutputFile(const std::string& file, std::string* error) {
+  std::error_code ec;
+  const fs::path p(file);
+  if (p.filename().empty() || (fs::exists(p, ec) && fs::is_directory(p, ec))) {
+    *error = "'" + file + "' is a directory, not a file name";
+    return false;
+  }
+  const fs::path parent = p.parent_path();
+  return parent.empty() || PrepareOutputDir(parent.string(), error);
+}
+
+Command::Command(std::string name, std::string summary)
+    : name_(std::move(name)), app_(std::make_unique<CLI::App>(summary, "ssc " + name_)) {
+  app_->set_version_flag("--version", VersionText());
+  app_->option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::Throw);
+  app_->get_formatter()->column_width(34);
+}
+
+Command::~Command() = default;
+
+CLI::Option* Command::AddValue(const std::string& name, const std::string& help,
+                               const std::string& type, const std::string& default_text) {
+  texts_.emplace_back();
+  CLI::Option* o = app_->add_option("--" + name, texts_.back(), help);
+  o->type_name(type);
+  if (!default_text.empty()) o->default_str(default_text);
+  return o;
+}
+
+void Command::Number(const std::string& name, double* target, const std::string& help,
+                     const std::string& unit, const NumberRange& range, bool show_default) {
+  AddValue(name, help + (unit.empty() ? "" : ", " + unit) + "; " + range.ToString(),
+           unit.empty() ? "NUMBER" : unit, show_default ? FormatNumber(*target) : "");
+  std::string* text = &texts_.back();
+  converters_.push_back([this, name, text, target, range](std::string* error) {
+    if (!Given(name)) return true;
+    std::string e;
+    if (!ParseNumber(*text, range, target, &e)) {
+      *error = "--" + name + ": " + e;
       return false;
     }
-    if (opt->is_flag) {
-      if (name == "help") {
-        help_ = true;
-        std::fputs(Help().c_str(), stdout);
-        return false;
-      }
-      values_[name] = "1";
-      continue;
-    }
-    if (!has_value) {
-      if (i + 1 >= argc) {
-        error_ = "ssc " + command_ + ": option --" + name + " needs a value";
-        return false;
-      }
-      value = argv[++i];
-    }
-    values_[name] = value;
-  }
-  return true;
+    return true;
+  });
 }
 
-std::string Parser::Get(const std::string& name) const {
-  auto it = values_.find(name);
-  return it == values_.end() ? "" : it->second;
-}
-
-bool Parser::Flag(const std::string& name) const { return Get(name) == "1"; }
-
-bool Parser::GetDouble(const std::string& name, double* out) {
-  const std::string v = Get(name);
-  char* end = nullptr;
-  const double x = std::strtod(v.c_str(), &end);
-  if (v.empty() || *end != '\0' || !std::isfinite(x)) {
-    error_ = "ssc " + command_ + ": --" + name + " expects a finite number, got '" + v + "'";
-    return false;
-  }
-  *out = x;
-  return true;
-}
-
-bool Parser::GetInt(const std::string& name, long* out) {
-  const std::string v = Get(name);
-  char* end = nullptr;
-  const long x = std::strtol(v.c_str(), &end, 10);
-  if (v.empty() || *end != '\0') {
-    error_ = "ssc " + command_ + ": --" + name + " expects a whole number, got '" + v + "'";
-    return false;
-  }
-  *out = x;
-  return true;
-}
-
-bool Parser::GetDoubleList(const std::string& name, std::vector<double>* out) {
-  out->clear();
-  std::stringstream ss(Get(name));
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    char* end = nullptr;
-    const double x = std::strtod(item.c_str(), &end);
-    if (item.empty() || *end != '\0' || !std::isfinite(x)) {
-      error_ = "ssc " + command_ + ": --" + name +
-               " expects comma-separated finite numbers, got '" + Get(name) + "'";
+void Command::Integer(const std::string& name, long* target, const std::string& help,
+                      const NumberRange& range) {
+  NumberRange whole = range;
+  whole.whole = true;
+  AddValue(name, help + "; " + whole.ToString(), "INT", std::to_string(*target));
+  std::string* text = &texts_.back();
+  converters_.push_back([this, name, text, target, whole](std::string* error) {
+    if (!Given(name)) return true;
+    double v = 0;
+    std::string e;
+    if (!ParseNumber(*text, whole, &v, &e)) {
+      *error = "--" + name + ": " + e;
       return false;
     }
-    out->push_back(x);
-  }
-  if (out->empty()) {
-    error_ = "ssc " + command_ + ": --" + name + " is empty";
+    *target = static_cast<long>(v);
+    return true;
+  });
+}
+
+void Command::Seed(const std::string& name, std::uint64_t* target, const std::string& help) {
+  // Seeds travel through doubles (plugin state, CSV): integers are exact up to 2^53.
+  const NumberRange range = NumberRange::Whole(0, 9007199254740992.0);
+  AddValue(name, help + "; " + range.ToString(), "INT", std::to_string(*target));
+  std::string* text = &texts_.back();
+  converters_.push_back([this, name, text, target, range](std::string* error) {
+    if (!Given(name)) return true;
+    double v = 0;
+    std::string e;
+    if (!ParseNumber(*text, range, &v, &e)) {
+      *error = "--" + name + ": " + e;
+      return false;
+    }
+    *target = static_cast<std::uint64_t>(v);
+    return true;
+  });
+}
+
+void Command::NumberList(const std::string& name, std::vector<double>* target,
+                         const std::string& help, const std::string& unit,
+                         const NumberRange& range, bool allow_repeats) {
+  std::string def;
+  for (double v : *target) def += (def.empty() ? "" : ",") + FormatNumber(v);
+  AddValue(name,
+           help + " (comma-separated" + (unit.empty() ? "" : ", " + unit) + "); each " +
+               range.ToString(),
+           "LIST", def);
+  std::string* text = &texts_.back();
+  converters_.push_back(
+      [this, name, text, target, range, allow_repeats](std::string* error) {
+        if (!Given(name)) return true;
+        std::string e;
+        if (!ParseNumberList(*text, range, !allow_repeats, target, &e)) {
+          *error = "--" + name + ": " + e;
+          return false;
+        }
+        return true;
+      });
+}
+
+void Command::Text(const std::string& name, std::string* target, const std::string& help) {
+  AddValue(name, help, "TEXT", *target);
+  std::string* text = &texts_.back();
+  converters_.push_back([this, name, text, target](std::string* error) {
+    if (!Given(name)) return true;
+    if (text->empty()) {
+      *error = "--" + name + ": empty value";
+      return false;
+    }
+    *target = *text;
+    return true;
+  });
+}
+
+void Command::Choice(const std::string& name, std::string* target, const std::string& help,
+                     const std::vector<std::string>& choices) {
+  std::string list;
+  for (const std::string& c : choices) list += (list.empty() ? "" : "|") + c;
+  AddValue(name, help, list, *target);
+  std::string* text = &texts_.back();
+  converters_.push_back([this, name, text, target, choices, list](std::string* error) {
+    if (!Given(name)) return true;
+    for (const std::string& c : choices) {
+      if (*text == c) {
+        *target = c;
+        return true;
+      }
+    }
+    *error = "--" + name + ": '" + *text + "' is not one of " + list;
+    return false;
+  });
+}
+
+void Command::Flag(const std::string& name, bool* target, const std::string& help) {
+  app_->add_flag("--" + name, *target, help)->multi_option_policy(CLI::MultiOptionPolicy::Throw);
+}
+
+void Command::OutputDir(const std::string& name, std::string* target, const std::string& help) {
+  AddValue(name, help, "DIR", *target);
+  std::string* text = &texts_.back();
+  outputs_.push_back([this, name, text, target](std::string* error) {
+    if (Given(name)) *target = *text;
+    if (target->empty() && !Given(name)) return true;  // optional output not asked for
+    std::string e;
+    if (!PrepareOutputDir(*target, &e)) {
+      *error = "--" + name + ": " + e;
+      return false;
+    }
+    return true;
+  });
+}
+
+void Command::OutputFile(const std::string& name, std::string* target, const std::string& help) {
+  AddValue(name, help, "FILE", *target);
+  std::string* text = &texts_.back();
+  outputs_.push_back([this, name, text, target](std::string* error) {
+    if (Given(name)) *target = *text;
+    if (target->empty() && !Given(name)) return true;
+    std::string e;
+    if (!PrepareOutputFile(*target, &e)) {
+      *error = "--" + name + ": " + e;
+      return false;
+    }
+    return true;
+  });
+}
+
+void Command::Check(std::function<std::string()> check) { checks_.push_back(std::move(check)); }
+
+void Command::Positional(const std::string& name, std::string* target, const std::string& help,
+                         bool required) {
+  CLI::Option* o = app_->add_option(name, *target, help);
+  if (required) o->required();
+}
+
+bool Command::Given(const std::string& name) const {
+  const CLI::Option* o = app_->get_option_no_throw("--" + name);
+  return o != nullptr && o->count() > 0;
+}
+
+std::string Command::Help() const { return app_->help(); }
+
+int Command::Fail(const std::string& message) const {
+  std::fprintf(stderr, "ssc %s: %s\n", name_.c_str(), message.c_str());
+  return 2;
+}
+
+bool Command::Parse(int argc, char** argv, int* exit_code) {
+  std::vector<std::string> args;
+  for (int i = argc - 1; i >= 0; --i) args.emplace_back(argv[i]);  // CLI11 wants them reversed
+  try {
+    app_->parse(args);
+  } catch (const CLI::CallForHelp&) {
+    std::fputs(app_->help().c_str(), stdout);
+    *exit_code = 0;
+    return false;
+  } catch (const CLI::CallForVersion&) {
+    std::printf("%s\n", VersionText().c_str());
+    *exit_code = 0;
+    return false;
+  } catch (const CLI::ParseError& e) {
+    *exit_code = Fail(std::string(e.what()) + " (see ssc " + name_ + " --help)");
     return false;
   }
+  for (const auto& convert : converters_) {
+    std::string error;
+    if (!convert(&error)) {
+      *exit_code = Fail(error);
+      return false;
+    }
+  }
+  for (const auto& check : checks_) {
+    if (const std::string error = check(); !error.empty()) {
+      *exit_code = Fail(error);
+      return false;
+    }
+  }
+  for (const auto& prepare : outputs_) {
+    std::string error;
+    if (!prepare(&error)) {
+      *exit_code = Fail(error);
+      return false;
+    }
+  }
+  *exit_code = 0;
   return true;
 }
 

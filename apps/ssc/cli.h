@@ -1,47 +1,89 @@
-// A small command-line option parser for ssc subcommands: --name value pairs, each option
-// documented with its unit and default, --help prints them.
+// The ssc command line: each subcommand declares typed options (unit, range and default shown in
+// --help) on top of CLI11; every number goes through the strict reader (common/strict_number.h).
+// Unknown options, stray positional arguments and repeated options are errors; so is an output
+// directory that cannot be created, checked before any work starts. Errors print one line
+// "ssc COMMAND: --option: what is wrong; the valid range" and exit with 2.
 #ifndef SSC_APPS_SSC_CLI_H_
 #define SSC_APPS_SSC_CLI_H_
 
-#include <map>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "common/strict_number.h"
+
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
+
 namespace ssc::cli {
 
-struct Option {
-  std::string name;      // without the leading dashes
-  std::string def;       // default value as text ("" = none)
-  std::string help;      // one line, with the unit
-  bool is_flag = false;  // takes no value
-};
+// "ssc 0.1.0 (MuJoCo 3.x.y)".
+std::string VersionText();
 
-class Parser {
+// Checks that `dir` is, or can be made, a writable directory, and creates it. False + *error
+// naming the path when it is a file, lies under a file, or cannot be created or written.
+bool PrepareOutputDir(const std::string& dir, std::string* error);
+// The same for the directory a file will be written into.
+bool PrepareOutputFile(const std::string& file, std::string* error);
+
+class Command {
  public:
-  Parser(std::string command, std::string summary, std::vector<Option> options);
+  Command(std::string name, std::string summary);
+  ~Command();
+  Command(const Command&) = delete;
+  Command& operator=(const Command&) = delete;
 
-  // Parses argv (after the subcommand). Returns false on error (message in error()), or when
-  // --help was given (help_requested() is then true and Help() was printed).
-  bool Parse(int argc, char** argv);
-  bool help_requested() const { return help_; }
-  const std::string& error() const { return error_; }
+  // Each option's target holds its default on entry and the parsed value after Parse(). `name`
+  // is the long name without dashes; `unit` is shown in the help ("" for dimensionless).
+  // show_default=false for options whose absence means "not asked for" (see Given()).
+  void Number(const std::string& name, double* target, const std::string& help,
+              const std::string& unit, const NumberRange& range, bool show_default = true);
+  void Integer(const std::string& name, long* target, const std::string& help,
+               const NumberRange& range);
+  void Seed(const std::string& name, std::uint64_t* target, const std::string& help);
+  // Comma-separated numbers; repeats are errors unless allow_repeats.
+  void NumberList(const std::string& name, std::vector<double>* target, const std::string& help,
+                  const std::string& unit, const NumberRange& range, bool allow_repeats = false);
+  void Text(const std::string& name, std::string* target, const std::string& help);
+  void Choice(const std::string& name, std::string* target, const std::string& help,
+              const std::vector<std::string>& choices);
+  void Flag(const std::string& name, bool* target, const std::string& help);
+  // Output locations: checked (and the directory created) by Parse(), before any work. An
+  // empty value means "none" for optional outputs.
+  void OutputDir(const std::string& name, std::string* target, const std::string& help);
+  void OutputFile(const std::string& name, std::string* target, const std::string& help);
+  // A check run after every value is read and before outputs are prepared: returns "" when
+  // fine, else the message (e.g. a config's Validate()).
+  void Check(std::function<std::string()> check);
+  // A positional argument (at most one per command).
+  void Positional(const std::string& name, std::string* target, const std::string& help,
+                  bool required);
+
+  // Parses argv (the arguments after the subcommand). Returns true to go on; otherwise the
+  // command returns *exit_code: 0 after --help/--version, 2 on an error (already printed).
+  bool Parse(int argc, char** argv, int* exit_code);
+  // Whether the user gave the option (for options whose absence means "not asked for").
+  bool Given(const std::string& name) const;
+  // Prints "ssc NAME: message" to stderr and returns 2 (usage error) for `return cmd.Fail(...)`.
+  int Fail(const std::string& message) const;
   std::string Help() const;
-
-  std::string Get(const std::string& name) const;
-  bool Flag(const std::string& name) const;
-  // Numeric getters: on a malformed value they set error() and return false.
-  bool GetDouble(const std::string& name, double* out);
-  bool GetInt(const std::string& name, long* out);
-  bool GetDoubleList(const std::string& name, std::vector<double>* out);
-  const std::vector<std::string>& positional() const { return positional_; }
+  const std::string& name() const { return name_; }
 
  private:
-  std::string command_, summary_;
-  std::vector<Option> options_;
-  std::map<std::string, std::string> values_;
-  std::vector<std::string> positional_;
-  bool help_ = false;
-  std::string error_;
+  CLI::Option* AddValue(const std::string& name, const std::string& help,
+                        const std::string& type, const std::string& default_text);
+
+  std::string name_;
+  std::unique_ptr<CLI::App> app_;
+  std::deque<std::string> texts_;  // raw text of value options (stable addresses)
+  std::vector<std::function<bool(std::string*)>> converters_;  // run in order after parsing
+  std::vector<std::function<std::string()>> checks_;           // then these
+  std::vector<std::function<bool(std::string*)>> outputs_;      // then the output locations
 };
 
 }  // namespace ssc::cli

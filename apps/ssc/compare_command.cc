@@ -11,56 +11,52 @@
 namespace ssc {
 
 int RunCompareCommand(int argc, char** argv) {
-  cli::Parser p(
+  cli::Command cmd(
       "compare",
       "ssc compare LOG [options]: replays the logged tool path in the twin and compares the\n"
       "chamber pressures with the logged ones (RMS in Pa and log10, correlation, mean-pressure\n"
       "error, direction error of the controller's g). LOG: a directory of the robot's per-topic\n"
       "CSVs (pressure.csv, tool_pose.csv, ft.csv, pwm.csv), the merged .mat file, or a plain CSV\n"
-      "(docs/robot_logs.md). Writes OUT/report.md, report.json, series.csv and compare.png.",
-      {{"scene", "disk_replay", "replay scene with a mocap body 'probe' holding the tool"},
-       {"out", "out/compare", "output directory"},
-       {"offset-window", "1.0", "in-air offset: mean absolute pressure over the first ... s"},
-       {"average", "7", "host moving-average window applied to the log, samples"},
-       {"tcp-offset", "146", "tool centre point along the tool0 z axis, mm"},
-       {"closed-loop", "", "also run the twin's controller from the log's start pose", true},
-       {"loop-scene", "disk_benchmark_gantry", "disk scene for the closed loop"},
-       {"pref", "100", "closed loop: the log's P_ref, Pa"},
-       {"beta", "2", "closed loop: the log's beta"},
-       {"step", "7.5", "closed loop: the log's step, mm"},
-       {"seed", "1", "closed loop: noise seed"},
-       {"no-plot", "", "skip the PNG plot", true}});
-  if (!p.Parse(argc, argv)) {
-    if (p.help_requested()) return 0;
-    std::fprintf(stderr, "%s\n", p.error().c_str());
-    return 2;
-  }
-  if (p.positional().size() != 1) {
-    std::fprintf(stderr, "ssc compare: give exactly one LOG (see ssc compare --help)\n");
-    return 2;
-  }
+      "(docs/robot_logs.md). Writes OUT/report.md, report.json, series.csv and compare.png.");
+  std::string log_path, scene_name = "disk_replay", loop_scene = "disk_benchmark_gantry",
+                        out_dir = "out/compare";
   ProcessOptions options;
-  long average = 0;
-  double tcp_mm = 0;
-  if (!p.GetDouble("offset-window", &options.offset_window_s) || !p.GetInt("average", &average) ||
-      !p.GetDouble("tcp-offset", &tcp_mm)) {
-    std::fprintf(stderr, "%s\n", p.error().c_str());
-    return 2;
-  }
-  if (average < 1 || average > 1000 || options.offset_window_s <= 0) {
-    std::fprintf(stderr, "ssc compare: need --average in [1, 1000] and --offset-window > 0\n");
-    return 2;
-  }
+  long average = 7;
+  double tcp_mm = 146;
+  bool closed_loop = false, no_plot = false;
+  TrialConfig tc;
+  cmd.Positional("LOG", &log_path, "the robot log (directory, .mat or plain CSV)", true);
+  cmd.Text("scene", &scene_name, "replay scene with a mocap body 'probe' holding the tool");
+  cmd.OutputDir("out", &out_dir, "output directory");
+  options.offset_window_s = 1.0;
+  cmd.Number("offset-window", &options.offset_window_s,
+             "in-air offset: mean absolute pressure over the first ... of the log", "s",
+             NumberRange::Positive(60));
+  cmd.Integer("average", &average, "host moving-average window applied to the log, samples",
+              NumberRange::Closed(1, 1000));
+  cmd.Number("tcp-offset", &tcp_mm, "tool centre point along the tool0 z axis", "mm",
+             NumberRange::Closed(0, 1000));
+  cmd.Flag("closed-loop", &closed_loop, "also run the twin's controller from the log's start pose");
+  cmd.Text("loop-scene", &loop_scene, "disk scene for the closed loop");
+  cmd.Number("pref", &tc.law.p_ref_pa, "closed loop: the log's P_ref", "Pa",
+             NumberRange::Positive(1e6).OpenHigh());
+  cmd.Number("beta", &tc.law.beta, "closed loop: the log's beta", "", NumberRange::Closed(0, 100));
+  cmd.Number("step", &tc.law.step_mm, "closed loop: the log's step", "mm",
+             NumberRange::Positive(100));
+  cmd.Seed("seed", &tc.seed, "closed loop: noise seed");
+  cmd.Flag("no-plot", &no_plot, "skip the PNG plot");
+  cmd.Check([&tc]() { return tc.Validate(); });
+  if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
   options.moving_average = static_cast<int>(average);
   options.tcp_offset_m = tcp_mm * 1e-3;
   ProcessedLog log;
   LoadError load_error;
-  if (!LoadAnyLog(p.positional()[0], options, &log, &load_error)) {
+  if (!LoadAnyLog(log_path, options, &log, &load_error)) {
     std::fprintf(stderr, "ssc compare: %s\n", load_error.ToString().c_str());
     return 1;
   }
   std::string error;
-  ModelPtr model = LoadModel(ResolveScenePath(p.Get("scene")), &error);
+  ModelPtr model = LoadModel(ResolveScenePath(scene_name), &error);
   if (!model) {
     std::fprintf(stderr, "ssc compare: %s\n", error.c_str());
     return 1;
@@ -71,16 +67,8 @@ int RunCompareCommand(int argc, char** argv) {
     return 1;
   }
   ClosedLoopComparison closed;
-  if (p.Flag("closed-loop")) {
-    TrialConfig tc;
-    long seed = 0;
-    if (!p.GetDouble("pref", &tc.law.p_ref_pa) || !p.GetDouble("beta", &tc.law.beta) ||
-        !p.GetDouble("step", &tc.law.step_mm) || !p.GetInt("seed", &seed) || seed < 0) {
-      std::fprintf(stderr, "ssc compare: %s\n", p.error().c_str());
-      return 2;
-    }
-    tc.seed = static_cast<std::uint64_t>(seed);
-    ModelPtr loop = LoadModel(ResolveScenePath(p.Get("loop-scene")), &error);
+  if (closed_loop) {
+    ModelPtr loop = LoadModel(ResolveScenePath(loop_scene), &error);
     if (!loop || !CompareClosedLoop(loop.get(), log, tc, &closed, &error)) {
       std::fprintf(stderr, "ssc compare: closed loop: %s\n", error.c_str());
       return 1;
@@ -92,7 +80,7 @@ int RunCompareCommand(int argc, char** argv) {
                 closed.twin.duration_s, closed.log.duration_s, closed.path_distance_mean_mm,
                 closed.path_distance_max_mm);
   }
-  if (!WriteComparisonReport(p.Get("out"), p.positional()[0], c, &closed, &error)) {
+  if (!WriteComparisonReport(out_dir, log_path, c, &closed, &error)) {
     std::fprintf(stderr, "ssc compare: %s\n", error.c_str());
     return 1;
   }
@@ -103,9 +91,9 @@ int RunCompareCommand(int argc, char** argv) {
   std::printf("mean P: RMS %.1f Pa, bias %.1f Pa; direction error RMS %.1f deg (median %.1f, "
               "%d samples)\n", c.pbar_rms_pa, c.pbar_bias_pa, c.direction_rms_deg,
               c.direction_median_deg, c.direction_samples);
-  const std::filesystem::path out = p.Get("out");
+  const std::filesystem::path out = out_dir;
   std::printf("wrote %s\n", (out / "report.md").c_str());
-  if (!p.Flag("no-plot")) {
+  if (!no_plot) {
     const std::string png = (out / "compare.png").string();
     if (RunPlotScript("plot_compare.py", {(out / "series.csv").string(), png})) {
       std::printf("wrote %s\n", png.c_str());

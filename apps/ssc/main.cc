@@ -1,8 +1,10 @@
 // ssc: command-line front end of the Smart Suction Cup digital twin.
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <string>
 
+#include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "runtime/mujoco_model.h"
 #include "studies/job_runner.h"
@@ -37,7 +39,8 @@ const Command kCommands[] = {
 };
 
 void PrintUsage() {
-  std::printf("usage: ssc <command> [options]   (ssc <command> --help for its options)\n\n");
+  std::printf("usage: ssc <command> [options]   (ssc <command> --help for its options)\n"
+              "       ssc --version\n\n");
   std::printf("Smart Suction Cup digital twin (MuJoCo %s).\n\ncommands:\n", mj_versionString());
   for (const Command& c : kCommands) std::printf("  %-10s %s\n", c.name, c.summary);
 }
@@ -55,14 +58,24 @@ int main(int argc, char** argv) {
     PrintUsage();
     return argc < 2 ? 2 : 0;
   }
+  if (!std::strcmp(argv[1], "--version") || !std::strcmp(argv[1], "version")) {
+    std::printf("%s\n", ssc::cli::VersionText().c_str());
+    return 0;
+  }
   for (const Command& c : kCommands) {
-    if (!std::strcmp(argv[1], c.name)) {
-      // Under mpirun the studies share their trials between ranks (studies/job_runner.h).
-      ssc::InitJobRunnerMpi(&argc, &argv);
-      const int rc = c.run(argc - 2, argv + 2);
-      ssc::FinalizeJobRunnerMpi(/*abort=*/rc != 0);  // a failed rank must not leave others waiting
-      return rc;
+    if (std::strcmp(argv[1], c.name)) continue;
+    // Under mpirun the studies share their trials between ranks (studies/job_runner.h).
+    ssc::InitJobRunnerMpi(&argc, &argv);
+    int rc = 1;
+    // Last line of defence: an unexpected exception (I/O, allocation) ends the command with a
+    // message and exit code 1, never an abort. Expected errors are handled where they occur.
+    try {
+      rc = c.run(argc - 2, argv + 2);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "ssc %s: error: %s\n", c.name, e.what());
     }
+    ssc::FinalizeJobRunnerMpi(/*abort=*/rc != 0);  // a failed rank must not leave others waiting
+    return rc;
   }
   std::fprintf(stderr, "ssc: unknown command '%s'\n\n", argv[1]);
   PrintUsage();

@@ -10,6 +10,7 @@
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
+#include "apps/ssc/trial_options.h"
 #include "runtime/mujoco_model.h"
 #include "objects/object_mjcf.h"
 #include "studies/object_trials.h"
@@ -17,69 +18,56 @@
 namespace ssc {
 
 int RunObjectsCommand(int argc, char** argv) {
-  const std::string cores = std::to_string(std::max(1u, std::thread::hardware_concurrency()));
-  cli::Parser p(
+  cli::Command cmd(
       "objects",
       "Writes the scenes of the published test objects (disks and holes 2-14 mm, the 35 mm\n"
       "disk, corners every 15 deg, volute, semicircle and semi-square strips, variable fillet)\n"
       "and runs the contour-following trial on each; writes OUT/objects.csv (one row per\n"
-      "object and seed), OUT/fillet_profile.csv and OUT/objects.png.",
-      {{"objects", "all", "comma-separated object names (e.g. disk_d06,hole_d10,corner_a090) or all"},
-       {"seeds", "1", "trials per object (seeds base, base+1, ...)"},
-       {"seed", "1", "base seed"},
-       {"scene-kind", "gantry", "'gantry' (light, for tables) or 'arm' (the UR-10 scenes)"},
-       {"pref", "100", "P_ref, Pa (published primitive-geometry controller)"},
-       {"beta", "2", "beta"},
-       {"step", "0.5", "step length dL, mm"},
-       {"threads", cores, "worker threads"},
-       {"out", "out/objects", "output directory (scenes in OUT/scenes)"},
-       {"write-only", "", "only write the scenes", true},
-       {"no-plot", "", "skip the PNG plot", true}});
-  if (!p.Parse(argc, argv)) {
-    if (p.help_requested()) return 0;
-    std::fprintf(stderr, "%s\n", p.error().c_str());
-    return 2;
-  }
-  long seeds = 0, seed = 0, threads = 0;
+      "object and seed), OUT/fillet_profile.csv and OUT/objects.png.");
+  std::string names = "all", kind = "gantry", out_dir = "out/objects";
+  long seeds = 1, threads = std::max(1u, std::thread::hardware_concurrency());
+  std::uint64_t seed = 1;
   ContourLawParams law;
-  if (!p.GetInt("seeds", &seeds) || !p.GetInt("seed", &seed) || !p.GetInt("threads", &threads) ||
-      !p.GetDouble("pref", &law.p_ref_pa) || !p.GetDouble("beta", &law.beta) ||
-      !p.GetDouble("step", &law.step_mm)) {
-    std::fprintf(stderr, "%s\n", p.error().c_str());
-    return 2;
-  }
-  if (seeds < 1 || seed < 0 || threads < 1) {
-    std::fprintf(stderr, "ssc objects: need --seeds >= 1, --seed >= 0, --threads >= 1\n");
-    return 2;
-  }
-  if (const std::string e = law.Validate(); !e.empty()) {
-    std::fprintf(stderr, "ssc objects: %s\n", e.c_str());
-    return 2;
-  }
-  const std::string kind = p.Get("scene-kind");
-  if (kind != "gantry" && kind != "arm") {
-    std::fprintf(stderr, "ssc objects: --scene-kind must be 'gantry' or 'arm', got '%s'\n",
-                 kind.c_str());
-    return 2;
-  }
+  law.step_mm = 0.5;
+  bool write_only = false, no_plot = false;
+  cmd.Text("objects", &names,
+           "comma-separated object names (e.g. disk_d06,hole_d10,corner_a090) or all");
+  cmd.Integer("seeds", &seeds, "trials per object (seeds base, base+1, ...)",
+              NumberRange::Closed(1, 1000));
+  cmd.Seed("seed", &seed, "base seed");
+  cmd.Choice("scene-kind", &kind, "'gantry' (light, for tables) or 'arm' (the UR-10 scenes)",
+             {"gantry", "arm"});
+  AddLawOptions(&cmd, &law);
+  cmd.Integer("threads", &threads, "worker threads", NumberRange::Closed(1, 256));
+  cmd.OutputDir("out", &out_dir, "output directory (scenes in OUT/scenes)");
+  cmd.Flag("write-only", &write_only, "only write the scenes");
+  cmd.Flag("no-plot", &no_plot, "skip the PNG plot");
+  cmd.Check([&law]() { return law.Validate(); });
+  if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
   std::vector<ObjectSpec> specs;
-  if (p.Get("objects") == "all") {
+  if (names == "all") {
     specs = AllObjects();
   } else {
-    std::stringstream ss(p.Get("objects"));
-    std::string name;
-    while (std::getline(ss, name, ',')) {
+    size_t start = 0;
+    for (;;) {
+      const size_t comma = names.find(',', start);
+      const std::string name = names.substr(start, comma == std::string::npos ? std::string::npos
+                                                                               : comma - start);
       ObjectSpec s = ObjectByName(name);
       if (s.name.empty()) {
-        std::fprintf(stderr, "ssc objects: unknown object '%s' (names: disk_d02..disk_d14, "
-                     "disk_r35, hole_d02..hole_d14, corner_aNNN (1-359), volute, "
-                     "semicircle_strip, semisquare_strip, fillet)\n", name.c_str());
-        return 2;
+        return cmd.Fail("--objects: unknown object '" + name + "' in '" + names +
+                        "' (names: disk_d02..disk_d14, disk_r35, hole_d02..hole_d14, corner_aNNN "
+                        "(1-359), volute, semicircle_strip, semisquare_strip, fillet)");
+      }
+      for (const ObjectSpec& earlier : specs) {
+        if (earlier.name == s.name) return cmd.Fail("--objects: '" + name + "' is listed twice");
       }
       specs.push_back(s);
+      if (comma == std::string::npos) break;
+      start = comma + 1;
     }
   }
-  const std::filesystem::path out = p.Get("out");
+  const std::filesystem::path out = out_dir;
   const std::string scene_dir = (out / "scenes").string();
   std::string error;
   for (const ObjectSpec& s : specs) {
@@ -97,7 +85,7 @@ int RunObjectsCommand(int argc, char** argv) {
     c << "x_m,y_m,closed\n";
     for (const Point2& q : s.contour.points) c << q[0] << ',' << q[1] << ',' << s.closed() << '\n';
   }
-  if (p.Flag("write-only")) return 0;
+  if (write_only) return 0;
 
   struct Job {
     size_t object;
@@ -163,7 +151,7 @@ int RunObjectsCommand(int argc, char** argv) {
       break;
     }
   }
-  if (!p.Flag("no-plot")) {
+  if (!no_plot) {
     const std::string png = (out / "objects.png").string();
     if (RunPlotScript("plot_objects.py", {(out / "objects.csv").string(), paths_dir, png})) {
       std::printf("wrote %s\n", png.c_str());

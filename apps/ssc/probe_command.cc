@@ -39,45 +39,43 @@ void WriteRow(std::ofstream& f, double offset_mm, double angle_deg, const ProbeR
 }  // namespace
 
 int RunProbe(int argc, char** argv) {
-  cli::Parser p("probe",
-                "Moves the cup kinematically (mocap, no arm) across a straight edge and around a\n"
-                "35 mm disk at a fixed inset, and writes edge.csv, disk.csv and probe.png: chamber\n"
-                "pressures, mean P, differentials and the direction the reference formulas give.",
-                {{"scene", "probe_edge", "probe scene (name under scenes/ or a path)"},
-                 {"out", "out/probe", "output directory"},
-                 {"from", "-6", "first offset of the cup centre inside the edge, mm"},
-                 {"to", "7", "last offset, mm"},
-                 {"step", "0.25", "offset step, mm"},
-                 {"compression", "1.0", "lip plane below the surface top, mm"},
-                 {"settle", "0.1", "settling time at each placement, s"},
-                 {"disk-inset", "2.5", "cup centre inside the disk edge for the disk sweep, mm"},
-                 {"disk-step", "15", "angle step around the disk, deg"},
-                 {"seed-note", "", "free text copied to the console (for logs)"},
-                 {"no-plot", "", "skip the PNG plot", true}});
-  if (!p.Parse(argc, argv)) {
-    if (p.help_requested()) return 0;
-    std::fprintf(stderr, "%s\n", p.error().c_str());
-    return 2;
-  }
-  double from, to, step, compression, settle, inset, disk_step;
-  if (!p.GetDouble("from", &from) || !p.GetDouble("to", &to) || !p.GetDouble("step", &step) ||
-      !p.GetDouble("compression", &compression) || !p.GetDouble("settle", &settle) ||
-      !p.GetDouble("disk-inset", &inset) || !p.GetDouble("disk-step", &disk_step)) {
-    std::fprintf(stderr, "%s\n", p.error().c_str());
-    return 2;
-  }
-  if (step <= 0 || to < from || settle <= 0 || disk_step <= 0) {
-    std::fprintf(stderr, "ssc probe: need step > 0, to >= from, settle > 0, disk-step > 0\n");
-    return 2;
-  }
+  cli::Command cmd("probe",
+                   "Moves the cup kinematically (mocap, no arm) across a straight edge and around a\n"
+                   "35 mm disk at a fixed inset, and writes edge.csv, disk.csv and probe.png: chamber\n"
+                   "pressures, mean P, differentials and the direction the reference formulas give.");
+  std::string scene_name = "probe_edge", out_dir = "out/probe", note;
+  double from = -6, to = 7, step = 0.25, compression = 1.0, settle = 0.1, inset = 2.5,
+         disk_step = 15;
+  bool no_plot = false;
+  cmd.Text("scene", &scene_name, "probe scene (name under scenes/ or a path)");
+  cmd.OutputDir("out", &out_dir, "output directory");
+  cmd.Number("from", &from, "first offset of the cup centre inside the edge", "mm",
+             NumberRange::Closed(-50, 50));
+  cmd.Number("to", &to, "last offset", "mm", NumberRange::Closed(-50, 50));
+  cmd.Number("step", &step, "offset step", "mm", NumberRange::Positive(100).OpenLow());
+  cmd.Number("compression", &compression, "lip plane below the surface top", "mm",
+             NumberRange::Closed(-10, 10));
+  cmd.Number("settle", &settle, "settling time at each placement", "s", NumberRange::Positive(10));
+  cmd.Number("disk-inset", &inset, "cup centre inside the disk edge for the disk sweep", "mm",
+             NumberRange::Closed(-35, 35));
+  cmd.Number("disk-step", &disk_step, "angle step around the disk", "deg",
+             NumberRange::Closed(0.1, 360));
+  cmd.Text("seed-note", &note, "free text copied to the console (for logs)");
+  cmd.Flag("no-plot", &no_plot, "skip the PNG plot");
+  cmd.Check([&]() -> std::string {
+    if (to < from) return "--to (" + FormatNumber(to) + ") must be >= --from (" + FormatNumber(from) + ")";
+    if ((to - from) / step > 100000) return "--from/--to/--step give more than 100000 placements";
+    return "";
+  });
+  if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
+  if (!note.empty()) std::printf("%s\n", note.c_str());
   std::string error;
-  auto probe = EdgeProbe3d::Create(ResolveScenePath(p.Get("scene")), &error);
+  auto probe = EdgeProbe3d::Create(ResolveScenePath(scene_name), &error);
   if (!probe) {
     std::fprintf(stderr, "ssc probe: %s\n", error.c_str());
     return 1;
   }
-  const std::filesystem::path out = p.Get("out");
-  std::filesystem::create_directories(out);
+  const std::filesystem::path out = out_dir;
 
   // Straight edge along world y at x = 0, plate at x < 0 with its top at z = 10 mm.
   const double surface_z = 0.010;
@@ -112,7 +110,7 @@ int RunProbe(int argc, char** argv) {
   std::printf("disk (radius 35 mm, inset %.2f mm): worst direction error vs the CCW tangent "
               "%.1f deg\n", inset, worst_deg);
   std::printf("wrote %s and %s\n", (out / "edge.csv").c_str(), (out / "disk.csv").c_str());
-  if (!p.Flag("no-plot")) {
+  if (!no_plot) {
     const std::string png = (out / "probe.png").string();
     if (RunPlotScript("plot_probe.py", {(out / "edge.csv").string(), (out / "disk.csv").string(),
                                         png})) {

@@ -17,62 +17,52 @@
 namespace ssc {
 
 int RunSweepCommand(int argc, char** argv) {
-  const std::string cores = std::to_string(std::max(1u, std::thread::hardware_concurrency()));
-  std::vector<cli::Option> options = {
-      {"scene", "disk_benchmark_gantry", "scene (name under scenes/ or a path)"},
-      {"pref", "40,70,100,150,200,250,300", "P_ref values, comma-separated, Pa"},
-      {"beta", "0,0.5,1,1.5,2,2.5,3,3.5,4", "beta values, comma-separated"},
-      {"step", "2.5,5,7.5", "step lengths dL, comma-separated, mm"},
-      {"repeats", "3", "trials per grid point"},
-      {"seed", "1", "base seed (each trial's seed derives from it and its grid point)"},
-      {"threads", cores, "worker threads"},
-      {"out", "out/sweep", "output directory (sweep.csv, success_maps.png)"},
-      {"no-plot", "", "skip the PNG plot", true},
-      {"no-progress", "", "no progress bar even on a terminal", true}};
-  for (const cli::Option& o : TrialSettingOptions()) options.push_back(o);
-  cli::Parser p("sweep",
-                "Runs a grid P_ref x beta x dL x repeats of disk trials (the published grid by\n"
-                "default) on all cores. Rows are appended to OUT/sweep.csv as trials end;\n"
-                "re-running the same command resumes, skipping finished rows.",
-                options);
-  if (!p.Parse(argc, argv)) {
-    if (p.help_requested()) return 0;
-    std::fprintf(stderr, "%s\n", p.error().c_str());
-    return 2;
-  }
+  cli::Command cmd("sweep",
+                   "Runs a grid P_ref x beta x dL x repeats of disk trials (the published grid by\n"
+                   "default) on all cores. Rows are appended to OUT/sweep.csv as trials end;\n"
+                   "re-running the same command resumes, skipping finished rows.");
   SweepSpec spec;
-  long repeats = 0, seed = 0, threads = 0;
+  spec.scene_name = "disk_benchmark_gantry";
+  spec.pref_pa = {40, 70, 100, 150, 200, 250, 300};
+  spec.beta = {0, 0.5, 1, 1.5, 2, 2.5, 3, 3.5, 4};
+  spec.step_mm = {2.5, 5, 7.5};
+  long repeats = 3, threads = std::max(1u, std::thread::hardware_concurrency());
+  std::string out_dir = "out/sweep";
+  bool no_plot = false, no_progress = false;
+  TrialSettings settings;
+  cmd.Text("scene", &spec.scene_name, "scene (name under scenes/ or a path)");
+  cmd.NumberList("pref", &spec.pref_pa, "P_ref values", "Pa", NumberRange::Positive(1e6).OpenHigh());
+  cmd.NumberList("beta", &spec.beta, "beta values", "", NumberRange::Closed(0, 100));
+  cmd.NumberList("step", &spec.step_mm, "step lengths dL", "mm", NumberRange::Positive(100));
+  cmd.Integer("repeats", &repeats, "trials per grid point", NumberRange::Closed(1, 1000));
+  cmd.Seed("seed", &spec.seed, "base seed (each trial's seed derives from it and its grid point)");
+  cmd.Integer("threads", &threads, "worker threads", NumberRange::Closed(1, 256));
+  cmd.OutputDir("out", &out_dir, "output directory (sweep.csv, success_maps.png)");
+  cmd.Flag("no-plot", &no_plot, "skip the PNG plot");
+  cmd.Flag("no-progress", &no_progress, "no progress bar even on a terminal");
+  // The trial settings are checked with the grid's first point (each point is checked again).
+  cmd.Check([&spec]() {
+    spec.base.law.p_ref_pa = spec.pref_pa.front();
+    spec.base.law.beta = spec.beta.front();
+    spec.base.law.step_mm = spec.step_mm.front();
+    return std::string();
+  });
+  AddTrialSettingOptions(&cmd, &spec.base, &settings);
+  if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
   std::string error;
-  if (!p.GetDoubleList("pref", &spec.pref_pa) || !p.GetDoubleList("beta", &spec.beta) ||
-      !p.GetDoubleList("step", &spec.step_mm) || !p.GetInt("repeats", &repeats) ||
-      !p.GetInt("seed", &seed) || !p.GetInt("threads", &threads)) {
-    std::fprintf(stderr, "%s\n", p.error().c_str());
-    return 2;
-  }
-  if (repeats < 1 || repeats > 1000 || seed < 0 || threads < 1 || threads > 256) {
-    std::fprintf(stderr, "ssc sweep: need repeats in [1, 1000], seed >= 0, threads in [1, 256]\n");
-    return 2;
-  }
-  if (!ReadTrialSettings(&p, &spec.base, &error)) {
-    std::fprintf(stderr, "ssc sweep: %s\n", error.c_str());
-    return 2;
-  }
   spec.repeats = static_cast<int>(repeats);
-  spec.seed = static_cast<std::uint64_t>(seed);
   spec.threads = static_cast<int>(threads);
-  spec.scene_name = p.Get("scene");
-  const std::filesystem::path out = p.Get("out");
-  std::filesystem::create_directories(out);
+  const std::filesystem::path out = out_dir;
   spec.out_csv = (out / "sweep.csv").string();
 
-  const std::string scene = ResolveScenePath(p.Get("scene"));
+  const std::string scene = ResolveScenePath(spec.scene_name);
   ModelPtr model = LoadModel(scene, &error);
   if (!model) {
     std::fprintf(stderr, "ssc sweep: %s\n", error.c_str());
     return 1;
   }
   const bool rank0 = JobRunnerRank() == 0;
-  const bool bar = rank0 && !p.Flag("no-progress") && isatty(STDERR_FILENO);
+  const bool bar = rank0 && !no_progress && isatty(STDERR_FILENO);
   auto progress = [&](const SweepProgress& s) {
     if (!bar) return;
     const int ran = s.done - s.skipped;
@@ -109,7 +99,7 @@ int RunSweepCommand(int argc, char** argv) {
                          "command to resume\n", summary.ran, spec.out_csv.c_str());
     return 130;
   }
-  if (!p.Flag("no-plot")) {
+  if (!no_plot) {
     const std::string png = (out / "success_maps.png").string();
     if (RunPlotScript("plot_success_maps.py", {spec.out_csv, png})) {
       std::printf("wrote %s\n", png.c_str());

@@ -1,19 +1,28 @@
-// Options shared by `ssc trial` and `ssc sweep`: the controller and trial settings.
+// Options shared by the commands that run trials (trial, sweep, view): the controller and trial
+// settings beyond P_ref, beta and the step, read straight into a TrialConfig.
 #ifndef SSC_APPS_SSC_TRIAL_OPTIONS_H_
 #define SSC_APPS_SSC_TRIAL_OPTIONS_H_
 
-#include <vector>
+#include <string>
 
 #include "apps/ssc/cli.h"
 #include "runtime/trial.h"
 
 namespace ssc {
 
-// The options that configure a trial beyond P_ref, beta and the step.
-std::vector<cli::Option> TrialSettingOptions();
+// The law's P_ref, beta and step (each command gives its own defaults in *law).
+void AddLawOptions(cli::Command* cmd, ContourLawParams* law);
 
-// Reads those options into *config; false with p->error() on a malformed value.
-bool ReadTrialSettings(cli::Parser* p, TrialConfig* config, std::string* error);
+// The trial settings. Their values land in *config when cmd->Parse() succeeds (the disk target,
+// the follow side and the dead band are set by a check that also runs config->Validate()).
+// `settings` must outlive the parse.
+struct TrialSettings {
+  double start_offset_mm = 32;
+  double sweep_deg = 0;
+  std::string object_on = "left";
+  bool no_dead_band = false;
+};
+void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* config, TrialSettings* settings);
 
 }  // namespace ssc
 

@@ -14,55 +14,30 @@
 namespace ssc {
 
 int RunViewCommand(int argc, char** argv) {
-  std::vector<cli::Option> options = {
-      {"pref", "100", "P_ref, Pa"},
-      {"beta", "2", "beta"},
-      {"step", "7.5", "step length dL, mm"},
-      {"seed", "1", "sensor noise seed"},
-      {"speed", "1", "simulated seconds per wall second at start (- / = change it)"},
-      {"screenshot", "", "render off-screen to this PNG after --time and exit"},
-      {"time", "5", "simulated seconds before the screenshot, s"},
-      {"width", "1280", "image width, px"},
-      {"height", "720", "image height, px"}};
-  for (const cli::Option& o : TrialSettingOptions()) options.push_back(o);
-  cli::Parser p("view",
-                "ssc view [SCENE] [options]: the twin in a window with the trial controller running\n"
-                "(the same mjcb_control callback as headless trials: same seed, same trajectory).\n"
-                "SCENE: a name under scenes/ (default disk_benchmark), a path, or a test object by\n"
-                "name (disk_d10, hole_d06, corner_a090, volute, semicircle_strip, fillet, ...).",
-                options);
-  if (!p.Parse(argc, argv)) {
-    if (p.help_requested()) return 0;
-    std::fprintf(stderr, "%s\n", p.error().c_str());
-    return 2;
-  }
+  cli::Command cmd("view",
+                   "ssc view [SCENE] [options]: the twin in a window with the trial controller running\n"
+                   "(the same mjcb_control callback as headless trials: same seed, same trajectory).\n"
+                   "SCENE: a name under scenes/ (default disk_benchmark), a path, or a test object by\n"
+                   "name (disk_d10, hole_d06, corner_a090, volute, semicircle_strip, fillet, ...).");
   ViewerOptions v;
-  long seed = 0, width = 0, height = 0;
+  TrialSettings settings;
+  std::string scene = "disk_benchmark";
+  long width = 1280, height = 720;
+  cmd.Positional("SCENE", &scene, "scene name, path or test object", false);
+  AddLawOptions(&cmd, &v.config.law);
+  cmd.Seed("seed", &v.config.seed, "sensor noise seed");
+  cmd.Number("speed", &v.speed, "simulated seconds per wall second at start (- / = change it)", "",
+             NumberRange::Positive(1000));
+  cmd.OutputFile("screenshot", &v.screenshot, "render off-screen to this PNG after --time and exit");
+  cmd.Number("time", &v.time_s, "simulated seconds before the screenshot", "s",
+             NumberRange::Closed(0, 3600));
+  cmd.Integer("width", &width, "image width, px", NumberRange::Closed(16, 8192));
+  cmd.Integer("height", &height, "image height, px", NumberRange::Closed(16, 8192));
+  AddTrialSettingOptions(&cmd, &v.config, &settings);
+  if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
   std::string error;
-  if (!p.GetDouble("pref", &v.config.law.p_ref_pa) || !p.GetDouble("beta", &v.config.law.beta) ||
-      !p.GetDouble("step", &v.config.law.step_mm) || !p.GetInt("seed", &seed) ||
-      !p.GetDouble("speed", &v.speed) || !p.GetDouble("time", &v.time_s) ||
-      !p.GetInt("width", &width) || !p.GetInt("height", &height)) {
-    std::fprintf(stderr, "%s\n", p.error().c_str());
-    return 2;
-  }
-  if (!ReadTrialSettings(&p, &v.config, &error)) {
-    std::fprintf(stderr, "ssc view: %s\n", error.c_str());
-    return 2;
-  }
-  if (seed < 0 || width < 16 || height < 16 || width > 8192 || height > 8192 || v.speed <= 0) {
-    std::fprintf(stderr, "ssc view: need seed >= 0, width/height in [16, 8192] px, speed > 0\n");
-    return 2;
-  }
-  v.config.seed = static_cast<std::uint64_t>(seed);
-  if (const std::string e = v.config.Validate(); !e.empty()) {
-    std::fprintf(stderr, "ssc view: %s\n", e.c_str());
-    return 2;
-  }
   v.width = static_cast<int>(width);
   v.height = static_cast<int>(height);
-  v.screenshot = p.Get("screenshot");
-  const std::string scene = p.positional().empty() ? "disk_benchmark" : p.positional()[0];
   v.scene_path = ResolveScenePath(scene);
   if (!std::filesystem::exists(v.scene_path)) {
     // A test object by name: write its scenes (out/objects/scenes) and open the arm scene, with
