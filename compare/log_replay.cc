@@ -8,7 +8,7 @@
 #include <random>
 
 #include "controller/pure/contour_law.h"
-#include "geometry/contour.h"
+#include "geometry/contour_path.h"
 #include "runtime/mujoco_model.h"
 #include "plugin/chamber_pressure_sensor.h"
 
@@ -213,17 +213,17 @@ bool CompareClosedLoop(const mjModel* disk_scene, const ProcessedLog& log,
     path.push_back({log.tcp_m[i][0], log.tcp_m[i][1]});
     t.push_back(log.t_s[i]);
   }
-  out->log = ComputeDiskMetrics(path, t, c.target.sweep_centre, c.target.disk_radius_m);
+  out->log = ComputeDiskMetrics(path, t, c.target.goal.centre, c.target.disk_radius_m);
   DataPtr d = MakeData(disk_scene, error);
   if (!d) return false;
   auto trial = ContourTrial::Create(disk_scene, d.get(), c, false, error);
   if (!trial) return false;
   const TrialResult r = trial->Run();
   out->twin = r.metrics;
-  out->twin_outcome = r.outcome;
-  Polyline logged;
-  logged.points = path;
-  const auto e = ContourError(trial->path(), [&](double x, double y) { return logged.Distance(x, y); });
+  out->twin_outcome = OutcomeName(r.outcome);
+  const ContourPath logged = ContourPath::Polygon(path, false);
+  const auto e = ContourError(trial->path(),
+                              [&](double x, double y) { return logged.Project(x, y).distance_m; });
   out->path_distance_mean_mm = e[0] * 1e3;
   out->path_distance_max_mm = e[1] * 1e3;
   out->ran = true;

@@ -254,20 +254,32 @@ double ContourPath::SignedDistance(double x, double y) const {
   return side > 0 ? -pr.distance_m : pr.distance_m;
 }
 
-Polyline ContourPath::ToPolyline(double tolerance_m) const {
-  Polyline line;
-  line.closed = closed_;
+ContourPath ContourPath::Polygon(const std::vector<Point2>& points, bool closed) {
+  std::vector<PathPiece> pieces;
+  std::vector<Point2> q;
+  for (const Point2& p : points) {
+    if (q.empty() || p != q.back()) q.push_back(p);
+  }
+  if (closed && q.size() > 1 && q.front() == q.back()) q.pop_back();
+  for (size_t i = 0; i + 1 < q.size(); ++i) pieces.push_back(PathPiece::Segment(q[i], q[i + 1]));
+  if (closed && q.size() > 2) pieces.push_back(PathPiece::Segment(q.back(), q.front()));
+  if (pieces.empty() && !q.empty()) pieces.push_back(PathPiece::Segment(q[0], q[0]));
+  return ContourPath(std::move(pieces), closed);
+}
+
+std::vector<Point2> ContourPath::Vertices(double tolerance_m) const {
+  std::vector<Point2> line;
   for (const PathPiece& p : pieces_) {
-    line.points.push_back(p.a);
+    line.push_back(p.a);
     if (!p.polar) continue;
     const double r_max = std::max(p.r0_m, RadiusAt(p, std::fabs(p.sweep_rad)));
     const double step = 2 * std::acos(std::max(-1.0, 1 - tolerance_m / r_max));
     const int chords = std::max(1, static_cast<int>(std::ceil(std::fabs(p.sweep_rad) / step)));
     for (int k = 1; k < chords; ++k) {
-      line.points.push_back(PolarPoint(p, std::fabs(p.sweep_rad) * k / chords));
+      line.push_back(PolarPoint(p, std::fabs(p.sweep_rad) * k / chords));
     }
   }
-  if (!closed_ && !pieces_.empty()) line.points.push_back(pieces_.back().b);
+  if (!closed_ && !pieces_.empty()) line.push_back(pieces_.back().b);
   return line;
 }
 

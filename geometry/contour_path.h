@@ -1,5 +1,6 @@
-// The exact edge of a test object in the plane of its top face: a chain of straight segments,
-// circular arcs and Archimedean spiral arcs, walked so that the object lies on the LEFT.
+// The project's one contour type: a chain of straight segments, circular arcs and Archimedean
+// spiral arcs, open or closed; a test object's exact edge is walked so that the object lies on
+// the LEFT, and a polyline (a logged path, say) is a chain of segments (ContourPath::Polygon).
 // Queries: length, point and tangent at an arc position, the arc position of the closest point
 // ("where along the edge"), and the signed distance to the edge. Pure C++, world metres.
 #ifndef SSC_GEOMETRY_CONTOUR_PATH_H_
@@ -8,7 +9,7 @@
 #include <array>
 #include <vector>
 
-#include "geometry/contour.h"
+#include "geometry/point2.h"
 
 namespace ssc {
 
@@ -45,6 +46,9 @@ class ContourPath {
   // Pieces must join end to start (within 1 um); `closed`: the last piece ends at the first's
   // start.
   ContourPath(std::vector<PathPiece> pieces, bool closed);
+  // The polyline through `points` (repeated points are skipped); `closed` joins the last point
+  // to the first.
+  static ContourPath Polygon(const std::vector<Point2>& points, bool closed);
 
   bool closed() const { return closed_; }
   double Length() const { return total_m_; }
@@ -70,9 +74,9 @@ class ContourPath {
   // straight.
   double SignedDistance(double x, double y) const;
 
-  // The contour as a polyline with chords within `tolerance_m` of the exact curve (piece
-  // junctions are vertices), for plots and CSV files.
-  Polyline ToPolyline(double tolerance_m) const;
+  // Vertices of a polyline with chords within `tolerance_m` of the exact curve (piece junctions
+  // are vertices; a closed contour's first point is not repeated), for plots and CSV files.
+  std::vector<Point2> Vertices(double tolerance_m) const;
 
  private:
   // Piece index and arc length within it at contour arc position s.

@@ -19,7 +19,6 @@ constexpr char kObjectRgba[] = "0.25 0.45 0.8 1";
 // The probe scene holds the cup's lip plane this far above the object's top face.
 constexpr double kProbeHoverM = 0.005;
 // Flange to lip plane along the tool axis (models/ssc_tool.xml: 25.4 + 120.6 mm).
-constexpr double kToolLengthM = 0.146;
 
 std::string Fmt(double v) {
   char buf[32];
@@ -207,7 +206,7 @@ bool WriteProbeScene(const ObjectSpec& spec, const fs::path& repo, const fs::pat
   probe->SetAttribute("name", "probe");
   probe->SetAttribute("mocap", "true");
   const Point2& s = spec.trial.start_xy_m;
-  probe->SetAttribute("pos", Vec({s[0], s[1], spec.top_z_m + kProbeHoverM + kToolLengthM}).c_str());
+  probe->SetAttribute("pos", Vec({s[0], s[1], spec.top_z_m + kProbeHoverM + kToolCentreOffsetM}).c_str());
   probe->SetAttribute("quat", "0 0.70710678 -0.70710678 0");
   XMLElement* attach = probe->InsertNewChildElement("attach");
   attach->SetAttribute("model", "ssc_tool");

@@ -26,7 +26,7 @@ std::string ValueName(const char* prefix, double value, int width) {
 
 void FinishSpec(ObjectSpec* spec, double start_arc_m, double inset_m, const Point2& sweep_centre,
                 double end_arc_m) {
-  spec->contour = spec->edge.ToPolyline(2e-5);
+  spec->outline = spec->edge.Vertices(2e-5);
   ObjectTrialSetup& t = spec->trial;
   const Point2 p = spec->edge.PointAt(start_arc_m), n = spec->edge.LeftNormalAt(start_arc_m);
   t.start_arc_m = start_arc_m;
@@ -39,19 +39,15 @@ void FinishSpec(ObjectSpec* spec, double start_arc_m, double inset_m, const Poin
   if (spec->edge.closed()) {
     // Shoelace area of the edge: > 0 when it is walked counter-clockwise.
     double area = 0;
-    const auto& q = spec->contour.points;
+    const auto& q = spec->outline;
     for (size_t i = 0; i < q.size(); ++i) {
       const Point2& a = q[i];
       const Point2& b = q[(i + 1) % q.size()];
       area += a[0] * b[1] - b[0] * a[1];
     }
-    t.success = SuccessRule::kSweptAngle;
-    t.sweep_centre_xy_m = sweep_centre;
-    t.success_sweep_deg = area > 0 ? kClosedSuccessSweepDeg : -kClosedSuccessSweepDeg;
+    t.goal = TrialGoal::SweptAngle(sweep_centre, area > 0 ? kLoopSweepDeg : -kLoopSweepDeg);
   } else {
-    t.success = SuccessRule::kArcPosition;
-    t.sweep_centre_xy_m = t.start_xy_m;
-    t.end_arc_m = end_arc_m;
+    t.goal = TrialGoal::GoalPoint(end_arc_m);
   }
 }
 

@@ -19,18 +19,17 @@
 #include <string>
 #include <vector>
 
-#include "geometry/contour.h"
+#include "controller/pure/trial_goal.h"
 #include "geometry/contour_path.h"
+#include "geometry/dimensions.h"
 #include "objects/fillet_profile.h"
 
 namespace ssc {
 
-inline constexpr double kWorkspaceX = 0.65, kWorkspaceY = 0.0;  // W, world m
 inline constexpr double kTableZ = 0.0;                            // table plane, m
 inline constexpr double kObjectTopZ = 0.010;                      // top face of every object, m
 inline constexpr double kStartInsetM = 0.003;  // cup centre inside the edge at the start
 inline constexpr double kSeamOverlapM = 1e-4;  // neighbouring convex pieces overlap this much
-inline constexpr double kClosedSuccessSweepDeg = 355;  // the implementation's "one loop"
 
 enum class ObjectKind {
   kDisk, kHole, kCorner, kVolute, kSemicircleStrip, kSemisquareStrip, kFillet
@@ -54,12 +53,7 @@ struct ConvexPiece {
   static ConvexPiece Hull(std::vector<std::array<double, 3>> points);
 };
 
-// How the trial runner starts and judges a contour-following trial on an object.
-enum class SuccessRule {
-  kSweptAngle,   // closed contours: the cup's swept angle about sweep_centre passes the target
-  kArcPosition,  // open contours: the tracked arc position along the edge passes end_arc_m
-};
-
+// How the trial runner starts a contour-following trial on an object, and its goal.
 struct ObjectTrialSetup {
   Point2 landing_xy_m{};    // the cup descends here to the start-up compression (world)
   Point2 start_xy_m{};      // cup centre when following starts
@@ -67,10 +61,9 @@ struct ObjectTrialSetup {
   double start_inset_m = kStartInsetM;  // start lies this far inside the edge (object side)
   Point2 follow_direction{1, 0};  // unit: the edge's walking direction at the start
   bool object_on_left = true;     // the published sense: ccw round a disk, cw round a hole
-  SuccessRule success = SuccessRule::kSweptAngle;
-  Point2 sweep_centre_xy_m{};     // kSweptAngle
-  double success_sweep_deg = kClosedSuccessSweepDeg;  // signed: > 0 counter-clockwise
-  double end_arc_m = 0;           // kArcPosition
+  // Closed contours: the swept angle about the object's centre (signed: > 0 counter-clockwise);
+  // open contours: the goal point's arc position along the edge.
+  TrialGoal goal;
   double surface_top_z_m = kObjectTopZ;
 };
 
@@ -80,7 +73,7 @@ struct ObjectSpec {
   double param = 0;         // diameter (mm) for disks and holes, angle (deg) for corners, else 0
   std::string description;  // dimensions in words, for the files and docs
   ContourPath edge;         // the exact followed edge, object on its left
-  Polyline contour;         // the edge as a polyline (chords within 0.02 mm), for plots/CSVs
+  std::vector<Point2> outline;  // the edge as polyline vertices (chords within 0.02 mm), for plots
   double top_z_m = kObjectTopZ;
   ObjectTrialSetup trial;
   std::vector<ConvexPiece> pieces;

@@ -24,7 +24,7 @@ constexpr double kCornerEdgeM = 60 * kMm;    // both straight edges of a corner
 constexpr double kCornerReachM = 70 * kMm;   // radius of the corner's round back
 constexpr double kCornerStartM = 40 * kMm;   // start: this far before the apex on edge 1
 constexpr double kCornerPastM = 30 * kMm;    // success: this far past the apex on edge 2
-constexpr double kCupBodyRadiusM = 11.5 * kMm;
+constexpr double kCupBodyRadiusM = 0.5 * kCupBodyDiameterMm * kMm;
 
 ObjectSpec Disk(const std::string& name, double diameter_mm) {
   ObjectSpec s;

@@ -16,7 +16,7 @@ Point2 Polar(const Point2& centre, double r, double angle_rad);
 // "<prefix><value>": integers as %02d/%03d (width digits), other values with one decimal.
 std::string ValueName(const char* prefix, double value, int width);
 
-// Fills spec->contour from spec->edge and the trial setup for a start at arc position
+// Fills spec->outline from spec->edge and the trial setup for a start at arc position
 // start_arc_m, inset_m inside the edge. Closed edges succeed by the swept angle about
 // sweep_centre (sign from the walking sense), open ones at end_arc_m.
 void FinishSpec(ObjectSpec* spec, double start_arc_m, double inset_m, const Point2& sweep_centre,

@@ -19,6 +19,7 @@
 #include "robotlog/mat_log.h"
 #include "robotlog/plain_log.h"
 #include "robotlog/topic_csv.h"
+#include "geometry/dimensions.h"
 
 namespace ssc {
 
@@ -50,7 +51,7 @@ struct ProcessOptions {
   double offset_window_s = 1.0;
   double trial_start_s = -1.0;
   int moving_average = 7;       // the host's filter, samples (1 = none)
-  double tcp_offset_m = 0.146;  // tool centre point along tool0 z
+  double tcp_offset_m = kToolCentreOffsetM;  // tool centre point along tool0 z
   Interpolation interpolation = Interpolation::kLinear;
   ClockSource clock = ClockSource::kPressure;
   double clock_rate_hz = 100.0;  // kUniform only

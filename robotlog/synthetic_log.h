@@ -13,6 +13,7 @@
 
 #include "robotlog/align.h"
 #include "robotlog/log_types.h"
+#include "geometry/dimensions.h"
 
 namespace ssc {
 
@@ -38,7 +39,7 @@ struct LogPerturbation {
   double jitter_s = 0;         // uniform stamp jitter, +-, on every stream (order kept)
   double drop_fraction = 0;    // pose and F/T samples dropped at random (ends kept)
   PwmScale pwm_scale = PwmScale::kPercent;
-  double tcp_offset_m = 0.146;
+  double tcp_offset_m = kToolCentreOffsetM;
   Eigen::Isometry3d X_scene_base = Eigen::Isometry3d::Identity();
   unsigned seed = 1;
 };

@@ -24,7 +24,7 @@ TrialTarget TrialTarget::Disk(double centre_x_m, double centre_y_m, double radiu
   TrialTarget t;
   t.approach = {centre_x_m, centre_y_m};
   t.start = {centre_x_m + start_offset_m, centre_y_m};
-  t.sweep_centre = {centre_x_m, centre_y_m};
+  t.goal = TrialGoal::SweptAngle({centre_x_m, centre_y_m}, kLoopSweepDeg);
   t.disk_radius_m = radius_m;
   return t;
 }
@@ -52,9 +52,7 @@ std::string TrialConfig::Validate() const {
   if (!Finite(target.start[0]) || !Finite(target.start[1]) || !Finite(target.approach[0]) ||
       !Finite(target.approach[1]))
     return "target start/approach points must be finite";
-  if (!Finite(target.success_sweep_deg) || std::fabs(target.success_sweep_deg) < 1 ||
-      std::fabs(target.success_sweep_deg) > 3600)
-    return RangeError("success_sweep_deg", target.success_sweep_deg, "+-[1, 3600] deg");
+  if (const std::string e = target.goal.Validate(); !e.empty()) return e;
   if (!Finite(timeout_s) || timeout_s <= 0 || timeout_s > 3600)
     return RangeError("timeout_s", timeout_s, "(0, 3600] s");
   if (!Finite(servo.smoothing_s) || servo.smoothing_s < 0 || servo.smoothing_s > 5)
@@ -128,8 +126,7 @@ void ContourTrial::Reset() {
   next_log_s_ = 0;
   next_log_time_s_ = 0;
   follow_start_s_ = 0;
-  sweep_ = SweepTracker();
-  tracked_arc_m_ = 0;
+  goal_ = GoalTracker();
   path_xy_.clear();
   path_t_.clear();
   result_ = TrialResult();
@@ -171,25 +168,28 @@ void ContourTrial::Log(bool iteration) {
   result_.log.push_back(row);
 }
 
-void ContourTrial::Finish(const std::string& outcome, const std::string& detail) {
+void ContourTrial::Finish(Outcome outcome, const std::string& detail) {
   if (phase_ == TrialPhase::kDone) return;
   phase_ = TrialPhase::kDone;
   result_.outcome = outcome;
   result_.detail = detail;
   result_.sim_time_s = d_->time;
   result_.follow_time_s = follow_start_s_ > 0 ? d_->time - follow_start_s_ : 0;
-  result_.swept_deg = sweep_.swept_deg();
+  result_.swept_deg = goal_.swept_deg();
   const TrialTarget& tg = config_.target;
-  if (tg.arc_position_m) result_.end_arc_mm = tracked_arc_m_ * 1e3;
+  if (tg.edge) result_.end_arc_mm = goal_.arc_m() * 1e3;
   if (path_xy_.size() >= 2) {
-    result_.metrics = ComputeDiskMetrics(path_xy_, path_t_, tg.sweep_centre,
+    const bool swept = tg.goal.kind == TrialGoal::Kind::kSweptAngle;
+    result_.metrics = ComputeDiskMetrics(path_xy_, path_t_, swept ? tg.goal.centre : tg.start,
                                          tg.disk_radius_m > 0 ? tg.disk_radius_m : 1.0);
     if (tg.disk_radius_m <= 0) {  // r_mean etc. mean nothing without a disk
       result_.metrics.r_mean_mm = result_.metrics.dr_mm = result_.metrics.sigma_r_mm = 0;
       result_.metrics.s_c = 0;
     }
-    if (tg.contour_distance_m) {
-      const auto e = ContourError(path_xy_, tg.contour_distance_m);
+    if (tg.edge) {
+      const ContourPath& edge = *tg.edge;
+      const auto e = ContourError(
+          path_xy_, [&edge](double x, double y) { return edge.Project(x, y).distance_m; });
       result_.metrics.contour_mean_mm = e[0] * 1e3;
       result_.metrics.contour_max_mm = e[1] * 1e3;
     }
@@ -247,7 +247,7 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
       Vec3 target = servo_->target();
       target[2] -= config_.approach_speed_m_s * m_->opt.timestep;
       servo_->SetTarget(target);
-      if (t > 30) Finish("timeout", "approach never reached the start-up force");
+      if (t > 30) Finish(Outcome::kTimeout, "approach never reached the start-up force");
       break;
     }
     case TrialPhase::kMoveToStart: {
@@ -266,11 +266,7 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
           follow_start_s_ = t;
           next_iteration_s_ = t;
           next_log_s_ = t;
-          sweep_.Reset(config_.target.sweep_centre[0], config_.target.sweep_centre[1], tool[0],
-                       tool[1]);
-          if (config_.target.arc_position_m) {
-            tracked_arc_m_ = config_.target.arc_position_m(tool[0], tool[1], -1.0);
-          }
+          goal_.Start(config_.target.goal, config_.target.edge, {tool[0], tool[1]});
         }
       }
       target[2] = hold_z_;
@@ -281,10 +277,7 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
       if (t >= next_log_s_) {
         path_xy_.push_back({tool[0], tool[1]});
         path_t_.push_back(t);
-        sweep_.Add(tool[0], tool[1]);
-        if (config_.target.arc_position_m) {
-          tracked_arc_m_ = config_.target.arc_position_m(tool[0], tool[1], tracked_arc_m_);
-        }
+        goal_.Add({tool[0], tool[1]});
         next_log_s_ += config_.log_period_s;
       }
       if (t + 1e-9 < next_iteration_s_) break;
@@ -299,20 +292,14 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
       // Measured pose + step, height held.
       servo_->SetTarget({tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], hold_z_});
       Log(true);
-      // Progress toward success, in the classifier's terms (degrees of sweep).
-      const TrialTarget& tg = config_.target;
-      double progress_deg = 0;
-      TrialThresholds thresholds = config_.thresholds;
-      if (tg.open_contour) {
-        const bool reached = tg.arc_position_m && tracked_arc_m_ >= tg.end_arc_m;
-        progress_deg = reached ? thresholds.success_sweep_deg : 0;
-      } else {
-        thresholds.success_sweep_deg = std::fabs(tg.success_sweep_deg);
-        progress_deg = tg.success_sweep_deg < 0 ? -sweep_.swept_deg() : sweep_.swept_deg();
+      const SampleCheck check = ClassifySample(config_.thresholds, p, FtNormalForce(),
+                                               goal_.reached(), t - follow_start_s_,
+                                               config_.timeout_s);
+      if (check.outcome == Outcome::kSuccess) {
+        Finish(check.outcome, goal_.ReachedDetail());
+      } else if (check.outcome != Outcome::kRunning) {
+        Finish(check.outcome, check.detail);
       }
-      const SampleCheck check = ClassifySample(thresholds, p, FtNormalForce(), progress_deg,
-                                               t - follow_start_s_, config_.timeout_s);
-      if (check.outcome != Outcome::kRunning) Finish(OutcomeName(check.outcome), check.detail);
       break;
     }
     case TrialPhase::kDone:
@@ -326,11 +313,11 @@ bool ContourTrial::Step() {
   mj_step(m_, d_);
   // A numerically broken run is never a controller result.
   if (d_->warning[mjWARN_BADQACC].number > 0) {
-    Finish("unstable", "MuJoCo warning: bad qacc (simulation diverged)");
+    Finish(Outcome::kUnstable, "MuJoCo warning: bad qacc (simulation diverged)");
   } else {
     for (int i = 0; i < m_->nq; ++i) {
       if (!std::isfinite(d_->qpos[i])) {
-        Finish("unstable", "non-finite qpos");
+        Finish(Outcome::kUnstable, "non-finite qpos");
         break;
       }
     }
@@ -342,7 +329,7 @@ TrialResult ContourTrial::Run(double max_sim_s) {
   const auto t0 = std::chrono::steady_clock::now();
   while (d_->time < max_sim_s && Step()) {
   }
-  if (phase_ != TrialPhase::kDone) Finish("timeout", "simulation time limit");
+  if (phase_ != TrialPhase::kDone) Finish(Outcome::kTimeout, "simulation time limit");
   result_.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result_;
@@ -353,14 +340,14 @@ TrialResult RunTrial(const mjModel* m, const TrialConfig& config, bool keep_log,
   DataPtr data = MakeData(m, error);
   if (!data) {
     TrialResult r;
-    r.outcome = "unstable";
+    r.outcome = Outcome::kUnstable;
     r.detail = "could not make mjData: " + *error;
     return r;
   }
   auto trial = ContourTrial::Create(m, data.get(), config, keep_log, error);
   if (!trial) {
     TrialResult r;
-    r.outcome = "unstable";
+    r.outcome = Outcome::kUnstable;
     r.detail = *error;
     return r;
   }

@@ -17,6 +17,7 @@
 #include <mujoco/mujoco.h>
 
 #include "controller/pure/contour_law.h"
+#include "controller/pure/trial_goal.h"
 #include "controller/pure/trial_metrics.h"
 #include "controller/pure/trial_outcome.h"
 #include "runtime/control_dispatch.h"
@@ -28,24 +29,20 @@ namespace ssc {
 enum class TrialPhase { kApproach, kMoveToStart, kFollow, kDone };
 const char* PhaseName(TrialPhase phase);
 
-// What the trial follows: the landing and start points, how it succeeds, and the true contour
-// for the metrics. The default is the disk benchmark (35 mm disk at W = (0.65, 0), start 32 mm
-// east of its centre).
+// What the trial follows: the landing and start points, the goal that completes it, and the
+// true contour for the metrics. The default is the disk benchmark (35 mm disk at W, start 32 mm
+// east of its centre, one counter-clockwise loop).
 struct TrialTarget {
-  Point2 approach{0.65, 0.0};      // the cup descends here (world x/y, m)
-  Point2 start{0.682, 0.0};        // cup centre when following starts
-  Point2 sweep_centre{0.65, 0.0};  // closed contours: swept angle measured about this point
-  double success_sweep_deg = 355;  // > 0 counter-clockwise, < 0 clockwise (holes)
-  bool open_contour = false;       // open: success when arc position passes end_arc_m
-  double end_arc_m = 0;
-  double disk_radius_m = 0.035;    // > 0: r_mean / dr / sigma_r about sweep_centre
+  Point2 approach{kWorkspaceX, kWorkspaceY};         // the cup descends here (world x/y, m)
+  Point2 start{kWorkspaceX + 0.032, kWorkspaceY};    // cup centre when following starts
+  TrialGoal goal;                  // default: kLoopSweepDeg counter-clockwise about W
+  double disk_radius_m = 0.035;    // > 0: r_mean / dr / sigma_r about the goal's centre
   double surface_top_z_m = 0.010;  // the approach never takes the lip plane deeper than
                                    // max_compression_m below this
   double max_compression_m = 0.002;
-  std::function<double(double, double)> contour_distance_m;  // unset: the disk circle
-  // Open contours: arc position (m) of (x, y) near the previous tracked position s_prev (so the
-  // tracked position cannot jump to another part of the contour that passes close by).
-  std::function<double(double x, double y, double s_prev)> arc_position_m;
+  // The true contour: the contour distance, the tracked arc position, goal points. Unset: the
+  // disk circle gives the contour distance.
+  std::shared_ptr<const ContourPath> edge;
 
   // The disk benchmark with its start point `start_offset_m` east of the centre.
   static TrialTarget Disk(double centre_x_m, double centre_y_m, double radius_m,
@@ -84,15 +81,15 @@ struct TrialLogRow {
 };
 
 struct TrialResult {
-  std::string outcome = "running";  // success, failure_I, failure_II, timeout, unstable
+  Outcome outcome = Outcome::kRunning;  // OutcomeName() gives its text form
   std::string detail;               // why (e.g. the warning or the failing value)
   DiskTrialMetrics metrics;
   double follow_time_s = 0;         // duration of the follow phase, s
   double sim_time_s = 0;            // total simulated time, s
   double wall_time_s = 0;
   double hold_height_m = 0;         // tool site height held after the approach
-  double swept_deg = 0;
-  double end_arc_mm = 0;            // open contours: arc position reached (where it was lost)
+  double swept_deg = 0;             // swept-angle goals: signed swept angle at the end, deg
+  double end_arc_mm = 0;            // with an edge: arc position reached (where it was lost), mm
   int iterations = 0;
   std::vector<TrialLogRow> log;     // filled when requested
 };
@@ -125,7 +122,7 @@ class ContourTrial : public ControlCallback {
 
  private:
   ContourTrial(const mjModel* m, mjData* d, const TrialConfig& config, bool keep_log);
-  void Finish(const std::string& outcome, const std::string& detail);
+  void Finish(Outcome outcome, const std::string& detail);
   double FtNormalForce() const;
   void Log(bool iteration);
 
@@ -138,14 +135,13 @@ class ContourTrial : public ControlCallback {
   TrialPhase phase_ = TrialPhase::kApproach;
   bool active_ = false;  // the servo is bound; the callback may act
   bool transfer_done_ = false;  // over the landing point
-  double tracked_arc_m_ = 0;    // open contours: progress along the edge
   double ft_tare_n_ = 0;
   int tare_samples_ = 0;
   double hold_z_ = 0;
   double next_iteration_s_ = 0, next_log_s_ = 0, follow_start_s_ = 0;
   double next_log_time_s_ = 0;  // next row of the trial log (all phases)
   Vec3 start_point_{};
-  SweepTracker sweep_;
+  GoalTracker goal_;
   ContourStep last_step_{};
   std::array<double, 2> last_step_world_{};
   std::vector<Point2> path_xy_;

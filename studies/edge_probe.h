@@ -10,6 +10,7 @@
 
 #include "runtime/mujoco_model.h"
 #include "plugin/chamber_pressure_sensor.h"
+#include "geometry/dimensions.h"
 
 namespace ssc {
 
@@ -49,7 +50,7 @@ class EdgeProbe3d {
   int instance_ = -1;
   int mocap_id_ = -1;
   int sensor_adr_ = -1;
-  double tool_length_m_ = 0.146;
+  double tool_length_m_ = kToolCentreOffsetM;  // measured from the model at Create
 };
 
 }  // namespace ssc

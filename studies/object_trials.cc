@@ -15,27 +15,18 @@ TrialConfig ObjectTrialConfig(const ObjectSpec& spec, const ContourLawParams& la
   TrialTarget& t = c.target;
   t.approach = setup.landing_xy_m;
   t.start = setup.start_xy_m;
-  const bool closed = setup.success == SuccessRule::kSweptAngle;
-  t.sweep_centre = closed ? setup.sweep_centre_xy_m : setup.start_xy_m;
-  t.success_sweep_deg = closed ? setup.success_sweep_deg : kClosedSuccessSweepDeg;
-  t.open_contour = !closed;
-  t.end_arc_m = setup.end_arc_m;
+  t.goal = setup.goal;
+  const bool closed = setup.goal.kind == TrialGoal::Kind::kSweptAngle;
   // Radial metrics (r_mean, dr, sigma_r) only mean something round a disk.
   t.disk_radius_m = spec.kind == ObjectKind::kDisk ? 0.5e-3 * spec.param : 0.0;
   t.surface_top_z_m = setup.surface_top_z_m;
-  const ContourPath edge = spec.edge;
-  t.contour_distance_m = [edge](double x, double y) { return edge.Project(x, y).distance_m; };
-  // Tracked along the edge: within 10 mm of the previous position (s_prev < 0: anywhere).
-  t.arc_position_m = [edge](double x, double y, double s_prev) {
-    if (s_prev < 0) return edge.ArcPosition(x, y);
-    return edge.ProjectWithin(x, y, s_prev - 0.010, s_prev + 0.010).arc_m;
-  };
+  t.edge = std::make_shared<const ContourPath>(spec.edge);
   // Expected speed: the realised fraction of each step per control period.
   const double smoothing_s = std::max(1e-3, c.servo.smoothing_s);
   const double speed_m_s =
       law.step_mm * 1e-3 * (1 - std::exp(-c.control_period_s / smoothing_s)) / c.control_period_s;
   const double path_m =
-      closed ? spec.edge.Length() : std::max(0.01, setup.end_arc_m - setup.start_arc_m);
+      closed ? spec.edge.Length() : std::max(0.01, setup.goal.goal_arc_m - setup.start_arc_m);
   c.timeout_s = std::min(3600.0, 30.0 + 2.5 * path_m / speed_m_s);
   return c;
 }
@@ -52,19 +43,20 @@ ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,
   const double steps = row.result.sim_time_s / model->opt.timestep;
   row.step_cost_us = steps > 0 ? row.result.wall_time_s / steps * 1e6 : 0;
   if (spec.closed()) {
-    row.lost_at_mm = row.result.swept_deg;  // degrees for closed contours
+    row.end_swept_deg = row.result.swept_deg;
   } else {
-    row.lost_at_mm = row.result.end_arc_mm;
+    row.end_arc_mm = row.result.end_arc_mm;
     if (spec.kind == ObjectKind::kFillet) {
-      row.lost_fillet_radius_mm = FilletRadius(row.result.end_arc_mm * 1e-3) * 1e3;
+      row.end_fillet_radius_mm = FilletRadius(row.result.end_arc_mm * 1e-3) * 1e3;
     }
   }
   return row;
 }
 
 std::string ObjectTableHeader() {
-  return "object,kind,param,seed,outcome,contour_mean_mm,contour_max_mm,end_position,"
-         "end_fillet_radius_mm,s_mm,follow_s,speed_mm_s,iterations,step_cost_us,detail";
+  return "object,kind,param,seed,outcome,contour_mean_mm,contour_max_mm,end_arc_mm,"
+         "end_swept_deg,end_fillet_radius_mm,s_mm,follow_s,speed_mm_s,iterations,step_cost_us,"
+         "detail";
 }
 
 std::string ObjectTableRow(const ObjectTrialRow& r) {
@@ -73,11 +65,12 @@ std::string ObjectTableRow(const ObjectTrialRow& r) {
   for (char& ch : detail) {
     if (ch == ',' || ch == '"') ch = ';';
   }
-  std::snprintf(buf, sizeof(buf), "%s,%s,%g,%llu,%s,%.3f,%.3f,%.2f,%.2f,%.1f,%.1f,%.2f,%d,%.1f,%s",
+  std::snprintf(buf, sizeof(buf),
+                "%s,%s,%g,%llu,%s,%.3f,%.3f,%.2f,%.2f,%.2f,%.1f,%.1f,%.2f,%d,%.1f,%s",
                 r.object.c_str(), r.kind.c_str(), r.param,
-                static_cast<unsigned long long>(r.seed), r.result.outcome.c_str(),
-                r.result.metrics.contour_mean_mm, r.result.metrics.contour_max_mm, r.lost_at_mm,
-                r.lost_fillet_radius_mm, r.result.metrics.s_mm, r.result.follow_time_s,
+                static_cast<unsigned long long>(r.seed), OutcomeName(r.result.outcome),
+                r.result.metrics.contour_mean_mm, r.result.metrics.contour_max_mm, r.end_arc_mm,
+                r.end_swept_deg, r.end_fillet_radius_mm, r.result.metrics.s_mm, r.result.follow_time_s,
                 r.result.metrics.speed_mm_s, r.result.iterations, r.step_cost_us, detail.c_str());
   return buf;
 }

@@ -11,9 +11,9 @@
 
 namespace ssc {
 
-// Trial settings for an object from its ObjectTrialSetup (landing and start points, success
-// rule) and exact edge (metrics, tracked arc position), with a follow timeout from the edge
-// length at the expected speed.
+// Trial settings for an object from its ObjectTrialSetup (landing and start points, goal) and
+// exact edge (metrics, tracked arc position), with a follow timeout from the edge length at the
+// expected speed.
 TrialConfig ObjectTrialConfig(const ObjectSpec& spec, const ContourLawParams& law,
                               std::uint64_t seed);
 
@@ -22,8 +22,9 @@ struct ObjectTrialRow {
   double param = 0;
   std::uint64_t seed = 0;
   TrialResult result;
-  double lost_at_mm = -1;        // arc position (open) or swept angle in deg (closed) at the end
-  double lost_fillet_radius_mm = -1;  // fillet only: radius where tracking ended
+  double end_arc_mm = -1;        // open contours: tracked arc position at the end, mm
+  double end_swept_deg = 0;      // closed contours: swept angle at the end, deg (signed)
+  double end_fillet_radius_mm = -1;  // fillet only: radius where tracking ended, mm
   double step_cost_us = 0;            // wall time per physics step of this trial
 };
 

@@ -146,7 +146,7 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
       result = RunTrial(m, jobs[i].config, false, &trial_error);
     } catch (const std::exception& e) {
       result = TrialResult();
-      result.outcome = "unstable";
+      result.outcome = Outcome::kUnstable;
       result.detail = std::string("MuJoCo error: ") + e.what();
     }
     t_in_trial = false;

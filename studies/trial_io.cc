@@ -85,7 +85,7 @@ bool WriteTrialSummaryJson(const std::string& path, const std::string& scene,
     << ", \"start_y_mm\": " << Num(c.target.start[1] * 1e3)
     << ", \"timeout_s\": " << Num(c.timeout_s) << "},\n"
     << "  \"seed\": " << c.seed << ",\n"
-    << "  \"outcome\": \"" << r.outcome << "\",\n"
+    << "  \"outcome\": \"" << OutcomeName(r.outcome) << "\",\n"
     << "  \"detail\": \"" << JsonEscape(r.detail) << "\",\n"
     << "  \"metrics\": {\"s_mm\": " << Num(m.s_mm) << ", \"r_mean_mm\": " << Num(m.r_mean_mm)
     << ", \"dr_mm\": " << Num(m.dr_mm) << ", \"sigma_r_mm\": " << Num(m.sigma_r_mm)
@@ -117,7 +117,7 @@ std::string SweepCsvRow(const std::string& scene, const TrialConfig& c, int repe
   const DiskTrialMetrics& m = r.metrics;
   std::ostringstream os;
   os << scene << ',' << Num(c.law.p_ref_pa) << ',' << Num(c.law.beta) << ','
-     << Num(c.law.step_mm) << ',' << repeat << ',' << c.seed << ',' << r.outcome << ','
+     << Num(c.law.step_mm) << ',' << repeat << ',' << c.seed << ',' << OutcomeName(r.outcome) << ','
      << Num(m.s_mm) << ',' << Num(m.r_mean_mm) << ',' << Num(m.dr_mm) << ','
      << Num(m.sigma_r_mm) << ',' << Num(m.s_c) << ',' << Num(m.duration_s) << ','
      << Num(m.speed_mm_s) << ',' << Num(m.speed_body_d_s) << ',' << Num(m.contour_mean_mm)

@@ -8,6 +8,7 @@
 
 #include "compare/log_replay.h"
 #include "runtime/mujoco_model.h"
+#include "geometry/dimensions.h"
 
 namespace ssc {
 namespace {
@@ -33,7 +34,7 @@ const Fixture& Shared() {
 
 ReplayComparison Replay(double scale, double offset_pa) {
   const Fixture& f = Shared();
-  const RobotLog robot = RobotLogFromTrial(f.trial, 0.146, scale, offset_pa);
+  const RobotLog robot = RobotLogFromTrial(f.trial, kToolCentreOffsetM, scale, offset_pa);
   ProcessOptions o;
   o.moving_average = 1;  // the twin's log already carries the host-filtered values
   ProcessedLog log;
@@ -41,12 +42,12 @@ ReplayComparison Replay(double scale, double offset_pa) {
   EXPECT_TRUE(ProcessRobotLog(robot, o, &log, &e)) << e.ToString();
   ReplayComparison c;
   std::string error;
-  EXPECT_TRUE(ReplayLog(f.replay.get(), log, 0.146, &c, &error)) << error;
+  EXPECT_TRUE(ReplayLog(f.replay.get(), log, kToolCentreOffsetM, &c, &error)) << error;
   return c;
 }
 
 TEST(CompareTest, ReplayOfAnUnchangedRunAgrees) {
-  ASSERT_EQ(Shared().trial.outcome, "success");
+  ASSERT_EQ(Shared().trial.outcome, Outcome::kSuccess);
   const ReplayComparison c = Replay(1.0, 0.0);
   for (int k = 0; k < 4; ++k) {
     EXPECT_GT(c.correlation[k], 0.95) << k;
@@ -86,10 +87,10 @@ TEST(CompareTest, ReplayExposesARobotWithAStrongerPump) {
   o.moving_average = 1;
   ProcessedLog log;
   LoadError e;
-  ASSERT_TRUE(ProcessRobotLog(RobotLogFromTrial(robot_run, 0.146, 1.0, 0.0, 101325.0, 8.0, 5), o,
+  ASSERT_TRUE(ProcessRobotLog(RobotLogFromTrial(robot_run, kToolCentreOffsetM, 1.0, 0.0, 101325.0, 8.0, 5), o,
                               &log, &e)) << e.ToString();
   ReplayComparison cmp;
-  ASSERT_TRUE(ReplayLog(Shared().replay.get(), log, 0.146, &cmp, &error)) << error;
+  ASSERT_TRUE(ReplayLog(Shared().replay.get(), log, kToolCentreOffsetM, &cmp, &error)) << error;
   for (int k = 0; k < 4; ++k) EXPECT_LT(cmp.mean_ratio[k], 0.92) << k;  // unchanged: 1 +- 0.05
   EXPECT_LT(cmp.pbar_bias_pa, -20.0);
   EXPECT_LT(cmp.direction_median_deg, 10.0);
@@ -97,7 +98,7 @@ TEST(CompareTest, ReplayExposesARobotWithAStrongerPump) {
 
 TEST(CompareTest, ClosedLoopFromTheLogsStartMatchesTheSameController) {
   const Fixture& f = Shared();
-  const RobotLog robot = RobotLogFromTrial(f.trial, 0.146, 1.0, 0.0);
+  const RobotLog robot = RobotLogFromTrial(f.trial, kToolCentreOffsetM, 1.0, 0.0);
   ProcessOptions o;
   o.moving_average = 1;
   ProcessedLog log;

@@ -202,13 +202,13 @@ TEST(ObjectRegistryTest, PublishedSetWithStartsOnTheEdge) {
       EXPECT_NEAR(spec.ArcPosition(t.start_xy_m[0], t.start_xy_m[1]), t.start_arc_m, 1e-7);
     }
     if (spec.closed()) {
-      EXPECT_EQ(t.success, SuccessRule::kSweptAngle);
+      EXPECT_EQ(t.goal.kind, TrialGoal::Kind::kSweptAngle);
       // Counter-clockwise round disks and the volute, clockwise round holes.
-      EXPECT_EQ(t.success_sweep_deg, spec.kind == ObjectKind::kHole ? -355.0 : 355.0);
+      EXPECT_EQ(t.goal.sweep_deg, spec.kind == ObjectKind::kHole ? -355.0 : 355.0);
     } else {
-      EXPECT_EQ(t.success, SuccessRule::kArcPosition);
-      EXPECT_GT(t.end_arc_m, t.start_arc_m + 0.05);
-      EXPECT_LE(t.end_arc_m, spec.edge.Length());
+      EXPECT_EQ(t.goal.kind, TrialGoal::Kind::kGoalPoint);
+      EXPECT_GT(t.goal.goal_arc_m, t.start_arc_m + 0.05);
+      EXPECT_LE(t.goal.goal_arc_m, spec.edge.Length());
     }
   }
   // The benchmark disk: land on the centre, start 32 mm east of it (as published); elsewhere the
@@ -560,22 +560,23 @@ TEST(ObjectStepCostTest, MeasuresTheProbeScenes) {
 
 // Trials through ObjectTrialConfig with the published primitive controller (P_ref 100 Pa,
 // beta 2, dL 0.5 mm) on the gantry scenes: the set-up data drives a real trial to its end.
-void ExpectOutcome(const char* name, const char* expected, double end_arc_m = -1) {
+void ExpectOutcome(const char* name, Outcome expected, double goal_arc_m = -1) {
   ObjectSpec spec = ObjectByName(name);
-  if (end_arc_m > 0) spec.trial.end_arc_m = end_arc_m;
+  if (goal_arc_m > 0) spec.trial.goal.goal_arc_m = goal_arc_m;
   const Loaded l = Load((SceneDir() / ObjectFileNames(name).gantry_scene).string());
   ASSERT_TRUE(l.m);
   ContourLawParams law;
   law.step_mm = 0.5;
   const ObjectTrialRow row = RunObjectTrial(l.m.get(), spec, law, 1, false);
-  EXPECT_EQ(row.result.outcome, expected) << name << ": " << row.result.detail;
+  EXPECT_EQ(row.result.outcome, expected)
+      << name << ": " << OutcomeName(row.result.outcome) << ", " << row.result.detail;
   EXPECT_LT(row.result.metrics.contour_mean_mm, 5.0) << name;
 }
 
-TEST(ObjectTrialsTest, LargeDisk) { ExpectOutcome("disk_r35", "success"); }
-TEST(ObjectTrialsTest, Hole) { ExpectOutcome("hole_d10", "success"); }
-TEST(ObjectTrialsTest, ConcaveCorner) { ExpectOutcome("corner_a270", "success"); }
-TEST(ObjectTrialsTest, FilletSharpEnd) { ExpectOutcome("fillet", "success", 0.040); }
+TEST(ObjectTrialsTest, LargeDisk) { ExpectOutcome("disk_r35", Outcome::kSuccess); }
+TEST(ObjectTrialsTest, Hole) { ExpectOutcome("hole_d10", Outcome::kSuccess); }
+TEST(ObjectTrialsTest, ConcaveCorner) { ExpectOutcome("corner_a270", Outcome::kSuccess); }
+TEST(ObjectTrialsTest, FilletSharpEnd) { ExpectOutcome("fillet", Outcome::kSuccess, 0.040); }
 
 }  // namespace
 }  // namespace ssc

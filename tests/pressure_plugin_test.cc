@@ -12,6 +12,7 @@
 
 #include "studies/edge_probe.h"
 #include "runtime/mujoco_model.h"
+#include "geometry/dimensions.h"
 
 namespace ssc {
 namespace {
@@ -135,11 +136,11 @@ TEST(PressurePluginTest, DeterministicAcrossResetAndCopy) {
   AtOffset(*probe, 2.0e-3);  // place the cup; then reset the dynamic state but keep the mocap
   mj_resetData(m, d);
   d->mocap_pos[0] = -2.0e-3;
-  d->mocap_pos[2] = kSurfaceZ - kCompression + 0.146;
+  d->mocap_pos[2] = kSurfaceZ - kCompression + kToolCentreOffsetM;
   const auto first = StepAndRecord(m, d, 300);
   mj_resetData(m, d);
   d->mocap_pos[0] = -2.0e-3;
-  d->mocap_pos[2] = kSurfaceZ - kCompression + 0.146;
+  d->mocap_pos[2] = kSurfaceZ - kCompression + kToolCentreOffsetM;
   const auto second = StepAndRecord(m, d, 150);
   mjData* copy = mj_copyData(nullptr, m, d);
   const auto tail_original = StepAndRecord(m, d, 150);

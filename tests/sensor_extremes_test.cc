@@ -11,6 +11,7 @@
 
 #include "runtime/mujoco_model.h"
 #include "plugin/chamber_pressure_sensor.h"
+#include "geometry/dimensions.h"
 
 namespace ssc {
 namespace {
@@ -54,7 +55,7 @@ SweepRecord Sweep(const std::function<std::array<double, 3>(double)>& path, doub
     const auto p = path(static_cast<double>(i) / steps);
     d->mocap_pos[0] = p[0];
     d->mocap_pos[1] = p[1];
-    d->mocap_pos[2] = p[2] + 0.146;  // tool0 is 146 mm above the lip plane
+    d->mocap_pos[2] = p[2] + kToolCentreOffsetM;  // tool0 is above the lip plane
     mj_step(m.get(), d.get());
     const ChamberPressureSample& s = sensor->last_sample();
     if (s.time_s != last_sample) {

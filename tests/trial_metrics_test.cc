@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "controller/pure/trial_goal.h"
 #include "controller/pure/trial_outcome.h"
 
 namespace ssc {
@@ -80,20 +81,75 @@ TEST(SweepTrackerTest, CountsCounterClockwisePositiveAndUnwraps) {
 
 TEST(TrialOutcomeTest, ClassifiesEachEnd) {
   TrialThresholds t;
-  auto cls = [&](std::array<double, 4> p, double force, double swept, double elapsed) {
-    return ClassifySample(t, p, force, swept, elapsed, 100).outcome;
+  auto cls = [&](std::array<double, 4> p, double force, bool reached, double elapsed) {
+    return ClassifySample(t, p, force, reached, elapsed, 100).outcome;
   };
-  EXPECT_EQ(cls({100, 0, 0, 100}, 1.5, 100, 10), Outcome::kRunning);
-  EXPECT_EQ(cls({100, 0, 0, 100}, 1.5, 355, 10), Outcome::kSuccess);
-  EXPECT_EQ(cls({1, 2, 3, 4}, 1.5, 100, 10), Outcome::kFailureOffEdge);       // mean 2.5 < 5
-  EXPECT_EQ(cls({5, 5, 5, 5}, 1.5, 100, 10), Outcome::kRunning);              // mean 5: not below
-  EXPECT_EQ(cls({20000, 20000, 20000, 20000}, 1.5, 100, 10), Outcome::kFailureGrasp);
-  EXPECT_EQ(cls({20000, 20000, 20000, 9000}, 1.5, 100, 10), Outcome::kRunning);  // not all
-  EXPECT_EQ(cls({100, 0, 0, 100}, 101, 100, 10), Outcome::kUnstable);
-  EXPECT_EQ(cls({NAN, 0, 0, 100}, 1.5, 100, 10), Outcome::kUnstable);
-  EXPECT_EQ(cls({100, 0, 0, 100}, 1.5, 100, 101), Outcome::kTimeout);
+  EXPECT_EQ(cls({100, 0, 0, 100}, 1.5, false, 10), Outcome::kRunning);
+  EXPECT_EQ(cls({100, 0, 0, 100}, 1.5, true, 10), Outcome::kSuccess);
+  EXPECT_EQ(cls({1, 2, 3, 4}, 1.5, false, 10), Outcome::kFailureOffEdge);       // mean 2.5 < 5
+  EXPECT_EQ(cls({5, 5, 5, 5}, 1.5, false, 10), Outcome::kRunning);              // mean 5: not below
+  EXPECT_EQ(cls({20000, 20000, 20000, 20000}, 1.5, false, 10), Outcome::kFailureGrasp);
+  EXPECT_EQ(cls({20000, 20000, 20000, 9000}, 1.5, false, 10), Outcome::kRunning);  // not all
+  EXPECT_EQ(cls({100, 0, 0, 100}, 101, true, 10), Outcome::kUnstable);  // before success
+  EXPECT_EQ(cls({NAN, 0, 0, 100}, 1.5, false, 10), Outcome::kUnstable);
+  EXPECT_EQ(cls({100, 0, 0, 100}, 1.5, false, 101), Outcome::kTimeout);
   EXPECT_STREQ(OutcomeName(Outcome::kFailureOffEdge), "failure_I");
   EXPECT_STREQ(OutcomeName(Outcome::kFailureGrasp), "failure_II");
+}
+
+// A circle of radius r about c, walked from angle a0 over `sweep` rad in n steps.
+std::vector<Point2> Arc(const Point2& c, double r, double a0, double sweep, int n) {
+  std::vector<Point2> p;
+  for (int i = 0; i <= n; ++i) {
+    const double a = a0 + sweep * i / n;
+    p.push_back({c[0] + r * std::cos(a), c[1] + r * std::sin(a)});
+  }
+  return p;
+}
+
+TEST(TrialGoalTest, SweptAngleIsReachedOnlyInItsSense) {
+  const Point2 c{0.65, 0};
+  const auto loop = Arc(c, 0.033, 0, 2 * M_PI * 356 / 360, 712);
+  GoalTracker ccw;
+  ccw.Start(TrialGoal::SweptAngle(c, kLoopSweepDeg), nullptr, loop[0]);
+  GoalTracker cw;  // a hole's goal: clockwise
+  cw.Start(TrialGoal::SweptAngle(c, -kLoopSweepDeg), nullptr, loop[0]);
+  for (size_t i = 1; i < loop.size(); ++i) {
+    EXPECT_FALSE(ccw.reached() && i < 700) << i;
+    ccw.Add(loop[i]);
+    cw.Add(loop[i]);
+  }
+  EXPECT_TRUE(ccw.reached());
+  EXPECT_FALSE(cw.reached());
+  EXPECT_EQ(ccw.ReachedDetail(), "swept 356 deg");
+}
+
+TEST(TrialGoalTest, GoalPointFollowsTheEdgeAndIgnoresNearbyParts) {
+  // A hairpin: out along y = 0 to x = 0.1, back along y = 0.004. The cup walks the first leg
+  // only; the second leg passes 4 mm away, and a goal on it must not be reached by jumping.
+  auto edge = std::make_shared<ContourPath>(
+      ContourPath::Polygon({{0, 0}, {0.1, 0}, {0.1, 0.004}, {0, 0.004}}, false));
+  GoalTracker goal_on_first_leg, goal_on_second_leg;
+  goal_on_first_leg.Start(TrialGoal::GoalPoint(0.08), edge, {0.001, 0.0015});
+  goal_on_second_leg.Start(TrialGoal::GoalPoint(0.1 + 0.004 + 0.06), edge, {0.001, 0.0015});
+  for (int i = 1; i <= 90; ++i) {
+    const Point2 p{0.001 * i, 0.0021};  // nearer the second leg than the first
+    goal_on_first_leg.Add(p);
+    goal_on_second_leg.Add(p);
+  }
+  EXPECT_NEAR(goal_on_first_leg.arc_m(), 0.090, 1e-9);
+  EXPECT_TRUE(goal_on_first_leg.reached());
+  EXPECT_FALSE(goal_on_second_leg.reached());
+  // Without an edge nothing is reached.
+  GoalTracker blind;
+  blind.Start(TrialGoal::GoalPoint(0.0), nullptr, {0, 0});
+  EXPECT_FALSE(blind.reached());
+}
+
+TEST(TrialGoalTest, ValidateNamesTheField) {
+  EXPECT_EQ(TrialGoal::SweptAngle({0, 0}, 355).Validate(), "");
+  EXPECT_NE(TrialGoal::SweptAngle({0, 0}, 0.5).Validate().find("sweep_deg"), std::string::npos);
+  EXPECT_NE(TrialGoal::GoalPoint(-1).Validate().find("goal_arc_m"), std::string::npos);
 }
 
 }  // namespace

@@ -44,7 +44,7 @@ TrialResult Trial(double pref, double beta, double step, std::uint64_t seed = 1,
 
 TEST(TrialTest, PilotControllerCompletesTheDisk) {
   const TrialResult r = Trial(70, 1.0, 2.5);
-  EXPECT_EQ(r.outcome, "success") << r.detail;
+  EXPECT_EQ(r.outcome, Outcome::kSuccess) << r.detail;
   EXPECT_GT(r.swept_deg, 355);  // positive: counter-clockwise seen from above
 }
 
@@ -53,7 +53,7 @@ TEST(TrialTest, BestControllerCompletesTheDiskAtAllThreeSteps) {
   const double steps[3] = {2.5, 5.0, 7.5};
   for (int i = 0; i < 3; ++i) {
     const TrialResult r = Trial(100, 2.0, steps[i]);
-    EXPECT_EQ(r.outcome, "success") << "dL " << steps[i] << ": " << r.detail;
+    EXPECT_EQ(r.outcome, Outcome::kSuccess) << "dL " << steps[i] << ": " << r.detail;
     EXPECT_GT(r.swept_deg, 0) << "travel must be counter-clockwise";
     // About 1, 2, 3 cm/s on the robot.
     EXPECT_NEAR(r.metrics.speed_mm_s, published_speed_mm_s[i], 0.2 * published_speed_mm_s[i]);
@@ -64,7 +64,7 @@ TEST(TrialTest, BestControllerCompletesTheDiskAtAllThreeSteps) {
 
 TEST(TrialTest, WithoutCorrectionTheCupDriftsOffTheEdge) {
   const TrialResult r = Trial(100, 0.0, 2.5);
-  EXPECT_EQ(r.outcome, "failure_I") << r.detail;
+  EXPECT_EQ(r.outcome, Outcome::kFailureOffEdge) << r.detail;
 }
 
 TEST(TrialTest, ObjectOnTheRightTravelsClockwise) {
@@ -72,21 +72,21 @@ TEST(TrialTest, ObjectOnTheRightTravelsClockwise) {
   c.law.side = FollowSide::kObjectOnRight;
   c.timeout_s = 3;
   const TrialResult r = Trial(100, 2.0, 5.0, 1, c);
-  EXPECT_LT(r.swept_deg, -20) << r.outcome << " " << r.detail;
+  EXPECT_LT(r.swept_deg, -20) << OutcomeName(r.outcome) << " " << r.detail;
 }
 
 TEST(TrialTest, StartingOffTheObjectIsFailureOne) {
   TrialConfig c;
   c.target.start = {0.65 + 0.050, 0.0};  // 15 mm beyond the edge: nothing under the cup
   const TrialResult r = Trial(100, 2.0, 2.5, 1, c);
-  EXPECT_EQ(r.outcome, "failure_I") << r.detail;
+  EXPECT_EQ(r.outcome, Outcome::kFailureOffEdge) << r.detail;
 }
 
 TEST(TrialTest, PushedOntoTheSurfaceIsFailureTwo) {
   TrialConfig c;
   c.target.start = {0.65, 0.0};  // stay on the disk centre: the cup seals
   const TrialResult r = Trial(100, 2.0, 2.5, 1, c);
-  EXPECT_EQ(r.outcome, "failure_II") << r.detail;
+  EXPECT_EQ(r.outcome, Outcome::kFailureGrasp) << r.detail;
 }
 
 TEST(TrialTest, SameSeedSameTrajectory) {
@@ -195,7 +195,7 @@ TEST(TrialEndsTest, TimeoutWhenTheFollowPhaseRunsOutOfTime) {
   TrialConfig c;
   c.timeout_s = 1.0;
   const TrialResult r = Trial(100, 2.0, 2.5, 1, c);
-  EXPECT_EQ(r.outcome, "timeout") << r.detail;
+  EXPECT_EQ(r.outcome, Outcome::kTimeout) << r.detail;
 }
 
 TEST(TrialEndsTest, DivergingSimulationIsUnstableNotAControllerResult) {
@@ -205,7 +205,7 @@ TEST(TrialEndsTest, DivergingSimulationIsUnstableNotAControllerResult) {
   m->opt.integrator = mjINT_EULER;
   std::string error;
   const TrialResult r = RunTrial(m, TrialConfig{}, false, &error);
-  EXPECT_EQ(r.outcome, "unstable") << r.detail;
+  EXPECT_EQ(r.outcome, Outcome::kUnstable) << r.detail;
   mj_deleteModel(m);
 }
 

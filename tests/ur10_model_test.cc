@@ -6,6 +6,7 @@
 
 #include "runtime/mujoco_model.h"
 #include "runtime/trial.h"
+#include "geometry/dimensions.h"
 
 namespace ssc {
 namespace {
@@ -89,6 +90,27 @@ TEST(Ur10ModelTest, ServosHoldTheToolWellUnderATenthOfAMillimetre) {
   EXPECT_LT(worst, 0.05e-3) << "tool drift " << worst * 1e3 << " mm";
 }
 
+TEST(Ur10ModelTest, ToolCentreLiesTheStatedOffsetFromTheFlange) {
+  // Robot logs give tool0; the twin's tool centre is kToolCentreOffsetM from it, along the tool
+  // axis. The model (models/ssc_tool.xml attached at the flange) must agree with the constant.
+  ModelPtr m = Load("/scenes/disk_benchmark.xml");
+  ASSERT_TRUE(m);
+  std::string error;
+  DataPtr d = MakeData(m.get(), &error);
+  mj_resetDataKeyframe(m.get(), d.get(), 0);
+  mj_forward(m.get(), d.get());
+  const int tool0 = mj_name2id(m.get(), mjOBJ_SITE, "tool0");
+  const int tcp = mj_name2id(m.get(), mjOBJ_SITE, "ssc_tool_site");
+  ASSERT_GE(tool0, 0);
+  ASSERT_GE(tcp, 0);
+  const double* a = d->site_xpos + 3 * tool0;
+  const double* b = d->site_xpos + 3 * tcp;
+  const double* z = d->site_xmat + 9 * tool0;  // tool0's z axis: column 2
+  const double v[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  EXPECT_NEAR(std::hypot(v[0], v[1], v[2]), kToolCentreOffsetM, 1e-9);
+  EXPECT_NEAR(v[0] * z[2] + v[1] * z[5] + v[2] * z[8], kToolCentreOffsetM, 1e-9);
+}
+
 TEST(Ur10ModelTest, ArmAndGantryScenesAgreeOnATrial) {
   // The light gantry scene stands in for the arm in sweeps: the same trial on both must agree
   // well inside the published trial-to-trial spread (sigma_r 1.4-1.9 mm).
@@ -100,8 +122,8 @@ TEST(Ur10ModelTest, ArmAndGantryScenesAgreeOnATrial) {
   std::string error;
   const TrialResult a = RunTrial(arm.get(), c, false, &error);
   const TrialResult g = RunTrial(gantry.get(), c, false, &error);
-  ASSERT_EQ(a.outcome, "success") << a.detail;
-  ASSERT_EQ(g.outcome, "success") << g.detail;
+  ASSERT_EQ(a.outcome, Outcome::kSuccess) << a.detail;
+  ASSERT_EQ(g.outcome, Outcome::kSuccess) << g.detail;
   EXPECT_NEAR(a.metrics.r_mean_mm, g.metrics.r_mean_mm, 0.3);
   EXPECT_NEAR(a.metrics.sigma_r_mm, g.metrics.sigma_r_mm, 0.3);
   EXPECT_NEAR(a.metrics.speed_mm_s, g.metrics.speed_mm_s, 1.0);

@@ -143,7 +143,7 @@ std::string TrialStatusText(const ContourTrial& trial, double rtf, bool paused, 
                 "speed x%.2f %s   real-time factor %.2f   (F1: help)",
                 c.law.p_ref_pa, c.law.beta, c.law.step_mm,
                 static_cast<unsigned long long>(c.seed), PhaseName(trial.phase()),
-                r.outcome.c_str(), s.p_mean_pa, s.dpx_pa, s.dpy_pa, s.cf, r.iterations,
+                OutcomeName(r.outcome), s.p_mean_pa, s.dpx_pa, s.dpy_pa, s.cf, r.iterations,
                 trial.phase() == TrialPhase::kDone ? r.swept_deg : 0.0, trial.path().size(),
                 sealed, speed, paused ? "PAUSED" : "", rtf);
   return buf;

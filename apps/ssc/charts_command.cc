@@ -22,6 +22,7 @@
 #include "runtime/mujoco_model.h"
 #include "studies/sweep.h"
 #include "studies/tool_variants.h"
+#include "geometry/dimensions.h"
 
 namespace ssc {
 namespace {
@@ -79,7 +80,7 @@ int RunChartsCommand(int argc, char** argv) {
   LoadError load_error;
   ProcessOptions po;
   po.moving_average = 1;
-  if (!ProcessRobotLog(RobotLogFromTrial(trial, 0.146, 1, 0), po, &path, &load_error)) {
+  if (!ProcessRobotLog(RobotLogFromTrial(trial, kToolCentreOffsetM, 1, 0), po, &path, &load_error)) {
     std::fprintf(stderr, "ssc charts: %s\n", load_error.ToString().c_str());
     return 1;
   }
@@ -140,7 +141,7 @@ int RunChartsCommand(int argc, char** argv) {
     m->opt.integrator = s.integrator;
     ReplayComparison r;
     const auto t0 = std::chrono::steady_clock::now();
-    if (!ReplayLog(m.get(), path, 0.146, &r, &error)) {
+    if (!ReplayLog(m.get(), path, kToolCentreOffsetM, &r, &error)) {
       std::fprintf(stderr, "ssc charts: %s\n", error.c_str());
       return 1;
     }

@@ -83,7 +83,7 @@ int RunObjectsCommand(int argc, char** argv) {
   for (const ObjectSpec& s : specs) {
     std::ofstream c(std::filesystem::path(paths_dir) / (s.name + "_contour.csv"));
     c << "x_m,y_m,closed\n";
-    for (const Point2& q : s.contour.points) c << q[0] << ',' << q[1] << ',' << s.closed() << '\n';
+    for (const Point2& q : s.outline) c << q[0] << ',' << q[1] << ',' << s.closed() << '\n';
   }
   if (write_only) return 0;
 
@@ -110,7 +110,7 @@ int RunObjectsCommand(int argc, char** argv) {
         rows[j].object = spec.name;
         rows[j].kind = ObjectKindName(spec.kind);
         rows[j].seed = jobs[j].seed;
-        rows[j].result.outcome = "unstable";
+        rows[j].result.outcome = Outcome::kUnstable;
         rows[j].result.detail = load_error;
       } else {
         rows[j] = RunObjectTrial(model.get(), spec, law, jobs[j].seed, true);
@@ -125,8 +125,9 @@ int RunObjectsCommand(int argc, char** argv) {
       }
       std::lock_guard<std::mutex> lock(print_mutex);
       std::printf("  %-18s seed %-3llu %-11s end %.1f (%s) %.1f s wall\n", spec.name.c_str(),
-                  static_cast<unsigned long long>(jobs[j].seed), rows[j].result.outcome.c_str(),
-                  rows[j].lost_at_mm, spec.closed() ? "deg swept" : "mm along the edge",
+                  static_cast<unsigned long long>(jobs[j].seed), OutcomeName(rows[j].result.outcome),
+                  spec.closed() ? rows[j].end_swept_deg : rows[j].end_arc_mm,
+                  spec.closed() ? "deg swept" : "mm along the edge",
                   rows[j].result.wall_time_s);
       std::fflush(stdout);
     }
@@ -146,8 +147,8 @@ int RunObjectsCommand(int argc, char** argv) {
     if (r.kind == "fillet" && !r.result.log.empty()) {
       std::ofstream(out / "fillet_profile.csv") << FilletProfileCsv(r);
       std::printf("fillet (seed %llu): %s at %.1f mm along the edge, fillet radius %.2f mm; "
-                  "wrote %s\n", static_cast<unsigned long long>(r.seed), r.result.outcome.c_str(),
-                  r.lost_at_mm, r.lost_fillet_radius_mm, (out / "fillet_profile.csv").c_str());
+                  "wrote %s\n", static_cast<unsigned long long>(r.seed), OutcomeName(r.result.outcome),
+                  r.end_arc_mm, r.end_fillet_radius_mm, (out / "fillet_profile.csv").c_str());
       break;
     }
   }

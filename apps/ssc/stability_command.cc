@@ -49,7 +49,7 @@ int RunStabilityCommand(int argc, char** argv) {
     return r;
   };
   const TrialResult ref = run(mjINT_RK4, 0.0005);
-  std::printf("reference (RK4, 0.5 ms): %s, r_mean %.2f mm, s %.1f mm\n", ref.outcome.c_str(),
+  std::printf("reference (RK4, 0.5 ms): %s, r_mean %.2f mm, s %.1f mm\n", OutcomeName(ref.outcome),
               ref.metrics.r_mean_mm, ref.metrics.s_mm);
   const std::filesystem::path out = out_dir;
   std::ofstream csv(out / "stability.csv");
@@ -71,15 +71,15 @@ int RunStabilityCommand(int argc, char** argv) {
     double largest_ok = 0;
     for (double ms : steps_ms) {
       const TrialResult r = run(in.id, ms * 1e-3);
-      const bool stable = r.outcome != "unstable";
+      const bool stable = r.outcome != Outcome::kUnstable;
       const bool unchanged = stable && r.outcome == ref.outcome &&
                              std::fabs(r.metrics.r_mean_mm - ref.metrics.r_mean_mm) <= dr_tol &&
                              std::fabs(r.metrics.s_mm - ref.metrics.s_mm) <= s_tol * ref.metrics.s_mm;
       if (unchanged) largest_ok = std::max(largest_ok, ms);
-      std::printf("%-13s %8.2f %-11s %9.2f %8.1f %7.2f  %-6s %s\n", in.name, ms, r.outcome.c_str(),
+      std::printf("%-13s %8.2f %-11s %9.2f %8.1f %7.2f  %-6s %s\n", in.name, ms, OutcomeName(r.outcome),
                   r.metrics.r_mean_mm, r.metrics.s_mm, r.wall_time_s, stable ? "yes" : "NO",
                   unchanged ? "yes" : "no");
-      csv << in.name << ',' << ms << ',' << r.outcome << ',' << r.metrics.r_mean_mm << ','
+      csv << in.name << ',' << ms << ',' << OutcomeName(r.outcome) << ',' << r.metrics.r_mean_mm << ','
           << r.metrics.s_mm << ',' << r.wall_time_s << ',' << stable << ',' << unchanged << '\n';
     }
     std::printf("%s: largest time step with unchanged results: %.2f ms\n", in.name, largest_ok);

@@ -9,6 +9,7 @@
 #include "runtime/mujoco_model.h"
 #include "compare/log_replay.h"
 #include "studies/trial_io.h"
+#include "geometry/dimensions.h"
 
 namespace ssc {
 
@@ -62,7 +63,7 @@ int RunTrialCommand(int argc, char** argv) {
   std::printf("scene %s, P_ref %.0f Pa, beta %.2f, dL %.2f mm, seed %llu\n", scene_name.c_str(),
               config.law.p_ref_pa, config.law.beta, config.law.step_mm,
               static_cast<unsigned long long>(config.seed));
-  std::printf("outcome: %s (%s)\n", r.outcome.c_str(), r.detail.c_str());
+  std::printf("outcome: %s (%s)\n", OutcomeName(r.outcome), r.detail.c_str());
   std::printf("path s = %.1f mm, s_c = %.1f %%, r_mean = %.2f mm, dr = %.2f mm, sigma_r = %.2f mm\n",
               m.s_mm, m.s_c * 100, m.r_mean_mm, m.dr_mm, m.sigma_r_mm);
   std::printf("contour distance mean %.2f mm, max %.2f mm; swept %.0f deg in %d iterations\n",
@@ -79,7 +80,7 @@ int RunTrialCommand(int argc, char** argv) {
   }
   std::printf("wrote %s and %s\n", (out / "trial.csv").c_str(), (out / "summary.json").c_str());
   if (!robot_log_dir.empty()) {
-    const RobotLog log = RobotLogFromTrial(r, 0.146, 1.0, 0.0);
+    const RobotLog log = RobotLogFromTrial(r, kToolCentreOffsetM, 1.0, 0.0);
     const std::string& dir = robot_log_dir;
     if (!WriteRobotLogDir(dir, log, &error) ||
         !WriteRobotLogMat((std::filesystem::path(dir) / "log.mat").string(), log, &error)) {
@@ -94,7 +95,7 @@ int RunTrialCommand(int argc, char** argv) {
       std::printf("wrote %s\n", png.c_str());
     }
   }
-  return r.outcome == "unstable" ? 3 : 0;
+  return r.outcome == Outcome::kUnstable ? 3 : 0;
 }
 
 }  // namespace ssc

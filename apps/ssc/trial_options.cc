@@ -12,7 +12,7 @@ void AddLawOptions(cli::Command* cmd, ContourLawParams* law) {
 }
 
 void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* c, TrialSettings* s) {
-  s->sweep_deg = c->target.success_sweep_deg;
+  s->sweep_deg = c->target.goal.sweep_deg;
   cmd->Number("period", &c->control_period_s, "control iteration period", "s",
               NumberRange::Closed(0.002, 10));
   cmd->Number("smoothing", &c->servo.smoothing_s, "servo look-ahead smoothing time constant", "s",
@@ -40,8 +40,8 @@ void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* c, TrialSettings* s)
   cmd->Flag("no-dead-band", &s->no_dead_band,
             "take a step even when both differentials are below P_n");
   cmd->Check([c, s]() {
-    c->target = TrialTarget::Disk(0.65, 0.0, 0.035, s->start_offset_mm * 1e-3);
-    c->target.success_sweep_deg = s->sweep_deg;
+    c->target = TrialTarget::Disk(kWorkspaceX, kWorkspaceY, 0.035, s->start_offset_mm * 1e-3);
+    c->target.goal.sweep_deg = s->sweep_deg;
     c->law.side = s->object_on == "right" ? FollowSide::kObjectOnRight : FollowSide::kObjectOnLeft;
     c->law.dead_band = !s->no_dead_band;
     return c->Validate();

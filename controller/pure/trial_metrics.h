@@ -8,11 +8,10 @@
 #include <functional>
 #include <vector>
 
+#include "geometry/dimensions.h"
 #include "geometry/point2.h"
 
 namespace ssc {
-
-inline constexpr double kCupBodyDiameterMm = 23.0;
 
 struct DiskTrialMetrics {
   double s_mm = 0;              // path length

@@ -38,7 +38,7 @@ void SweepTracker::Add(double x, double y) {
 }
 
 SampleCheck ClassifySample(const TrialThresholds& t, const std::array<double, 4>& p,
-                           double contact_force_n, double swept_deg, double elapsed_s,
+                           double contact_force_n, bool goal_reached, double elapsed_s,
                            double timeout_s) {
   SampleCheck c;
   std::ostringstream os;
@@ -56,10 +56,8 @@ SampleCheck ClassifySample(const TrialThresholds& t, const std::array<double, 4>
     c.detail = os.str();
     return c;
   }
-  if (swept_deg >= t.success_sweep_deg) {
-    os << "swept " << swept_deg << " deg";
+  if (goal_reached) {
     c.outcome = Outcome::kSuccess;
-    c.detail = os.str();
     return c;
   }
   bool all_grasped = true;

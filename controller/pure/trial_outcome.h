@@ -1,6 +1,7 @@
-// How a trial ends, as pure logic: the swept angle about the object's centre and the
-// classification of one filtered sample into running / success / failure I / failure II /
-// unstable / timeout (the implementation tested each on a single filtered sample).
+// How a trial ends, as pure logic: the outcomes and their names (the one home of both), the
+// swept angle about a centre, and the classification of one filtered sample into running /
+// success / failure I / failure II / unstable / timeout (the implementation tested each on a
+// single filtered sample). What counts as success is the trial's goal (trial_goal.h).
 #ifndef SSC_CONTROLLER_PURE_TRIAL_OUTCOME_H_
 #define SSC_CONTROLLER_PURE_TRIAL_OUTCOME_H_
 
@@ -10,7 +11,6 @@
 namespace ssc {
 
 struct TrialThresholds {
-  double success_sweep_deg = 355.0;   // swept angle about the centre that completes a loop
   double off_edge_pa = 5.0;           // failure I below this mean vacuum (disk script: 5 Pa)
   double grasp_pa = 10000.0;          // failure II when ALL four chambers exceed this
   double max_contact_force_n = 100.0; // safety: unstable beyond this |F/T| force
@@ -18,7 +18,8 @@ struct TrialThresholds {
 
 enum class Outcome { kRunning, kSuccess, kFailureOffEdge, kFailureGrasp, kTimeout, kUnstable };
 
-// "running", "success", "failure_I", "failure_II", "timeout", "unstable".
+// The text form, as written in tables and summaries: "running", "success", "failure_I",
+// "failure_II", "timeout", "unstable".
 const char* OutcomeName(Outcome outcome);
 
 // Signed swept angle of a point about a centre, unwrapped (counter-clockwise positive seen from
@@ -40,9 +41,9 @@ struct SampleCheck {
 };
 
 // Classifies one sample. Order: unstable (non-finite input, force beyond the safety limit),
-// success, failure II, failure I, timeout.
+// success (the goal is reached; the caller words the detail), failure II, failure I, timeout.
 SampleCheck ClassifySample(const TrialThresholds& t, const std::array<double, 4>& p_pa,
-                           double contact_force_n, double swept_deg, double elapsed_s,
+                           double contact_force_n, bool goal_reached, double elapsed_s,
                            double timeout_s);
 
 }  // namespace ssc
