@@ -51,7 +51,7 @@ bool LoadAnyLog(const std::string& path, const ProcessOptions& options, Processe
                 LoadError* error) {
   if (fs::is_directory(path)) {
     RobotLog raw;
-    return LoadRobotLogDir(path, &raw, error) && ProcessRobotLog(raw, options, log, error);
+    return LoadTopicCsvRecording(path, &raw, error) && ProcessRobotLog(raw, options, log, error);
   }
   if (fs::path(path).extension() == ".mat") {
     RobotLog raw;

@@ -8,10 +8,13 @@
 #define SSC_ROBOTLOG_LOG_TYPES_H_
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
 namespace ssc {
+
+inline constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 
 // Where and why a log was refused. `line` and `column` are 1-based; 0 means the error is not
 // about one cell (a missing file, an empty stream). For a .mat file they are the matrix row and
@@ -38,6 +41,41 @@ struct Stream {
   size_t size() const { return t_s.size(); }
 };
 
+// Which version of the lab's ROS logger wrote a per-topic file (docs/robot_logs.md).
+enum class LoggerVersion {
+  kNewer,  // array elements named <topic>.<field>[i]; /SensorPacket has a `ch` field
+  kOlder,  // an array's name repeated once per element; /SensorPacket without `ch`
+};
+
+// One controller iteration of the disk benchmark script (`edgeFollowing_history`, .mat only):
+// [time_s, x, y, r_p, corr_p, r_p_final, F_normal, P1, P2, P3, P4]. x, y: the measured TCP in
+// the log's base frame, m; r_p, corr_p, r_p_final: 2-vectors in the tool frame as the script
+// stores them ([y, x] components: the script moves dy = r[0] dL, dx = r[1] dL); F_normal: the
+// tared F/T z force, N (negative = compression); P: the host's filtered pressures, absolute
+// minus the in-air offset, Pa (negative = vacuum).
+struct HistoryRow {
+  double t_s = 0, x_m = 0, y_m = 0;
+  std::array<double, 2> r_p{}, corr_p{}, r_p_final{};
+  double f_normal_n = 0;
+  std::array<double, 4> p_pa{};
+};
+
+// The experiment script's arguments that the lab's MAT saver stores as variables (the disk
+// benchmark's; NaN or empty when the file does not hold them). Units as the script has them.
+struct LabRunArgs {
+  double p_ref_pa = kNoValue;        // Pref
+  double beta = kNoValue;            // beta
+  double d_lat_m = kNoValue;         // d_lat: the step dL, METRES
+  double disk_radius_mm = kNoValue;  // diskRadius, mm
+  double start_offset_m = kNoValue;  // start_offset, m (from the engage point toward the edge)
+  std::vector<double> p_lims_pa;     // P_lims [lower, upper]
+  std::vector<double> alpha_beta;    // [alpha2, beta2, alpha1, beta1]
+  std::vector<double> fz_set_n;      // Fz_set: the approach force band [low, high], N
+  double success = kNoValue;         // 0 or 1
+  std::vector<HistoryRow> history;   // edgeFollowing_history
+  bool any() const;
+};
+
 // The merged robot log: what the robot stack recorded, in its own units and frames.
 struct RobotLog {
   Stream pressure_abs;  // ch, P1..P4: raw absolute chamber pressures, Pa (chambers 1..4)
@@ -45,6 +83,8 @@ struct RobotLog {
   Stream ft;            // fx, fy, fz (N), tx, ty, tz (N m) in the transducer frame; optional
   Stream pwm;           // pump drive as logged (fraction, percent or 0..255); optional
   long long t0_ns = 0;  // ROS time stamp of t = 0
+  LabRunArgs args;      // the script's arguments (.mat); empty for CSV
+  std::string origin;   // what was read: the folder, the files or the .mat
 };
 
 // The twin's view of a log, on one clock: gauge vacuum per chamber, the tool centre point and

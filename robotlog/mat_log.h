@@ -1,19 +1,17 @@
-// The MATLAB file that merges the robot's topics, read and written with matio (Debian's
-// libmatio; never a hand-written MAT parser). No real file was available: this is the layout
-// the project defines (docs/robot_logs.md).
+// The lab's merged MATLAB file (DataLog_<YYYY>_<MMDD>_<HHMMSS>_<appendTxt>.mat, written by
+// SciPy's savemat from the per-topic CSVs read with pandas), read and written with matio
+// (Debian's libmatio; never a hand-written MAT parser):
 //
-//   variable   size   columns (as the per-topic CSV, time first)
-//   pressure   N x 6  t_ns, ch, P1, P2, P3, P4              raw absolute Pa      required
-//   pose       N x 8  t_ns, qw, qx, qy, qz, x, y, z         tool0 in base, m     required
-//                     (also read under the name tool_pose)
-//   ft         N x 7  t_ns, fx, fy, fz, tx, ty, tz          N, N m               optional
-//   pwm        N x 2  t_ns, pwm                             as logged            optional
+//   <name>_columnName  char matrix: the CSV header's names, one per row, space-padded
+//   <name>_data        N x k numeric: the CSV's rows (double; pwm_data may be int64), the
+//                      first column the ns stamp stored as a double (about 256 ns resolution)
+//   script arguments   each its own variable: Pref, beta, d_lat (m), diskRadius (mm),
+//                      start_offset (m), P_lims, alpha_beta, success, Fz_set,
+//                      edgeFollowing_history (N x 11 cell array or numeric matrix)
 //
-// Each a real, non-sparse numeric matrix of any class (double as MATLAB writes by default;
-// single and integer classes are converted). Time stamps are ROS time in integer nanoseconds;
-// a double holds an epoch-sized stamp (~1.7e18) to 256 ns, so stamps closer than that merge
-// and are refused as duplicates. Other variables are ignored. MAT v5 and v7.3 (HDF5) files
-// both read. Errors give the matrix row and column as line and column.
+// Streams are recognised by the topic and field names in *_columnName (topic_csv.h), not by
+// the variable names; other variables are ignored. Errors give the matrix row and column as
+// line and column and name the variable.
 #ifndef SSC_ROBOTLOG_MAT_LOG_H_
 #define SSC_ROBOTLOG_MAT_LOG_H_
 
@@ -23,13 +21,22 @@
 
 namespace ssc {
 
-// Reads and checks (ValidateRobotLog) a merged log.
+// Reads and checks (ValidateRobotLog) a merged log, with the script's arguments when present.
 bool LoadRobotLogMat(const std::string& path, RobotLog* log, LoadError* error);
 
 enum class MatVersion { kMat5, kMat73 };
-// Writes the non-empty streams as double matrices in the layout above.
+// Writes the non-empty streams and log.args as the lab's saver does: column names as the
+// logger of `version` writes them (pandas' names for repeated columns), values as pandas reads
+// the CSV (pressures float32-widened; pwm_data int64 when the PWM file holds integers), integer
+// arguments (Pref, diskRadius, P_lims, success) as int64, the history as an N x 11 cell array
+// whose r_p, corr_p and r_p_final cells are 1 x 2.
 bool WriteRobotLogMat(const std::string& path, const RobotLog& log, std::string* error,
-                      MatVersion version = MatVersion::kMat5);
+                      LoggerVersion version = LoggerVersion::kNewer,
+                      MatVersion mat_version = MatVersion::kMat5);
+
+// "DataLog_<stamp>_seb_testEdgeFollowing_refP_<Pref>_beta_<beta>_step_<d_lat>_deleteMe.mat",
+// the disk benchmark script's name (Python's str() of each value).
+std::string DiskBenchmarkMatName(const std::string& stamp, const LabRunArgs& args);
 
 }  // namespace ssc
 

@@ -109,8 +109,10 @@ bool ParsePlainLog(std::string_view contents, const std::string& file, Processed
   try {
     *log = ProcessedLog();
     std::array<int, kNumColumns> at{};
+    int at_t = 0, at_p1 = 0;
     size_t n_cells = 0;
     bool header = false, ok = true, has_ft = false, has_pwm = false;
+    std::vector<int> lines;  // file line of each row
     text::ForEachLine(contents, [&](int line_no, std::string_view line) {
       if (text::Trim(line).empty()) return true;
       const std::vector<std::string_view> cells = text::SplitCells(line);
@@ -126,6 +128,8 @@ bool ParsePlainLog(std::string_view contents, const std::string& file, Processed
         n_cells = cells.size();
         ok = ParseHeader(cells, file, line_no, &at, error);
         has_ft = at[kFx] >= 0;
+        at_t = at[kT];
+        at_p1 = at[kP1];
         has_pwm = at[kPwm] >= 0;
         return ok;
       }
@@ -162,12 +166,37 @@ bool ParsePlainLog(std::string_view contents, const std::string& file, Processed
         log->ft.push_back({v[kFx], v[kFx + 1], v[kFx + 2], v[kFx + 3], v[kFx + 4], v[kFx + 5]});
       }
       if (has_pwm) log->pwm_pct.push_back(v[kPwm]);
+      lines.push_back(line_no);
       return true;
     });
     if (!ok) return false;
     if (log->t_s.empty()) {
       text::SetError(error, file, 0, 0,
                      header ? "empty log: no data rows after the header" : "empty file");
+      return false;
+    }
+    std::string problem;
+    size_t bad_row = 0;
+    if (!CheckClock(log->t_s, true, true, &problem, &bad_row)) {
+      text::SetError(error, file, lines[bad_row], at_t + 1, "t_s: " + problem);
+      return false;
+    }
+    double peak = 0;
+    size_t peak_row = 0;
+    for (size_t i = 0; i < log->p_pa.size(); ++i) {
+      for (double p : log->p_pa[i]) {
+        if (p > peak) {
+          peak = p;
+          peak_row = i;
+        }
+      }
+    }
+    if (peak < kPeakVacuumMinPa) {
+      text::SetError(error, file, lines[peak_row], at_p1 + 1,
+                     "the largest vacuum in the log is " + Num(peak) +
+                         " Pa: kPa under a _pa column? A trial on an object reads more than " +
+                         Num(kPeakVacuumMinPa) + " Pa (a cup that never touched anything gives "
+                         "nothing to compare)");
       return false;
     }
     return true;
@@ -178,9 +207,21 @@ bool ParsePlainLog(std::string_view contents, const std::string& file, Processed
 }
 
 bool LoadPlainLog(const std::string& path, ProcessedLog* log, LoadError* error) {
+  // Line by line with a bounded line length; the rows go through the same parser.
   std::string contents;
-  return text::ReadWholeFile(path, &contents, error) &&
-         ParsePlainLog(contents, path, log, error);
+  bool ok = true;
+  if (!text::ForEachFileLine(
+          path,
+          [&](int, std::string_view line) {
+            contents.append(line);
+            contents.push_back('\n');
+            return true;
+          },
+          error)) {
+    return false;
+  }
+  ok = ParsePlainLog(contents, path, log, error);
+  return ok;
 }
 
 bool WritePlainLog(const std::string& path, const ProcessedLog& log, std::string* error) {

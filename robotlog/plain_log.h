@@ -11,7 +11,9 @@
 //
 // A column not in this list is refused (a typo or a unit the format does not take, such as
 // p1_kpa, must not be read as garbage). Pressures above 80 kPa are refused as absolute, below
-// -5 kPa as the opposite sign convention.
+// -5 kPa as the opposite sign convention, and a log whose largest vacuum stays under 50 Pa as
+// kPa (or a cup that never touched anything: nothing to compare). Times go through CheckClock
+// (robot_log.h): ms written as s, or ns, are refused.
 #ifndef SSC_ROBOTLOG_PLAIN_LOG_H_
 #define SSC_ROBOTLOG_PLAIN_LOG_H_
 
@@ -24,6 +26,7 @@ namespace ssc {
 
 inline constexpr double kGaugeVacuumMaxPa = 80e3;   // above: an absolute pressure
 inline constexpr double kGaugeVacuumMinPa = -5e3;   // below: vacuum written negative
+inline constexpr double kPeakVacuumMinPa = 50;      // largest vacuum below this: kPa?
 
 bool ParsePlainLog(std::string_view text, const std::string& file, ProcessedLog* log,
                    LoadError* error);

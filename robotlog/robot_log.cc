@@ -44,43 +44,37 @@ bool Fail(const Stream& s, StreamId id, size_t i, int field, const std::string& 
 }
 
 bool CheckShape(const Stream& s, StreamId id, LoadError* e) {
-  const StreamSpec& spec = GetStreamSpec(id);
+  const LabTopic& spec = GetLabTopic(id);
   if (s.rows.size() != s.t_s.size()) {
     return Fail(s, id, 0, -1, "has " + std::to_string(s.t_s.size()) + " times but " +
                                   std::to_string(s.rows.size()) + " rows", e);
   }
   for (size_t i = 0; i < s.size(); ++i) {
-    if (s.rows[i].size() != spec.fields()) {
+    if (s.rows[i].size() != spec.size()) {
       return Fail(s, id, i, -1, "row has " + std::to_string(s.rows[i].size()) +
-                                    " fields, the topic has " + std::to_string(spec.fields()),
+                                    " fields, the topic has " + std::to_string(spec.size()),
                   e);
     }
     if (!std::isfinite(s.t_s[i]) || (i > 0 && !(s.t_s[i] > s.t_s[i - 1]))) {
       return Fail(s, id, i, -1, "non-finite, duplicate or non-monotonic time", e);
     }
-    for (size_t k = 0; k < spec.fields(); ++k) {
+    for (size_t k = 0; k < spec.size(); ++k) {
       if (!std::isfinite(s.rows[i][k])) {
         return Fail(s, id, i, static_cast<int>(k), "non-finite value (" +
-                                                       spec.columns[k].front() + ")", e);
+                                                       spec.short_names[k] + ")", e);
       }
     }
   }
   return true;
 }
 
-bool CheckSampleInterval(const Stream& s, StreamId id, LoadError* e) {
-  if (s.size() < 2) return true;
-  std::vector<double> dt(s.size() - 1);
-  for (size_t i = 1; i < s.size(); ++i) dt[i - 1] = s.t_s[i] - s.t_s[i - 1];
-  std::nth_element(dt.begin(), dt.begin() + static_cast<long>(dt.size() / 2), dt.end());
-  const double median_s = dt[dt.size() / 2];
-  if (median_s < kSampleIntervalMinS || median_s > kSampleIntervalMaxS) {
-    return Fail(s, id, 1, -1,
-                "time stamps advance by a median of " + Num(median_s * 1e9) +
-                    " ns per sample: not nanoseconds? (expected 10 us to 60 s between samples)",
-                e);
+bool CheckStreamClock(const Stream& s, StreamId id, LoadError* e) {
+  std::string problem;
+  size_t at = 0;
+  if (CheckClock(s.t_s, id != StreamId::kPwm, id == StreamId::kPressure, &problem, &at)) {
+    return true;
   }
-  return true;
+  return Fail(s, id, at, -1, problem, e);
 }
 
 bool CheckPressure(const Stream& s, LoadError* e) {
@@ -143,6 +137,11 @@ std::string Span(const Stream& s) {
 
 }  // namespace
 
+bool LabRunArgs::any() const {
+  return !std::isnan(p_ref_pa) || !std::isnan(beta) || !std::isnan(d_lat_m) ||
+         !std::isnan(disk_radius_mm) || !std::isnan(start_offset_m) || !history.empty();
+}
+
 std::string LoadError::ToString() const {
   std::ostringstream os;
   os << (file.empty() ? "log" : file);
@@ -152,10 +151,55 @@ std::string LoadError::ToString() const {
   return os.str();
 }
 
+bool CheckClock(const std::vector<double>& t_s, bool periodic, bool whole_recording,
+                std::string* problem, size_t* at) {
+  if (t_s.size() < 2) return true;
+  if (periodic) {
+    std::vector<double> dt(t_s.size() - 1);
+    for (size_t i = 1; i < t_s.size(); ++i) dt[i - 1] = t_s[i] - t_s[i - 1];
+    std::nth_element(dt.begin(), dt.begin() + static_cast<long>(dt.size() / 2), dt.end());
+    const double median_s = dt[dt.size() / 2];
+    if (median_s < kSampleIntervalMinS || median_s > kSampleIntervalMaxS) {
+      *at = 1;
+      *problem = "samples are " + Num(median_s) + " s apart (median): " +
+                 (median_s < kSampleIntervalMinS ? "faster than 10 kHz, so the stamps are not "
+                                                   "in the declared unit (us read as ns?)"
+                                                 : "slower than 1 Hz, so the times are not in "
+                                                   "the declared unit (ms read as s?)") +
+                 "; a sensor stream has 0.1 ms to 1 s between samples";
+      return false;
+    }
+  }
+  const double span_s = t_s.back() - t_s.front();
+  if (whole_recording && (span_s < kRecordingMinS || span_s > kRecordingMaxS)) {
+    *at = t_s.size() - 1;
+    *problem = "the recording lasts " + Num(span_s) + " s over " + std::to_string(t_s.size()) +
+               " samples: " +
+               (span_s < kRecordingMinS ? "shorter than 0.5 s, so the stamps are not in the "
+                                          "declared unit (us read as ns?)"
+                                        : "longer than 6 h, so the times are not in the "
+                                          "declared unit (ms read as s?)");
+    return false;
+  }
+  return true;
+}
+
+bool CheckRosEpoch(const RobotLog& log, LoadError* error) {
+  if (log.t0_ns >= kRosStampMinNs && log.t0_ns < kRosStampMaxNs) return true;
+  const Stream& p = log.pressure_abs;
+  const std::string file = p.source.empty() ? "log" : p.source;
+  text::SetError(error, file, p.lines.empty() ? 0 : p.lines.front(), 1,
+                 "first time stamp " + std::to_string(log.t0_ns) +
+                     " is not ROS time in ns since 1970 between 2001 and 2100 (" +
+                     (log.t0_ns < kRosStampMinNs ? "microseconds or milliseconds?" : "too late") +
+                     ")");
+  return false;
+}
+
 bool ValidateRobotLog(const RobotLog& log, LoadError* error) {
   try {
     const Stream* streams[] = {&log.pressure_abs, &log.tool_pose, &log.ft, &log.pwm};
-    for (const StreamSpec& spec : AllStreamSpecs()) {
+    for (const LabTopic& spec : LabTopics()) {
       const Stream& s = *streams[static_cast<size_t>(spec.id)];
       if (s.empty()) {
         if (spec.required) {
@@ -166,10 +210,18 @@ bool ValidateRobotLog(const RobotLog& log, LoadError* error) {
         }
         continue;
       }
-      if (!CheckShape(s, spec.id, error) || !CheckSampleInterval(s, spec.id, error)) return false;
+      if (!CheckShape(s, spec.id, error)) return false;
     }
-    return CheckPressure(log.pressure_abs, error) && CheckPose(log.tool_pose, error) &&
-           CheckPwm(log.pwm, error);
+    // Values before clocks: a cell in the wrong unit is the more precise message.
+    if (!CheckPressure(log.pressure_abs, error) || !CheckPose(log.tool_pose, error) ||
+        !CheckPwm(log.pwm, error)) {
+      return false;
+    }
+    for (const LabTopic& spec : LabTopics()) {
+      const Stream& s = *streams[static_cast<size_t>(spec.id)];
+      if (!s.empty() && !CheckStreamClock(s, spec.id, error)) return false;
+    }
+    return true;
   } catch (const std::exception& ex) {
     text::SetError(error, "log", 0, 0, std::string("cannot check: ") + ex.what());
     return false;

@@ -30,15 +30,30 @@ inline constexpr double kAmbientMinPa = 70e3;            // in-air offset: ~3000
 inline constexpr double kAmbientMaxPa = 110e3;
 inline constexpr double kQuaternionNormTolerance = 0.01;
 inline constexpr double kPositionMaxM = 5.0;             // UR-10 reach 1.3 m; mm would be > 5
-inline constexpr double kSampleIntervalMinS = 10e-6;     // ns stamps of a <= 100 kHz topic
-inline constexpr double kSampleIntervalMaxS = 60.0;
+// Clock checks, for every format (stamps or times in another unit must not pass): the median
+// time between samples of a sensor stream (pressure, pose, F/T; not PWM, which is published
+// only when it changes), and the span of the pressure stream, the recording's duration.
+inline constexpr double kSampleIntervalMinS = 1e-4;  // 10 kHz; us stamps at 50 Hz read as ns: 20 us
+inline constexpr double kSampleIntervalMaxS = 1.0;   // ms times at 100 Hz read as s: 10 s
+inline constexpr double kRecordingMinS = 0.5;        // a trial with its in-air lead: seconds
+inline constexpr double kRecordingMaxS = 6 * 3600.0;
+// ROS stamps are ns since the Unix epoch: 2001-09-09 .. 2100 (us or ms stamps fall in 1970).
+inline constexpr long long kRosStampMinNs = 1000000000000000000LL;
+inline constexpr long long kRosStampMaxNs = 4102444800000000000LL;
+
+// The median time between samples of `t_s` and its span must be a sensor stream's: the error
+// (false) names the found values and the likely unit. Used by every reader.
+bool CheckClock(const std::vector<double>& t_s, bool periodic, bool whole_recording,
+                std::string* problem, size_t* at);
 
 // Checks a merged log's units and shapes, reporting the first bad cell at its file line (CSV)
 // or matrix row (.mat): the required streams present and non-empty; pressures absolute (within
 // 15..175 kPa, so gauge vacuum or another unit is refused); unit quaternions; positions within
-// 5 m of the base (millimetres refused); PWM within 0..255; the median time between samples of
-// each stream within 10 us..60 s (stamps in us or ms instead of ns refused).
+// 5 m of the base (millimetres refused); PWM within 0..255; CheckClock on each stream (stamps
+// in us or ms instead of ns refused).
 bool ValidateRobotLog(const RobotLog& log, LoadError* error);
+// The stamps of a log read from a file are ROS time (ns since the epoch): t0_ns in 2001..2100.
+bool CheckRosEpoch(const RobotLog& log, LoadError* error);
 
 enum class ClockSource {
   kPressure,  // the pressure samples' own times (the controller acted on pressure samples)

@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -74,7 +76,7 @@ std::string Quote(std::string_view cell) {
   return out + "'";
 }
 
-bool ReadWholeFile(const std::string& path, std::string* contents, LoadError* error) {
+bool CheckReadableFile(const std::string& path, LoadError* error) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
@@ -86,19 +88,96 @@ bool ReadWholeFile(const std::string& path, std::string* contents, LoadError* er
     SetError(error, path, 0, 0, "is a directory, expected a file");
     return false;
   }
+  return true;
+}
+
+bool ForEachFileLine(const std::string& path, const std::function<bool(int, std::string_view)>& fn,
+                     LoadError* error, bool* stopped) {
+  if (stopped != nullptr) *stopped = false;
+  if (!CheckReadableFile(path, error)) return false;
   std::ifstream f(path, std::ios::binary);
   if (!f) {
     SetError(error, path, 0, 0, "cannot open the file for reading");
     return false;
   }
-  std::ostringstream ss;
-  ss << f.rdbuf();
+  // One buffer of bounded size: a line longer than kMaxLineBytes is refused before more of it
+  // is read, so memory stays O(kMaxLineBytes) whatever the file holds.
+  std::string line;
+  line.reserve(4096);
+  int line_no = 0;
+  bool first = true;
+  std::vector<char> chunk(1 << 16);
+  auto deliver = [&]() {
+    std::string_view v(line);
+    if (first && v.substr(0, 3) == "\xEF\xBB\xBF") v.remove_prefix(3);
+    first = false;
+    if (!v.empty() && v.back() == '\r') v.remove_suffix(1);
+    if (line_no < 0x7fffffff) ++line_no;
+    return fn(line_no, v);
+  };
+  while (f) {
+    f.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    const size_t got = static_cast<size_t>(f.gcount());
+    size_t from = 0;
+    while (from < got) {
+      const void* nl = std::memchr(chunk.data() + from, '\n', got - from);
+      const size_t end = nl ? static_cast<size_t>(static_cast<const char*>(nl) - chunk.data()) : got;
+      if (line.size() + (end - from) > kMaxLineBytes) {
+        SetError(error, path, line_no + 1, 0,
+                 "line longer than " + std::to_string(kMaxLineBytes / 1024) +
+                     " KiB: not a log file (a log row is under 1 kB)");
+        return false;
+      }
+      line.append(chunk.data() + from, end - from);
+      if (!nl) break;
+      if (!deliver()) {
+        if (stopped != nullptr) *stopped = true;
+        return true;
+      }
+      line.clear();
+      from = end + 1;
+    }
+  }
   if (f.bad()) {
-    SetError(error, path, 0, 0, "read error");
+    SetError(error, path, line_no + 1, 0, "read error");
     return false;
   }
-  *contents = ss.str();
+  if (!line.empty() && !deliver() && stopped != nullptr) *stopped = true;
   return true;
+}
+
+std::string PyFloat(double v) {
+  if (!std::isfinite(v)) return std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf");
+  // Shortest round-trip digits, then Python's layout: fixed for exponents -4..15, else
+  // d.ddde+XX with at least two exponent digits.
+  char buf[40];
+  const std::to_chars_result r =
+      std::to_chars(buf, buf + sizeof(buf), v, std::chars_format::scientific);
+  const std::string sci(buf, r.ptr);
+  const size_t e = sci.find('e');
+  const int exp = std::atoi(sci.c_str() + e + 1);
+  std::string digits;
+  const bool negative = sci[0] == '-';
+  for (size_t i = negative ? 1 : 0; i < e; ++i) {
+    if (sci[i] != '.') digits += sci[i];
+  }
+  std::string out = negative ? "-" : "";
+  if (exp >= -4 && exp < 16) {
+    if (exp < 0) {
+      out += "0." + std::string(static_cast<size_t>(-exp - 1), '0') + digits;
+    } else if (static_cast<int>(digits.size()) <= exp + 1) {
+      out += digits + std::string(static_cast<size_t>(exp + 1) - digits.size(), '0') + ".0";
+    } else {
+      out += digits.substr(0, static_cast<size_t>(exp + 1)) + "." +
+             digits.substr(static_cast<size_t>(exp + 1));
+    }
+    return out;
+  }
+  out += digits.substr(0, 1);
+  if (digits.size() > 1) out += "." + digits.substr(1);
+  char exp_buf[16];
+  std::snprintf(exp_buf, sizeof(exp_buf), "e%c%02d", exp < 0 ? '-' : '+', std::abs(exp));
+  return out + exp_buf;
 }
 
 void SetError(LoadError* error, const std::string& file, int line, int column,

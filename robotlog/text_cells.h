@@ -3,6 +3,7 @@
 #ifndef SSC_ROBOTLOG_TEXT_CELLS_H_
 #define SSC_ROBOTLOG_TEXT_CELLS_H_
 
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -43,12 +44,27 @@ void ForEachLine(std::string_view text, Fn fn) {
   }
 }
 
+// Longest line any reader accepts. A lab log row is under 300 bytes and a header under 1 kB;
+// the bound keeps a file without line breaks (or a binary file) from being read whole.
+inline constexpr size_t kMaxLineBytes = 64 * 1024;
+
+// Reads `path` line by line (at most kMaxLineBytes per line, never the whole file at once) and
+// calls `fn(line_number, line)` as ForEachLine does. False with an error naming the file and
+// line when the file cannot be read or a line is too long; `stopped` tells that fn said stop.
+bool ForEachFileLine(const std::string& path, const std::function<bool(int, std::string_view)>& fn,
+                     LoadError* error, bool* stopped = nullptr);
+
 // The cell as it may appear in a message: quoted, at most 24 characters, unprintable bytes as
 // \xNN (fuzzed or binary input must not garble the error text).
 std::string Quote(std::string_view cell);
 
-// Reads a whole file. Reports a missing file, a directory and an unreadable file apart.
-bool ReadWholeFile(const std::string& path, std::string* contents, LoadError* error);
+// Checks that `path` is a readable regular file. Reports a missing file, a directory and an
+// unreadable file apart.
+bool CheckReadableFile(const std::string& path, LoadError* error);
+
+// Python's repr() of a float, as the lab's logger writes values: the shortest round-trip digits,
+// always with a '.' or an exponent ("100.0", "1e-05", "101339.671875").
+std::string PyFloat(double v);
 
 // Fills an error.
 void SetError(LoadError* error, const std::string& file, int line, int column,

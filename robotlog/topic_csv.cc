@@ -1,11 +1,13 @@
 #include "robotlog/topic_csv.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <ctime>
 #include <exception>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
+#include <map>
 #include <string_view>
 #include <system_error>
 
@@ -17,89 +19,41 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::string_view kTimeNames[] = {"t_ns",         "time",           "%time",
-                                           "stamp",        "timestamp",      "header.stamp",
-                                           "rosbagtimestamp", "time_ns",     "stamp_ns"};
+constexpr std::string_view kTimeColumn = "ROStimestamp";
+constexpr int kChambers = 4;
 
-// Header cell -> comparable name: lower case, quotes and export prefixes dropped.
-std::string NormalizeName(std::string_view cell) {
-  std::string_view t = text::Trim(cell);
-  if (t.size() >= 2 && t.front() == '"' && t.back() == '"') t = t.substr(1, t.size() - 2);
-  std::string name = text::Lower(t);
-  for (bool again = true; again;) {
-    again = false;
-    for (const char* prefix : {"field.", "pose.", "wrench."}) {
-      const std::string p(prefix);
-      if (name.size() > p.size() && name.compare(0, p.size(), p) == 0) {
-        name.erase(0, p.size());
-        again = true;
-      }
-    }
-  }
-  return name;
-}
-
-std::string ColumnList(const StreamSpec& spec) {
-  std::string s = "t_ns";
-  for (const auto& c : spec.columns) s += "," + c.front();
+std::string HeaderExample(const LabTopic& t) {
+  std::string s(kTimeColumn);
+  for (const std::string& f : t.fields) s += "," + t.topic + "." + f;
   return s;
 }
 
-bool CheckHeader(const std::vector<std::string_view>& cells, const std::string& file, int line_no,
-                 const StreamSpec& spec, LoadError* e) {
-  const std::string time_name = NormalizeName(cells[0]);
-  if (std::find(std::begin(kTimeNames), std::end(kTimeNames), time_name) ==
-      std::end(kTimeNames)) {
-    const bool seconds = time_name == "t_s" || time_name == "t" || time_name == "time_s";
-    text::SetError(e, file, line_no, 1,
-                   "first column " + text::Quote(cells[0]) +
-                       (seconds ? " reads as seconds; per-topic logs take integer nanoseconds"
-                                : " is not a time-stamp column") +
-                       " (expected the header " + ColumnList(spec) + ")");
-    return false;
-  }
-  for (size_t c = 1; c < cells.size() && c <= spec.fields(); ++c) {
-    const std::vector<std::string>& names = spec.columns[c - 1];
-    const std::string name = NormalizeName(cells[c]);
-    bool ok = false;
-    for (const std::string& n : names) ok = ok || text::Lower(n) == name;
-    if (!ok) {
-      text::SetError(e, file, line_no, text::ToInt(c + 1),
-                     "header names " + text::Quote(cells[c]) + ", expected '" + names.front() +
-                         "' (columns: " + ColumnList(spec) + ")");
-      return false;
-    }
-  }
-  if (cells.size() < spec.fields() + 1) {
-    text::SetError(e, file, line_no, text::ToInt(cells.size() + 1),
-                   "header is missing column '" + spec.columns[cells.size() - 1].front() +
-                       "' (columns: " + ColumnList(spec) + ")");
-    return false;
-  }
-  if (cells.size() > spec.fields() + 1) {
-    text::SetError(e, file, line_no, text::ToInt(spec.fields() + 2),
-                   "header has an unexpected extra column " +
-                       text::Quote(cells[spec.fields() + 1]) + " (columns: " + ColumnList(spec) +
-                       ")");
-    return false;
-  }
-  return true;
+bool AllDigits(std::string_view s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// "data[2]" for base "data" and 2, if the topic has that element.
+int ElementIndex(const LabTopic& t, const std::string& base, int k) {
+  const std::string name = base + "[" + std::to_string(k) + "]";
+  const auto it = std::find(t.fields.begin(), t.fields.end(), name);
+  return it == t.fields.end() ? -1 : static_cast<int>(it - t.fields.begin());
+}
+
+bool IsArrayBase(const LabTopic& t, const std::string& base) {
+  return ElementIndex(t, base, 0) >= 0;
 }
 
 bool ParseRow(const std::vector<std::string_view>& cells, const std::string& file, int line_no,
-              const StreamSpec& spec, TopicTable* table, LoadError* e) {
-  const size_t n_cols = spec.fields() + 1;
-  if (cells.size() < n_cols) {
-    text::SetError(e, file, line_no, text::ToInt(cells.size() + 1),
-                   "missing column '" + spec.columns[cells.size() - 1].front() + "': row has " +
-                       std::to_string(cells.size()) + " of " + std::to_string(n_cols) +
-                       " columns");
-    return false;
-  }
-  if (cells.size() > n_cols) {
-    text::SetError(e, file, line_no, text::ToInt(n_cols + 1),
-                   "unexpected extra column: row has " + std::to_string(cells.size()) +
-                       " columns, expected " + std::to_string(n_cols));
+              TopicTable* table, LoadError* e) {
+  const TopicHeader& h = table->header;
+  const LabTopic& topic = *h.topic;
+  const size_t n_cols = h.field_of_column.size() + 1;
+  if (cells.size() != n_cols) {
+    const bool missing = cells.size() < n_cols;
+    text::SetError(e, file, line_no, text::ToInt((missing ? cells.size() : n_cols) + 1),
+                   std::string(missing ? "missing column" : "unexpected extra column") +
+                       ": row has " + std::to_string(cells.size()) + " cells, the header " +
+                       std::to_string(n_cols));
     return false;
   }
   long long t = 0;
@@ -124,10 +78,12 @@ bool ParseRow(const std::vector<std::string_view>& cells, const std::string& fil
                        std::to_string(table->lines.back()) + ")");
     return false;
   }
-  std::vector<double> values(spec.fields());
+  std::vector<double> values(topic.size(), 0.0);
+  if (topic.id == StreamId::kPressure && !h.has_ch) values[0] = kChambers;
   for (size_t c = 1; c < n_cols; ++c) {
-    const std::string& name = spec.columns[c - 1].front();
-    switch (text::ParseDouble(cells[c], &values[c - 1])) {
+    const int field = h.field_of_column[c - 1];
+    const std::string& name = topic.short_names[static_cast<size_t>(field)];
+    switch (text::ParseDouble(cells[c], &values[static_cast<size_t>(field)])) {
       case text::NumberParse::kOk:
         break;
       case text::NumberParse::kEmpty:
@@ -150,6 +106,43 @@ bool ParseRow(const std::vector<std::string_view>& cells, const std::string& fil
   return true;
 }
 
+// Feeds lines to the header and row parsers; shared by the text and the file readers.
+class TopicParser {
+ public:
+  TopicParser(const std::string& file, TopicTable* table, LoadError* e)
+      : file_(file), table_(table), e_(e) {
+    *table_ = TopicTable();
+  }
+  bool Line(int line_no, std::string_view line) {
+    if (text::Trim(line).empty()) return true;
+    const std::vector<std::string_view> cells = text::SplitCells(line);
+    if (!have_header_) {
+      have_header_ = true;
+      return ParseTopicHeader(cells, file_, line_no, &table_->header, e_);
+    }
+    if (table_->header.topic == nullptr) return false;  // unused topic: the header is enough
+    return ParseRow(cells, file_, line_no, table_, e_);
+  }
+  bool Finish(bool ok) const {
+    if (!ok) return table_->header.topic == nullptr && have_header_ && e_->message.empty();
+    if (!have_header_) {
+      text::SetError(e_, file_, 0, 0, "empty file: no header line (ROStimestamp,...)");
+      return false;
+    }
+    if (table_->header.topic != nullptr && table_->t_ns.empty()) {
+      text::SetError(e_, file_, 0, 0, "empty stream: no data rows after the header");
+      return false;
+    }
+    return true;
+  }
+
+ private:
+  const std::string& file_;
+  TopicTable* table_;
+  LoadError* e_;
+  bool have_header_ = false;
+};
+
 Stream ToStream(TopicTable&& table, long long t0_ns, const std::string& source) {
   Stream s;
   s.t_s.reserve(table.t_ns.size());
@@ -160,23 +153,64 @@ Stream ToStream(TopicTable&& table, long long t0_ns, const std::string& source) 
   return s;
 }
 
-bool WriteTopicFile(const fs::path& path, const StreamSpec& spec, const Stream& s,
-                    long long t0_ns, bool header, std::string* error) {
-  std::ofstream f(path);
+// A logger file name: dataLog_<YYYY>_<MMDD>_<HHMMSS>_<topic>.csv -> the stamp, or "".
+std::string StampOfFileName(const std::string& name) {
+  constexpr std::string_view kPrefix = "dataLog_";
+  if (name.size() < kPrefix.size() + 17 + 4 || name.compare(0, kPrefix.size(), kPrefix) != 0 ||
+      name.substr(name.size() - 4) != ".csv") {
+    return "";
+  }
+  const std::string stamp = name.substr(kPrefix.size(), 16);  // YYYY_MMDD_HHMMSS
+  if (!AllDigits(std::string_view(stamp).substr(0, 4)) || stamp[4] != '_' ||
+      !AllDigits(std::string_view(stamp).substr(5, 4)) || stamp[9] != '_' ||
+      !AllDigits(std::string_view(stamp).substr(10, 6)) || name[kPrefix.size() + 16] != '_') {
+    return "";
+  }
+  return stamp;
+}
+
+bool WriteTopicFile(const fs::path& path, const LabTopic& topic, LoggerVersion version,
+                    const Stream& s, long long t0_ns, std::string* error) {
+  std::ofstream f(path, std::ios::binary);
   if (!f) {
     *error = path.string() + ": cannot create";
     return false;
   }
-  if (header) f << ColumnList(spec) << '\n';
+  const bool pressure = topic.id == StreamId::kPressure;
+  const bool older = version == LoggerVersion::kOlder;
+  f << kTimeColumn;
+  for (const std::string& field : topic.fields) {
+    if (pressure && older && field == "ch") continue;  // the older message had no ch
+    std::string name = field;
+    if (older && name.back() == ']') name = name.substr(0, name.find('['));
+    f << ',' << topic.topic << '.' << name;
+  }
+  f << '\n';
   for (size_t i = 0; i < s.size(); ++i) {
-    if (s.rows[i].size() != spec.fields()) {
+    const std::vector<double>& r = s.rows[i];
+    if (r.size() != topic.size()) {
       *error = path.string() + ": row " + std::to_string(i + 1) + " has " +
-               std::to_string(s.rows[i].size()) + " fields, the topic has " +
-               std::to_string(spec.fields());
+               std::to_string(r.size()) + " fields, the topic has " +
+               std::to_string(topic.size());
       return false;
     }
     f << t0_ns + std::llround(s.t_s[i] * 1e9);
-    for (double v : s.rows[i]) f << ',' << text::FormatDouble(v);
+    switch (topic.id) {
+      case StreamId::kPressure:
+        // ch is an int; data is a float32 tuple printed without its brackets.
+        if (!older) f << ',' << std::llround(r[0]);
+        for (int c = 1; c <= kChambers; ++c) {
+          f << (c == 1 ? "," : ", ") << text::PyFloat(static_cast<float>(r[c]));
+        }
+        break;
+      case StreamId::kPwm:
+        f << ',' << std::llround(r[0]);  // std_msgs/Int8
+        break;
+      case StreamId::kPose:
+      case StreamId::kFt:
+        for (double v : r) f << ',' << text::PyFloat(v);
+        break;
+    }
     f << '\n';
   }
   f.flush();
@@ -189,160 +223,317 @@ bool WriteTopicFile(const fs::path& path, const StreamSpec& spec, const Stream& 
 
 }  // namespace
 
-const std::vector<StreamSpec>& AllStreamSpecs() {
+const std::vector<LabTopic>& LabTopics() {
   // Never destroyed: other statics may still read it at exit.
-  static const auto* const specs = new std::vector<StreamSpec>{
+  static const auto* const topics = new std::vector<LabTopic>{
       {StreamId::kPressure,
-       {"pressure.csv"},
-       {"pressure"},
+       "/SensorPacket",
+       "SensorPacket",
        true,
-       {{"ch"}, {"P1", "p0"}, {"P2", "p1"}, {"P3", "p2"}, {"P4", "p3"}}},
+       {"ch", "data[0]", "data[1]", "data[2]", "data[3]"},
+       {"ch", "P1", "P2", "P3", "P4"}},
       {StreamId::kPose,
-       {"tool_pose.csv", "pose.csv"},
-       {"pose", "tool_pose"},
+       "/endEffectorPose",
+       "endEffectorPose",
        true,
-       {{"orientation.w"},
-        {"orientation.x"},
-        {"orientation.y"},
-        {"orientation.z"},
-        {"position.x"},
-        {"position.y"},
-        {"position.z"}}},
+       {"pose.orientation.w", "pose.orientation.x", "pose.orientation.y", "pose.orientation.z",
+        "pose.position.x", "pose.position.y", "pose.position.z"},
+       {"qw", "qx", "qy", "qz", "x", "y", "z"}},
       {StreamId::kFt,
-       {"ft.csv", "wrench.csv"},
-       {"ft"},
+       "/netft_data",
+       "netftdata",
        false,
-       {{"force.x"}, {"force.y"}, {"force.z"}, {"torque.x"}, {"torque.y"}, {"torque.z"}}},
-      {StreamId::kPwm, {"pwm.csv"}, {"pwm"}, false, {{"pwm", "data"}}},
+       {"wrench.force.x", "wrench.force.y", "wrench.force.z", "wrench.torque.x",
+        "wrench.torque.y", "wrench.torque.z"},
+       {"fx", "fy", "fz", "tx", "ty", "tz"}},
+      {StreamId::kPwm, "/pwm", "pwm", false, {"data"}, {"pwm"}},
   };
-  return *specs;
+  return *topics;
 }
 
-const StreamSpec& GetStreamSpec(StreamId id) {
-  return AllStreamSpecs()[static_cast<size_t>(id)];
-}
+const LabTopic& GetLabTopic(StreamId id) { return LabTopics()[static_cast<size_t>(id)]; }
 
-bool ParseTopicCsv(std::string_view text, const std::string& file, const StreamSpec& spec,
-                   TopicTable* table, LoadError* error) {
-  try {
-    *table = TopicTable();
-    bool ok = true;
-    bool first = true;
-    text::ForEachLine(text, [&](int line_no, std::string_view line) {
-      if (text::Trim(line).empty()) return true;
-      const std::vector<std::string_view> cells = text::SplitCells(line);
-      // A header starts with a name; a data row with a number (maybe a bad one, reported as
-      // such by ParseRow).
-      double number = 0;
-      if (first && !text::Trim(cells[0]).empty() &&
-          text::ParseDouble(cells[0], &number) == text::NumberParse::kNotANumber) {
-        first = false;
-        table->had_header = true;
-        ok = CheckHeader(cells, file, line_no, spec, error);
-        return ok;
-      }
-      first = false;
-      ok = ParseRow(cells, file, line_no, spec, table, error);
-      return ok;
-    });
-    if (!ok) return false;
-    if (table->t_ns.empty()) {
-      text::SetError(error, file, 0, 0,
-                     std::string("empty stream: no data rows") +
-                         (table->had_header ? " after the header" : ""));
+bool ParseTopicHeader(const std::vector<std::string_view>& names, const std::string& file,
+                      int line, TopicHeader* h, LoadError* e) {
+  *h = TopicHeader();
+  const std::string_view first = text::Trim(names[0]);
+  if (first != kTimeColumn) {
+    double number = 0;
+    const bool data = text::ParseDouble(first, &number) == text::NumberParse::kOk;
+    text::SetError(e, file, line, 1,
+                   data ? "no header line: the lab's logger starts each file with "
+                          "ROStimestamp,<topic>.<field>,..."
+                        : "first column " + text::Quote(first) +
+                              " is not the logger's time column 'ROStimestamp'");
+    return false;
+  }
+  if (names.size() < 2) {
+    text::SetError(e, file, line, 2, "header has no field after ROStimestamp");
+    return false;
+  }
+  // The topic: everything before the first '.' (ROS names hold no dots); all columns share it.
+  for (size_t c = 1; c < names.size(); ++c) {
+    const std::string_view cell = text::Trim(names[c]);
+    const size_t dot = cell.find('.');
+    if (dot == std::string_view::npos || dot == 0 || dot + 1 == cell.size()) {
+      text::SetError(e, file, line, text::ToInt(c + 1),
+                     "header names " + text::Quote(cell) + ", expected <topic>.<field> (e.g. " +
+                         "/SensorPacket.data[0])");
       return false;
     }
-    return true;
+    std::string topic(cell.substr(0, dot));
+    if (topic.front() != '/') topic = "/" + topic;
+    if (c == 1) {
+      h->topic_name = topic;
+    } else if (topic != h->topic_name) {
+      text::SetError(e, file, line, text::ToInt(c + 1),
+                     "column of topic " + text::Quote(topic) + " in a file of topic " +
+                         text::Quote(h->topic_name) + " (one topic per file)");
+      return false;
+    }
+  }
+  for (const LabTopic& t : LabTopics()) {
+    if (t.topic == h->topic_name) h->topic = &t;
+  }
+  if (h->topic == nullptr) return true;  // a topic the twin does not use
+  const LabTopic& t = *h->topic;
+  std::map<std::string, int> repeats;  // older logger: occurrences of an array's bare name
+  std::vector<int> column_of_field(t.size(), -1);
+  bool indexed = false, repeated = false;
+  for (size_t c = 1; c < names.size(); ++c) {
+    const std::string_view cell = text::Trim(names[c]);
+    const std::string field(cell.substr(cell.find('.') + 1));
+    int index = -1;
+    const auto it = std::find(t.fields.begin(), t.fields.end(), field);
+    if (it != t.fields.end()) {
+      index = static_cast<int>(it - t.fields.begin());
+      indexed = indexed || field.back() == ']';
+    } else if (IsArrayBase(t, field)) {
+      index = ElementIndex(t, field, repeats[field]++);
+      repeated = true;
+      if (index < 0) {
+        text::SetError(e, file, line, text::ToInt(c + 1),
+                       "more '" + field + "' columns than the " + std::to_string(kChambers) +
+                           " chambers the twin has");
+        return false;
+      }
+    } else {
+      // pandas renames repeated columns "data", "data.1", "data.2" (a .mat from older files).
+      const size_t dot = field.rfind('.');
+      if (dot != std::string::npos && AllDigits(std::string_view(field).substr(dot + 1)) &&
+          IsArrayBase(t, field.substr(0, dot))) {
+        index = ElementIndex(t, field.substr(0, dot), std::atoi(field.c_str() + dot + 1));
+        repeated = true;
+      }
+      if (index < 0) {
+        std::string expected;
+        for (const std::string& f : t.fields) expected += (expected.empty() ? "" : ", ") + f;
+        text::SetError(e, file, line, text::ToInt(c + 1),
+                       "unknown field " + text::Quote(field) + " of " + t.topic +
+                           " (fields: " + expected + ")");
+        return false;
+      }
+    }
+    if (column_of_field[static_cast<size_t>(index)] >= 0) {
+      text::SetError(e, file, line, text::ToInt(c + 1),
+                     "field '" + t.fields[static_cast<size_t>(index)] + "' appears twice (also " +
+                         "column " + std::to_string(column_of_field[static_cast<size_t>(index)] +
+                                                    1) + ")");
+      return false;
+    }
+    column_of_field[static_cast<size_t>(index)] = static_cast<int>(c);
+    h->field_of_column.push_back(index);
+  }
+  if (indexed && repeated) {
+    text::SetError(e, file, line, 0,
+                   "header mixes indexed (data[i]) and repeated array names: neither logger "
+                   "version writes that");
+    return false;
+  }
+  h->version = repeated ? LoggerVersion::kOlder : LoggerVersion::kNewer;
+  for (size_t f = 0; f < t.size(); ++f) {
+    if (column_of_field[f] >= 0) continue;
+    if (t.id == StreamId::kPressure && f == 0) {
+      h->has_ch = false;  // the older message had no ch field
+      continue;
+    }
+    text::SetError(e, file, line, text::ToInt(names.size() + 1),
+                   "header is missing field '" + t.fields[f] + "' (expected " +
+                       HeaderExample(t) + ")");
+    return false;
+  }
+  return true;
+}
+
+bool ParseTopicCsv(std::string_view contents, const std::string& file, TopicTable* table,
+                   LoadError* error) {
+  try {
+    *error = LoadError();
+    TopicParser parser(file, table, error);
+    bool ok = true;
+    text::ForEachLine(contents, [&](int line_no, std::string_view line) {
+      return ok = parser.Line(line_no, line);
+    });
+    return parser.Finish(ok);
   } catch (const std::exception& ex) {  // e.g. bad_alloc on a huge input
     text::SetError(error, file, 0, 0, std::string("cannot parse: ") + ex.what());
     return false;
   }
 }
 
-bool ReadTopicCsv(const std::string& path, const StreamSpec& spec, TopicTable* table,
-                  LoadError* error) {
-  std::string contents;
-  return text::ReadWholeFile(path, &contents, error) &&
-         ParseTopicCsv(contents, path, spec, table, error);
-}
-
-bool LoadRobotLogDir(const std::string& dir, RobotLog* log, LoadError* error) {
+bool ReadTopicCsv(const std::string& path, TopicTable* table, LoadError* error) {
   try {
-    *log = RobotLog();
-    std::error_code ec;
-    if (!fs::exists(dir, ec)) {
-      text::SetError(error, dir, 0, 0, "no such directory");
+    *error = LoadError();
+    TopicParser parser(path, table, error);
+    bool ok = true;
+    if (!text::ForEachFileLine(
+            path, [&](int line_no, std::string_view line) { return ok = parser.Line(line_no, line); },
+            error)) {
       return false;
     }
-    if (!fs::is_directory(dir, ec)) {
-      text::SetError(error, dir, 0, 0, "not a directory (a per-topic log is a directory of CSVs)");
-      return false;
-    }
-    const std::vector<StreamSpec>& specs = AllStreamSpecs();
-    std::vector<TopicTable> tables(specs.size());
-    std::vector<std::string> paths(specs.size());
-    long long t0 = -1;
-    for (size_t i = 0; i < specs.size(); ++i) {
-      for (const std::string& name : specs[i].files) {
-        const std::string path = (fs::path(dir) / name).string();
-        if (!fs::exists(path, ec)) continue;
-        if (!paths[i].empty()) {
-          text::SetError(error, path, 0, 0, "two files for one topic: also " + paths[i]);
-          return false;
-        }
-        paths[i] = path;
-      }
-      if (paths[i].empty()) {
-        if (specs[i].required) {
-          text::SetError(error, (fs::path(dir) / specs[i].files.front()).string(), 0, 0,
-                         "no such file (a required stream)");
-          return false;
-        }
-        continue;
-      }
-      if (!ReadTopicCsv(paths[i], specs[i], &tables[i], error)) return false;
-      const long long first = tables[i].t_ns.front();
-      t0 = t0 < 0 ? first : std::min(t0, first);
-    }
-    log->t0_ns = t0;
-    Stream* streams[] = {&log->pressure_abs, &log->tool_pose, &log->ft, &log->pwm};
-    for (size_t i = 0; i < specs.size(); ++i) {
-      if (!paths[i].empty()) *streams[i] = ToStream(std::move(tables[i]), t0, paths[i]);
-    }
-    return ValidateRobotLog(*log, error);
+    return parser.Finish(ok);
   } catch (const std::exception& ex) {
-    text::SetError(error, dir, 0, 0, std::string("cannot load: ") + ex.what());
+    text::SetError(error, path, 0, 0, std::string("cannot read: ") + ex.what());
     return false;
   }
 }
 
-bool WriteTopicCsvLogs(const std::string& dir, const RobotLog& log,
-                       const TopicCsvWriteOptions& options, std::string* error) {
+bool FindRecordingFiles(const std::string& path, std::vector<std::string>* files,
+                        std::string* stamp, LoadError* error) {
+  files->clear();
+  stamp->clear();
+  std::error_code ec;
+  if (!fs::exists(path, ec)) {
+    text::SetError(error, path, 0, 0, "no such file or folder");
+    return false;
+  }
+  const bool folder = fs::is_directory(path, ec);
+  const fs::path dir = folder ? fs::path(path) : fs::path(path).parent_path();
+  if (!folder) {
+    *stamp = StampOfFileName(fs::path(path).filename().string());
+    if (stamp->empty()) {  // not named by the logger: the file alone
+      files->push_back(path);
+      return true;
+    }
+  }
+  std::map<std::string, std::vector<std::string>> by_stamp;
+  for (const fs::directory_entry& entry :
+       fs::directory_iterator(dir.empty() ? fs::path(".") : dir, ec)) {
+    const std::string s = StampOfFileName(entry.path().filename().string());
+    if (!s.empty() && entry.is_regular_file(ec)) by_stamp[s].push_back(entry.path().string());
+  }
+  if (ec) {
+    text::SetError(error, dir.string(), 0, 0, "cannot list the folder: " + ec.message());
+    return false;
+  }
+  if (folder) {
+    if (by_stamp.empty()) {
+      text::SetError(error, path, 0, 0,
+                     "no logger files in this folder (dataLog_<YYYY>_<MMDD>_<HHMMSS>_<topic>.csv)");
+      return false;
+    }
+    if (by_stamp.size() > 1) {
+      std::string list;
+      for (const auto& [s, f] : by_stamp) list += (list.empty() ? "" : ", ") + s;
+      text::SetError(error, path, 0, 0,
+                     "the folder holds " + std::to_string(by_stamp.size()) +
+                         " recordings (stamps " + list + "): give one of its files");
+      return false;
+    }
+    *stamp = by_stamp.begin()->first;
+  }
+  *files = by_stamp[*stamp];
+  std::sort(files->begin(), files->end());
+  return true;
+}
+
+bool LoadTopicCsvRecording(const std::string& path, RobotLog* log, LoadError* error) {
+  try {
+    *log = RobotLog();
+    std::vector<std::string> files;
+    std::string stamp;
+    if (!FindRecordingFiles(path, &files, &stamp, error)) return false;
+    const std::vector<LabTopic>& topics = LabTopics();
+    std::vector<TopicTable> tables(topics.size());
+    std::vector<std::string> sources(topics.size());
+    long long t0 = -1;
+    for (const std::string& file : files) {
+      TopicTable table;
+      if (!ReadTopicCsv(file, &table, error)) return false;
+      if (table.header.topic == nullptr) continue;  // e.g. /sync
+      const size_t i = static_cast<size_t>(table.header.topic->id);
+      if (!sources[i].empty()) {
+        text::SetError(error, file, 1, 0,
+                       "a second file of topic " + topics[i].topic + " in one recording (also " +
+                           sources[i] + ")");
+        return false;
+      }
+      sources[i] = file;
+      const long long first = table.t_ns.front();
+      t0 = t0 < 0 ? first : std::min(t0, first);
+      tables[i] = std::move(table);
+    }
+    for (size_t i = 0; i < topics.size(); ++i) {
+      if (!topics[i].required || !sources[i].empty()) continue;
+      const std::string expected = stamp.empty() ? topics[i].topic
+                                                 : TopicFileName(stamp, topics[i].topic);
+      text::SetError(error, path, 0, 0,
+                     "no file of topic " + topics[i].topic + " (a required stream; expected " +
+                         expected + " beside the others, with its header naming " +
+                         topics[i].topic + ")");
+      return false;
+    }
+    log->t0_ns = t0;
+    log->origin = path;
+    Stream* streams[] = {&log->pressure_abs, &log->tool_pose, &log->ft, &log->pwm};
+    for (size_t i = 0; i < topics.size(); ++i) {
+      if (!sources[i].empty()) *streams[i] = ToStream(std::move(tables[i]), t0, sources[i]);
+    }
+    return CheckRosEpoch(*log, error) && ValidateRobotLog(*log, error);
+  } catch (const std::exception& ex) {
+    text::SetError(error, path, 0, 0, std::string("cannot load: ") + ex.what());
+    return false;
+  }
+}
+
+std::string RecordingStamp(long long t_ns) {
+  const std::time_t secs = static_cast<std::time_t>(t_ns / 1000000000LL);
+  std::tm tm{};
+  gmtime_r(&secs, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof(buf), "%Y_%m%d_%H%M%S", &tm);
+  return buf;
+}
+
+std::string TopicFileName(const std::string& stamp, const std::string& topic) {
+  std::string t = topic;
+  std::replace(t.begin(), t.end(), '/', '_');
+  return "dataLog_" + stamp + "_" + t + ".csv";
+}
+
+bool WriteTopicCsvRecording(const std::string& dir, const RobotLog& log, LoggerVersion version,
+                            std::vector<std::string>* written, std::string* error) {
   try {
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec) {
-      *error = dir + ": cannot create the directory: " + ec.message();
+      *error = dir + ": cannot create the folder: " + ec.message();
       return false;
     }
+    const std::string stamp = RecordingStamp(log.t0_ns);
     const Stream* streams[] = {&log.pressure_abs, &log.tool_pose, &log.ft, &log.pwm};
-    const std::vector<StreamSpec>& specs = AllStreamSpecs();
-    for (size_t i = 0; i < specs.size(); ++i) {
-      if (streams[i]->empty()) continue;
-      if (!WriteTopicFile(fs::path(dir) / specs[i].files.front(), specs[i], *streams[i],
-                          log.t0_ns, options.header, error)) {
-        return false;
-      }
+    for (const LabTopic& t : LabTopics()) {
+      const Stream& s = *streams[static_cast<size_t>(t.id)];
+      if (s.empty()) continue;
+      const fs::path path = fs::path(dir) / TopicFileName(stamp, t.topic);
+      if (!WriteTopicFile(path, t, version, s, log.t0_ns, error)) return false;
+      if (written != nullptr) written->push_back(path.string());
     }
     return true;
   } catch (const std::exception& ex) {
     *error = dir + ": " + ex.what();
     return false;
   }
-}
-
-bool WriteRobotLogDir(const std::string& dir, const RobotLog& log, std::string* error) {
-  return WriteTopicCsvLogs(dir, log, TopicCsvWriteOptions(), error);
 }
 
 }  // namespace ssc

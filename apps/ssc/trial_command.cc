@@ -82,7 +82,7 @@ int RunTrialCommand(int argc, char** argv) {
   if (!robot_log_dir.empty()) {
     const RobotLog log = RobotLogFromTrial(r, kToolCentreOffsetM, 1.0, 0.0);
     const std::string& dir = robot_log_dir;
-    if (!WriteRobotLogDir(dir, log, &error) ||
+    if (!WriteTopicCsvRecording(dir, log, LoggerVersion::kNewer, nullptr, &error) ||
         !WriteRobotLogMat((std::filesystem::path(dir) / "log.mat").string(), log, &error)) {
       std::fprintf(stderr, "ssc trial: %s\n", error.c_str());
       return 1;

@@ -1,6 +1,6 @@
 // libFuzzer target: whatever the bytes, the readers return a result and never crash, hang,
-// leak or hit undefined behaviour. The first byte picks the topic; the rest is the file text,
-// parsed as that topic, as a plain log, and (when it parses) processed as a pressure stream.
+// leak or hit undefined behaviour. The bytes are parsed as a lab topic file and as a plain log;
+// a topic file that parses as /SensorPacket is validated and processed with a still pose.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -9,14 +9,11 @@
 #include "robotlog/robot_log.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  if (size == 0) return 0;
-  const ssc::StreamSpec& spec = ssc::AllStreamSpecs()[data[0] % 4];
-  const std::string_view text(reinterpret_cast<const char*>(data + 1), size - 1);
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
   ssc::TopicTable table;
   ssc::LoadError error;
-  if (ssc::ParseTopicCsv(text, "fuzz.csv", spec, &table, &error) &&
-      spec.id == ssc::StreamId::kPressure) {
-    // A log with this pressure stream and a still pose: validation and processing must cope.
+  if (ssc::ParseTopicCsv(text, "fuzz.csv", &table, &error) && table.header.topic != nullptr &&
+      table.header.topic->id == ssc::StreamId::kPressure) {
     ssc::RobotLog log;
     log.t0_ns = table.t_ns.front();
     for (size_t i = 0; i < table.t_ns.size(); ++i) {
