@@ -376,6 +376,16 @@ JobRunStats RunJobs(const JobSet& jobs, const JobRunnerOptions& options,
   return stats;
 }
 
+std::vector<std::string> RunJobsCollect(const JobSet& jobs, const JobRunnerOptions& options,
+                                        JobRunStats* stats) {
+  std::vector<std::string> results(jobs.count);
+  const JobRunStats s = RunJobs(jobs, options, [&](std::size_t i, const std::string& r) {
+    results[i] = r;
+  });
+  if (stats) *stats = s;
+  return results;
+}
+
 bool JobRunnerHasMpi() {
 #ifdef SSC_HAVE_MPI
   return true;

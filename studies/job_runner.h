@@ -59,6 +59,11 @@ using DeliverFn = std::function<void(std::size_t index, const std::string& resul
 JobRunStats RunJobs(const JobSet& jobs, const JobRunnerOptions& options,
                     const DeliverFn& deliver);
 
+// The same, collecting the results by job index (empty for skipped jobs): on rank 0, and on
+// every rank with options.results_on_all_ranks (e.g. an objective summed on every rank).
+std::vector<std::string> RunJobsCollect(const JobSet& jobs, const JobRunnerOptions& options,
+                                        JobRunStats* stats = nullptr);
+
 // The handout order: indices not skipped, cost descending, ties by index. Exposed for tests.
 std::vector<std::size_t> HandoutOrder(const JobSet& jobs);
 

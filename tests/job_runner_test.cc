@@ -82,6 +82,22 @@ TEST(JobRunnerTest, InterruptionStartsNoNewJobAndKeepsEveryFinishedResult) {
   EXPECT_EQ(now.sa_handler, SIG_DFL);
 }
 
+TEST(JobRunnerTest, CollectReturnsResultsByJobIndex) {
+  JobSet jobs;
+  jobs.count = 9;
+  jobs.cost = [](std::size_t i) { return static_cast<double>(i % 3); };
+  jobs.skip = [](std::size_t i) { return i == 4; };
+  jobs.run = [](std::size_t i) { return std::string(i + 1, 'x'); };
+  JobRunnerOptions options;
+  options.threads = 2;
+  JobRunStats stats;
+  const std::vector<std::string> r = RunJobsCollect(jobs, options, &stats);
+  ASSERT_EQ(r.size(), 9u);
+  for (std::size_t i = 0; i < 9; ++i) EXPECT_EQ(r[i], i == 4 ? "" : std::string(i + 1, 'x'));
+  EXPECT_EQ(stats.ran, 8u);
+  EXPECT_EQ(stats.skipped, 1u);
+}
+
 TEST(JobRunnerTest, NothingToRunWhenEveryJobIsSkipped) {
   JobSet jobs;
   jobs.count = 3;
