@@ -35,21 +35,39 @@ ProbeReading AtOffset(EdgeProbe3d& probe, double offset_m, double yaw = 0) {
   return probe.Read(-offset_m, 0.0, yaw, kSurfaceZ, kCompression, kSettle);
 }
 
-TEST(PressurePluginTest, CupInAirReadsBelowFivePascal) {
+// The sensor noise band of a filtered reading: 5 sigma of the mean of the 7-sample window
+// (6 Pa per sample): 5 * 6 / sqrt(7) = 11.3 Pa per chamber, half that for the mean of four.
+constexpr double kChamberNoiseBandPa = 11.3;
+constexpr double kMeanNoiseBandPa = 5.7;
+
+TEST(PressurePluginTest, CupInAirReadsTheOpenCupValue) {
   auto probe = MakeProbe();
   ASSERT_TRUE(probe);
   const ProbeReading r = probe->Read(0.0, 0.0, 0.0, 0.2, 0.0, 0.2);  // 20 cm above the table
-  EXPECT_LT(r.static_pbar_pa, 5.0);
-  EXPECT_LT(r.pbar_pa, 5.0);
   EXPECT_EQ(r.lip_contacts, 0);
+  const double quadrant_mm2 = 0.25 * M_PI * 5.5 * 5.5;
+  for (int c = 0; c < 4; ++c) {
+    EXPECT_NEAR(r.sealed_area_mm2[c], 0.0, 1e-9) << "chamber " << c + 1;
+    EXPECT_NEAR(r.leak_area_mm2[c], quadrant_mm2, 1e-6) << "chamber " << c + 1;
+    // The network's reading for four open quadrants (flow_network_test pins 0.2560 Pa).
+    EXPECT_NEAR(r.static_pa[c], 0.2560, 0.0005) << "chamber " << c + 1;
+  }
+  EXPECT_NEAR(r.pbar_pa, r.static_pbar_pa, kMeanNoiseBandPa);
 }
 
-TEST(PressurePluginTest, CupOnPlateGraspsInEveryChamber) {
+TEST(PressurePluginTest, CupOnPlateReadsTheSealedValueInEveryChamber) {
   auto probe = MakeProbe();
   ASSERT_TRUE(probe);
   const ProbeReading r = AtOffset(*probe, 0.03);
-  for (int c = 0; c < 4; ++c) EXPECT_GT(r.filtered_pa[c], 10000.0) << "chamber " << c + 1;
   EXPECT_EQ(r.lip_contacts, 16);
+  // Every segment on the plate: each quadrant leaks through a quarter of the lip times the
+  // 18 um roughness gap, and the network reads 25091 Pa (flow_network_test).
+  const double rough_mm2 = 0.5 * M_PI * 5.5 * 18e-3;
+  for (int c = 0; c < 4; ++c) {
+    EXPECT_NEAR(r.leak_area_mm2[c], rough_mm2, 1e-3 * rough_mm2) << "chamber " << c + 1;
+    EXPECT_NEAR(r.static_pa[c], 25091, 1) << "chamber " << c + 1;
+    EXPECT_NEAR(r.filtered_pa[c], r.static_pa[c], kChamberNoiseBandPa) << "chamber " << c + 1;
+  }
 }
 
 TEST(PressurePluginTest, AcrossAStraightEdgeMeanRisesAndPointsAtThePlate) {
@@ -192,21 +210,41 @@ TEST(PressurePluginTest, BadConfigFailsTheLoadNamingKeyValueAndRange) {
   }
 }
 
-TEST(PressurePluginTest, MissingSiteOrLipIsReported) {
-  // A sensor on a body instead of a site.
+// Loads the tool model with `from` replaced by `to` in its text; the load error or "".
+std::string LoadEdited(const std::string& from, const std::string& to) {
   std::ifstream in(SourceDir() + "/models/ssc_tool.xml");
   std::stringstream buf;
   buf << in.rdbuf();
   std::string xml = buf.str();
-  const std::string site = "objtype=\"site\" objname=\"ssc_tool_site\"";
-  xml.replace(xml.find(site), site.size(), "objtype=\"site\" objname=\"no_such_site\"");
-  const auto path = std::filesystem::temp_directory_path() / "ssc_bad_site.xml";
+  const size_t at = xml.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at == std::string::npos) return "edit not applied";
+  xml.replace(at, from.size(), to);
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("ssc_bad_tool_" + std::to_string(::getpid()) + ".xml");
   std::ofstream(path) << xml;
   std::string error;
   ModelPtr model = LoadModel(path.string(), &error);
   std::filesystem::remove(path);
-  EXPECT_FALSE(model);
-  EXPECT_NE(error.find("no_such_site"), std::string::npos) << error;
+  return model ? "" : error;
+}
+
+TEST(PressurePluginTest, MissingSiteOrLipIsReported) {
+  // The plugin's own checks, not MuJoCo's compiler: the messages carry the plugin's name.
+  // A sensor on a body instead of the tool site (a valid MJCF that MuJoCo compiles).
+  const std::string on_body = LoadEdited("objtype=\"site\" objname=\"ssc_tool_site\"",
+                                         "objtype=\"body\" objname=\"ssc_cup\"");
+  ASSERT_FALSE(on_body.empty()) << "a pressure sensor on a body loaded";
+  EXPECT_NE(on_body.find(kChamberPressurePluginName), std::string::npos) << on_body;
+  EXPECT_NE(on_body.find("objtype=\"site\""), std::string::npos) << on_body;
+  // No lip: the lip group names a group without geoms under the tool site's body.
+  const std::string no_lip = LoadWithConfig("lip_geom_group", "5");
+  ASSERT_FALSE(no_lip.empty()) << "a cup without lip segments loaded";
+  EXPECT_NE(no_lip.find(kChamberPressurePluginName), std::string::npos) << no_lip;
+  EXPECT_NE(no_lip.find("found 0 lip segment geoms (group 5)"), std::string::npos) << no_lip;
+  // A site that does not exist is MuJoCo's compiler error; it must still fail the load.
+  const std::string no_site = LoadEdited("objname=\"ssc_tool_site\"/>", "objname=\"no_such_site\"/>");
+  EXPECT_NE(no_site.find("no_such_site"), std::string::npos) << no_site;
 }
 
 }  // namespace

@@ -32,18 +32,18 @@ class PythonBindingsTest(unittest.TestCase):
         def on_plate(m, d):
             d.mocap_pos[0] = [-0.03, 0.0, 0.010 - 0.001 + 0.146]
         p = self.pressures("probe_edge.xml", 200, on_plate)
-        self.assertTrue(all(p > 10000), p)
+        # The sealed cup's reading (tests/flow_network_test.cc: 25091 Pa) within the noise band
+        # of the filtered value (5 sigma of a 7-sample mean of 6 Pa noise: 11.3 Pa).
+        self.assertTrue(all(abs(p - 25091) < 11.3), p)
 
     def test_probe_scene_in_air_reads_near_zero(self):
         def in_air(m, d):
             d.mocap_pos[0] = [0.0, 0.0, 0.4]
         p = self.pressures("probe_edge.xml", 200, in_air)
-        self.assertLess(abs(p.mean()), 5.0, p)
+        # The open cup reads 0.256 Pa; the mean of four filtered chambers has 5 sigma = 5.7 Pa.
+        self.assertLess(abs(p.mean() - 0.256), 5.7, p)
 
     def test_disk_benchmark_scene_compiles_and_steps(self):
-        path = os.path.join(ROOT, "scenes", "disk_benchmark.xml")
-        if not os.path.exists(path):
-            self.skipTest("scenes/disk_benchmark.xml not present")
         p = self.pressures("disk_benchmark.xml", 100)
         self.assertTrue(all(abs(x) < 1e6 for x in p), p)
 
@@ -58,4 +58,6 @@ class PythonBindingsTest(unittest.TestCase):
 
 if __name__ == "__main__":
     result = unittest.main(exit=False, verbosity=2).result
-    sys.exit(0 if result.wasSuccessful() else 1)
+    # Exit 77 when anything was skipped: CTest reports it as skipped (SKIP_RETURN_CODE), never
+    # as passed.
+    sys.exit(1 if not result.wasSuccessful() else 77 if result.skipped else 0)

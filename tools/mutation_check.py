@@ -1,0 +1,298 @@
+#!/usr/bin/env python3
+"""Mutation check: does the test suite notice small deliberate bugs?
+
+Each mutation below is one small source edit (a sign flip, a threshold moved, a check removed,
+a documented default moved by 20 %). The tree is copied to a scratch directory (never the
+working tree), each mutation is applied there alone, the targets of the tests that should catch
+it are rebuilt incrementally in the scratch build directory, and those tests run through CTest
+(each test executable is a CTest label of its own name). A mutation is *caught* when the tests
+fail and *survives* when they pass. Not part of CI: a full run takes tens of minutes on 2 cores.
+
+  tools/mutation_check.py                    # all mutations, their own test labels
+  tools/mutation_check.py --only outcome-    # mutations whose id starts with a prefix
+  tools/mutation_check.py --full             # the whole CTest suite for every mutation
+  tools/mutation_check.py --list             # print the mutations and exit
+
+Run it niced (nice -n 10) on a shared machine. The result table (markdown) goes to stdout and,
+with --table FILE, to a file; docs/testing.md carries the last one. Exit status 1 when a mutation
+survives or a listed edit no longer applies (the list must follow the code).
+"""
+import argparse
+import dataclasses
+import filecmp
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+@dataclasses.dataclass
+class Mutation:
+    id: str
+    module: str
+    file: str
+    find: str  # must occur exactly once in the file
+    replace: str
+    what: str
+    labels: tuple  # CTest labels (= test executable names) expected to catch it
+
+
+M = Mutation
+MUTATIONS = [
+    # --- the three survivors of the issue-16 review ---
+    M("outcome-grasp-threshold+20", "outcomes", "controller/pure/trial_outcome.h",
+      "double grasp_pa = 10000.0;", "double grasp_pa = 12000.0;",
+      "failure II threshold raised by 20 %", ("trial_metrics_test",)),
+    M("plainlog-accepts-backwards-time", "robotlog", "robotlog/plain_log.cc",
+      "if (!log.t_s.empty() && !(v[kT] > log.t_s.back())) {",
+      "if (!log.t_s.empty() && v[kT] == log.t_s.back()) {",
+      "plain CSV accepts a time stamp before the previous one", ("robotlog_test",)),
+    M("robotlog-stream-time-unchecked", "robotlog", "robotlog/robot_log.cc",
+      "if (!std::isfinite(s.t_s[i]) || (i > 0 && !(s.t_s[i] > s.t_s[i - 1]))) {",
+      "if (!std::isfinite(s.t_s[i])) {",
+      "monotonic-time check removed from the stream check", ("robotlog_test",)),
+    # --- outcomes ---
+    M("outcome-success-sweep-354", "outcomes", "controller/pure/trial_outcome.h",
+      "double success_sweep_deg = 355.0;", "double success_sweep_deg = 354.0;",
+      "success declared 1 deg early", ("trial_metrics_test",)),
+    M("outcome-off-edge-threshold+20", "outcomes", "controller/pure/trial_outcome.h",
+      "double off_edge_pa = 5.0;", "double off_edge_pa = 6.0;",
+      "failure I threshold raised by 20 %", ("trial_metrics_test",)),
+    M("outcome-grasp-any-chamber", "outcomes", "controller/pure/trial_outcome.cc",
+      "all_grasped = all_grasped && v > t.grasp_pa;", "all_grasped = all_grasped || v > t.grasp_pa;",
+      "failure II when any (not all) chamber is over the threshold", ("trial_metrics_test",)),
+    M("outcome-sweep-sign", "outcomes", "controller/pure/trial_outcome.cc",
+      "swept_rad_ += std::remainder(a - last_angle_, 2 * M_PI);",
+      "swept_rad_ -= std::remainder(a - last_angle_, 2 * M_PI);",
+      "swept angle counted clockwise positive", ("trial_metrics_test",)),
+    # --- pneumatics: the documented defaults, each moved by 20 % ---
+    M("pneu-pump-max-vacuum+20", "pneumatics", "plugin/pneumatics/flow_network.h",
+      "double pump_max_vacuum_pa = 40000.0;", "double pump_max_vacuum_pa = 48000.0;",
+      "pump maximum vacuum +20 %", ("flow_network_test",)),
+    M("pneu-pump-free-flow-20", "pneumatics", "plugin/pneumatics/flow_network.h",
+      "double pump_free_flow_m3_s = 2.15e-4;", "double pump_free_flow_m3_s = 1.72e-4;",
+      "pump free flow -20 %", ("flow_network_test",)),
+    M("pneu-jet-area+20", "pneumatics", "plugin/pneumatics/flow_network.h",
+      "double jet_area_m2 = 7.0e-6;", "double jet_area_m2 = 8.4e-6;",
+      "tap jet area +20 %", ("flow_network_test",)),
+    M("pneu-neighbour-area+20", "pneumatics", "plugin/pneumatics/flow_network.h",
+      "double neighbour_area_m2 = 0.5e-6;", "double neighbour_area_m2 = 0.6e-6;",
+      "neighbour restriction area +20 %", ("flow_network_test",)),
+    M("pneu-neighbour-area-20", "pneumatics", "plugin/pneumatics/flow_network.h",
+      "double neighbour_area_m2 = 0.5e-6;", "double neighbour_area_m2 = 0.4e-6;",
+      "neighbour restriction area -20 %", ("flow_network_test",)),
+    M("pneu-port-area-20", "pneumatics", "plugin/pneumatics/flow_network.h",
+      "double port_area_m2 = 22.0e-6;", "double port_area_m2 = 17.6e-6;",
+      "port restriction area -20 %", ("flow_network_test",)),
+    M("pneu-tap-recovery-20", "pneumatics", "plugin/pneumatics/flow_network.h",
+      "double tap_recovery = 0.97;", "double tap_recovery = 0.776;",
+      "tap recovery -20 %", ("flow_network_test",)),
+    M("pneu-lip-roughness+20", "pneumatics", "plugin/pneumatics/cup_geometry.h",
+      "double lip_roughness_gap_m = 18e-6;", "double lip_roughness_gap_m = 21.6e-6;",
+      "lip roughness gap +20 %", ("flow_network_test", "cup_geometry_test")),
+    M("pneu-pump-curve-sign", "pneumatics", "plugin/pneumatics/flow_network.cc",
+      "r[kNumChambers] -= q_max * (1.0 - port / p_max);",
+      "r[kNumChambers] -= q_max * (1.0 - 0.9 * port / p_max);",
+      "pump curve slope 10 % shallower in the solver only", ("flow_network_test",)),
+    M("pneu-tap-adds-jet", "pneumatics", "plugin/pneumatics/flow_network.cc",
+      "sol.tap_pa[i] = x[i] - recovered;", "sol.tap_pa[i] = x[i] - 0.5 * recovered;",
+      "tap recovers half the jet it should", ("flow_network_test",)),
+    M("pneu-roughness-leak-dropped", "pneumatics", "plugin/pneumatics/cup_geometry.cc",
+      "leak[s.chamber] += s.arc_m * geometry.lip_roughness_gap_m;", ";",
+      "sealed lip segments stop leaking", ("cup_geometry_test", "flow_network_test")),
+    M("pneu-chamber-layout-swap", "pneumatics", "plugin/pneumatics/cup_geometry.cc",
+      "if (a >= 0.0) return a < kHalfPi ? 3 : 2;", "if (a >= 0.0) return a < kHalfPi ? 2 : 3;",
+      "chambers 3 and 4 swapped", ("cup_geometry_test",)),
+    # --- sensor chain ---
+    M("sensor-noise-doubled", "sensor chain", "plugin/pneumatics/sensor_chain.cc",
+      "state->window_pa[slot][c] = lagged + params.noise_pa * CounterGaussian(params.seed, k, c);",
+      "state->window_pa[slot][c] = lagged + 2 * params.noise_pa * CounterGaussian(params.seed, k, c);",
+      "sensor noise twice its sigma", ("sensor_chain_test",)),
+    M("sensor-lag-sign", "sensor chain", "plugin/pneumatics/sensor_chain.cc",
+      "1.0 - std::exp(-dt / params.lag_s)", "1.0 - std::exp(-2 * dt / params.lag_s)",
+      "lag time constant halved", ("sensor_chain_test",)),
+    M("sensor-window-short", "sensor chain", "plugin/pneumatics/sensor_chain.cc",
+      "for (int s = 0; s < n; ++s) {", "for (int s = 0; s + 1 < n; ++s) {",
+      "moving average drops one sample of the window", ("sensor_chain_test",)),
+    # --- control law ---
+    M("law-correction-sign", "control law", "controller/pure/contour_law.cc",
+      "const double fx = s.along_edge[0] + s.cf * s.correction[0];",
+      "const double fx = s.along_edge[0] - s.cf * s.correction[0];",
+      "correction term's x part flipped", ("contour_law_test",)),
+    M("law-cf-above-ref-sign", "control law", "controller/pure/contour_law.cc",
+      "return -params.beta * (x - xr) / (xg - xr);", "return params.beta * (x - xr) / (xg - xr);",
+      "above P_ref the cup is steered further in", ("contour_law_test",)),
+    M("law-dpy-sign", "control law", "controller/pure/contour_law.cc",
+      "s.dpy_pa = s.p_west_pa - s.p_east_pa;", "s.dpy_pa = s.p_east_pa - s.p_west_pa;",
+      "west-east differential flipped", ("contour_law_test",)),
+    # --- metrics ---
+    M("metrics-dr-sign", "metrics", "controller/pure/trial_metrics.cc",
+      "m.dr_mm = (r_mean - radius) * 1e3;", "m.dr_mm = (radius - r_mean) * 1e3;",
+      "radial offset sign flipped", ("trial_metrics_test",)),
+    M("metrics-sc-offset", "metrics", "controller/pure/trial_metrics.cc",
+      "m.s_c = s / (2 * M_PI * radius) - 1;", "m.s_c = s / (2 * M_PI * radius);",
+      "path-length ratio not minus one", ("trial_metrics_test",)),
+]
+
+
+def run(cmd, cwd=None, timeout=None, env=None):
+    return subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, timeout=timeout, env=env)
+
+
+def tree_files():
+    out = run(["git", "ls-files", "--cached", "--others", "--exclude-standard", "-z"], cwd=ROOT)
+    return [f for f in out.stdout.split("\0") if f and os.path.isfile(os.path.join(ROOT, f))]
+
+
+def sync_tree(src):
+    """Copies the working tree into src, touching only files whose content changed."""
+    files = set(tree_files())
+    for rel in files:
+        a, b = os.path.join(ROOT, rel), os.path.join(src, rel)
+        if os.path.exists(b) and filecmp.cmp(a, b, shallow=False):
+            continue
+        os.makedirs(os.path.dirname(b), exist_ok=True)
+        shutil.copy2(a, b)
+        os.utime(b)  # newer than the scratch build's objects
+    for dirpath, _, names in os.walk(src):
+        if os.path.basename(dirpath) == ".git" or "/.venv" in dirpath:
+            continue
+        for n in names:
+            rel = os.path.relpath(os.path.join(dirpath, n), src)
+            if rel not in files and not rel.startswith(".venv"):
+                os.remove(os.path.join(dirpath, n))
+    venv = os.path.join(src, ".venv")
+    if not os.path.lexists(venv) and os.path.exists(os.path.join(ROOT, ".venv")):
+        os.symlink(os.path.realpath(os.path.join(ROOT, ".venv")), venv)
+
+
+def targets_for(labels):
+    targets = {"ssc_plugin"}
+    for label in labels:
+        targets.update(["ssc"] if label == "python" else [label])
+    return sorted(targets)
+
+
+def build(build_dir, targets, jobs, log):
+    r = run(["cmake", "--build", build_dir, "-j", str(jobs), "--target", *targets], timeout=3600)
+    log.write(r.stdout[-4000:] + r.stderr[-4000:])
+    return r.returncode == 0
+
+
+def ctest(build_dir, labels, jobs, timeout, log):
+    cmd = ["ctest", "-j", str(jobs), "--timeout", str(timeout), "--output-on-failure"]
+    if labels:
+        cmd += ["-L", "^(" + "|".join(labels) + ")$"]
+    r = run(cmd, cwd=build_dir, timeout=7200)
+    log.write(r.stdout[-6000:] + r.stderr[-2000:])
+    # Summary lines: "\t  5 - FlowNetworkTest.Name (Failed)".
+    failed = [l.split(" - ", 1)[1].strip() for l in r.stdout.splitlines()
+              if l.startswith("\t") and " - " in l]
+    return r.returncode, failed, r.stdout
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    ap.add_argument("--scratch", default=os.path.join("/tmp", "ssc_mutation_" + os.path.basename(ROOT)))
+    ap.add_argument("--only", default="", help="run mutations whose id starts with this prefix")
+    ap.add_argument("--full", action="store_true", help="whole CTest suite for each mutation")
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--test-timeout", type=int, default=300, help="seconds per test")
+    ap.add_argument("--table", help="also write the markdown table here")
+    ap.add_argument("--list", action="store_true")
+    args = ap.parse_args()
+
+    chosen = [m for m in MUTATIONS if m.id.startswith(args.only)]
+    if args.list:
+        for m in chosen:
+            print(f"{m.id:36s} {m.module:12s} {m.file}: {m.what}")
+        return 0
+    ids = [m.id for m in MUTATIONS]
+    assert len(ids) == len(set(ids)), "duplicate mutation id"
+
+    src, build_dir = os.path.join(args.scratch, "src"), os.path.join(args.scratch, "build")
+    os.makedirs(args.scratch, exist_ok=True)
+    log = open(os.path.join(args.scratch, "mutation_check.log"), "w")
+    print(f"[mutation] scratch copy {src}, build {build_dir}", file=sys.stderr)
+    sync_tree(src)
+    if not os.path.exists(os.path.join(build_dir, "CMakeCache.txt")):
+        r = run(["cmake", "-S", src, "-B", build_dir, "-DCMAKE_BUILD_TYPE=Release",
+                 "-DSSC_PYTHON=" + os.path.join(src, ".venv", "bin", "python")])
+        if r.returncode != 0:
+            print(r.stdout + r.stderr, file=sys.stderr)
+            return 2
+
+    # Every edit must still apply: a stale list would silently test nothing.
+    stale = []
+    for m in chosen:
+        text = open(os.path.join(src, m.file)).read() if os.path.exists(os.path.join(src, m.file)) else ""
+        if text.count(m.find) != 1:
+            stale.append(f"{m.id}: '{m.find}' occurs {text.count(m.find)} times in {m.file}")
+    for s in stale:
+        print("[mutation] STALE " + s, file=sys.stderr)
+    chosen = [m for m in chosen if not any(s.startswith(m.id + ":") for s in stale)]
+
+    def labels_of(m):
+        return None if args.full else list(m.labels)
+
+    def targets_of(m):
+        return ["all"] if args.full else targets_for(m.labels)
+
+    # Baseline: the unmutated tree must pass the tests each mutation relies on.
+    all_labels = sorted({l for m in chosen for l in m.labels})
+    print("[mutation] baseline build and tests", file=sys.stderr)
+    if not build(build_dir, ["all"] if args.full else targets_for(all_labels), args.jobs, log):
+        print("[mutation] baseline does not build; see " + log.name, file=sys.stderr)
+        return 2
+    rc, failed, _ = ctest(build_dir, None if args.full else all_labels, args.jobs,
+                          args.test_timeout, log)
+    if rc != 0:
+        print("[mutation] baseline fails: " + "; ".join(failed), file=sys.stderr)
+        return 2
+
+    rows = []
+    for m in chosen:
+        path = os.path.join(src, m.file)
+        original = open(path).read()
+        t0 = time.time()
+        try:
+            open(path, "w").write(original.replace(m.find, m.replace))
+            log.write(f"\n===== {m.id} =====\n")
+            if not build(build_dir, targets_of(m), args.jobs, log):
+                verdict, detail = "build error", "the mutant does not compile"
+            else:
+                rc, failed, _ = ctest(build_dir, labels_of(m), args.jobs, args.test_timeout, log)
+                verdict = "caught" if rc != 0 else "SURVIVED"
+                detail = "; ".join(failed[:3]) + (f" (+{len(failed) - 3})" if len(failed) > 3 else "")
+        finally:
+            open(path, "w").write(original)
+        rows.append((m, verdict, detail, time.time() - t0))
+        print(f"[mutation] {m.id:36s} {verdict:9s} {time.time() - t0:6.0f} s  {detail}",
+              file=sys.stderr)
+    # Leave the scratch build matching the tree again.
+    build(build_dir, ["all"] if args.full else targets_for(all_labels), args.jobs, log)
+
+    lines = ["| mutation | module | edit | tests run | result | first failing tests |",
+             "| --- | --- | --- | --- | --- | --- |"]
+    for m, verdict, detail, _ in rows:
+        scope = "all (ctest)" if args.full else ", ".join(m.labels)
+        lines.append(f"| `{m.id}` | {m.module} | {m.what} (`{m.file}`) | {scope} | {verdict} | "
+                     f"{detail} |")
+    caught = sum(1 for r in rows if r[1] == "caught")
+    lines.append("")
+    lines.append(f"{caught} of {len(rows)} caught; survived: "
+                 f"{', '.join(r[0].id for r in rows if r[1] == 'SURVIVED') or 'none'}; "
+                 f"build errors: {sum(1 for r in rows if r[1] == 'build error')}; "
+                 f"stale edits: {len(stale)}.")
+    table = "\n".join(lines)
+    print(table)
+    if args.table:
+        open(args.table, "w").write(table + "\n")
+    return 1 if stale or any(r[1] != "caught" for r in rows) else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
