@@ -267,6 +267,10 @@ ContourPath ContourPath::Polygon(const std::vector<Point2>& points, bool closed)
   return ContourPath(std::move(pieces), closed);
 }
 
+ContourPath ContourPath::Circle(const Point2& centre, double radius_m) {
+  return ContourPath({PathPiece::Arc(centre, radius_m, 0, 2 * kPi)}, true);
+}
+
 std::vector<Point2> ContourPath::Vertices(double tolerance_m) const {
   std::vector<Point2> line;
   for (const PathPiece& p : pieces_) {

@@ -49,6 +49,8 @@ class ContourPath {
   // The polyline through `points` (repeated points are skipped); `closed` joins the last point
   // to the first.
   static ContourPath Polygon(const std::vector<Point2>& points, bool closed);
+  // A circle walked counter-clockwise from its east point.
+  static ContourPath Circle(const Point2& centre, double radius_m);
 
   bool closed() const { return closed_; }
   double Length() const { return total_m_; }

@@ -49,6 +49,7 @@ void FinishSpec(ObjectSpec* spec, double start_arc_m, double inset_m, const Poin
   } else {
     t.goal = TrialGoal::GoalPoint(end_arc_m);
   }
+  t.goal.band_m = kFollowBandM;
 }
 
 }  // namespace spec_internal

@@ -23,7 +23,8 @@ constexpr double kHoleSagittaM = 0.03 * kMm; // largest chord-to-circle gap of t
 constexpr double kCornerEdgeM = 60 * kMm;    // both straight edges of a corner
 constexpr double kCornerReachM = 70 * kMm;   // radius of the corner's round back
 constexpr double kCornerStartM = 40 * kMm;   // start: this far before the apex on edge 1
-constexpr double kCornerPastM = 30 * kMm;    // success: this far past the apex on edge 2
+// Success: the cup follows edge 2 for one body diameter past the apex.
+constexpr double kCornerPastM = kCupBodyDiameterMm * kMm;
 constexpr double kCupBodyRadiusM = 0.5 * kCupBodyDiameterMm * kMm;
 
 ObjectSpec Disk(const std::string& name, double diameter_mm) {
@@ -36,6 +37,7 @@ ObjectSpec Disk(const std::string& name, double diameter_mm) {
   s.pieces.push_back(ConvexPiece::Cylinder(W(), r));
   // East side, inside by the inset (a disk smaller than that: the cup starts over its centre).
   FinishSpec(&s, 0, std::min(kStartInsetM, r), W(), 0);
+  s.trial.goal = TrialGoal::AroundDisk(W(), r);
   // A disk wider than the cup body lands on its centre and moves out to the start, as published
   // for the 35 mm disk; on a smaller one the lip might miss it, so the cup lands at the start.
   if (r > kCupBodyRadiusM) s.trial.landing_xy_m = W();

@@ -24,7 +24,9 @@ TrialTarget TrialTarget::Disk(double centre_x_m, double centre_y_m, double radiu
   TrialTarget t;
   t.approach = {centre_x_m, centre_y_m};
   t.start = {centre_x_m + start_offset_m, centre_y_m};
-  t.goal = TrialGoal::SweptAngle({centre_x_m, centre_y_m}, kLoopSweepDeg);
+  t.goal = TrialGoal::AroundDisk({centre_x_m, centre_y_m}, radius_m);
+  t.edge = std::make_shared<const ContourPath>(
+      ContourPath::Circle({centre_x_m, centre_y_m}, radius_m));
   t.disk_radius_m = radius_m;
   return t;
 }
@@ -186,7 +188,7 @@ void ContourTrial::Finish(Outcome outcome, const std::string& detail) {
       result_.metrics.r_mean_mm = result_.metrics.dr_mm = result_.metrics.sigma_r_mm = 0;
       result_.metrics.s_c = 0;
     }
-    if (tg.edge) {
+    if (tg.edge && tg.disk_radius_m <= 0) {  // (round a disk: |r - R| above)
       const ContourPath& edge = *tg.edge;
       const auto e = ContourError(
           path_xy_, [&edge](double x, double y) { return edge.Project(x, y).distance_m; });
@@ -293,10 +295,10 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
       servo_->SetTarget({tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], hold_z_});
       Log(true);
       const SampleCheck check = ClassifySample(config_.thresholds, p, FtNormalForce(),
-                                               goal_.reached(), t - follow_start_s_,
+                                               goal_.status(), t - follow_start_s_,
                                                config_.timeout_s);
-      if (check.outcome == Outcome::kSuccess) {
-        Finish(check.outcome, goal_.ReachedDetail());
+      if (check.outcome == Outcome::kSuccess || check.outcome == Outcome::kLostEdge) {
+        Finish(check.outcome, goal_.Detail());
       } else if (check.outcome != Outcome::kRunning) {
         Finish(check.outcome, check.detail);
       }

@@ -35,14 +35,15 @@ const char* PhaseName(TrialPhase phase);
 struct TrialTarget {
   Point2 approach{kWorkspaceX, kWorkspaceY};         // the cup descends here (world x/y, m)
   Point2 start{kWorkspaceX + 0.032, kWorkspaceY};    // cup centre when following starts
-  TrialGoal goal;                  // default: kLoopSweepDeg counter-clockwise about W
+  TrialGoal goal = TrialGoal::AroundDisk({kWorkspaceX, kWorkspaceY}, 0.035);
   double disk_radius_m = 0.035;    // > 0: r_mean / dr / sigma_r about the goal's centre
   double surface_top_z_m = 0.010;  // the approach never takes the lip plane deeper than
                                    // max_compression_m below this
   double max_compression_m = 0.002;
-  // The true contour: the contour distance, the tracked arc position, goal points. Unset: the
-  // disk circle gives the contour distance.
-  std::shared_ptr<const ContourPath> edge;
+  // The true contour: the contour distance, the tracked arc position, goal points, the band of
+  // following (the default: the benchmark disk's circle).
+  std::shared_ptr<const ContourPath> edge =
+      std::make_shared<const ContourPath>(ContourPath::Circle({kWorkspaceX, kWorkspaceY}, 0.035));
 
   // The disk benchmark with its start point `start_offset_m` east of the centre.
   static TrialTarget Disk(double centre_x_m, double centre_y_m, double radius_m,

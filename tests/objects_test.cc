@@ -210,6 +210,16 @@ TEST(ObjectRegistryTest, PublishedSetWithStartsOnTheEdge) {
       EXPECT_GT(t.goal.goal_arc_m, t.start_arc_m + 0.05);
       EXPECT_LE(t.goal.goal_arc_m, spec.edge.Length());
     }
+    // Following: every object's goal holds the cup within its body radius of the edge; only
+    // disks narrower than the 11 mm opening can never count as followed.
+    EXPECT_DOUBLE_EQ(t.goal.band_m, 0.0115) << spec.name;
+    EXPECT_EQ(!t.goal.never_followed.empty(),
+              spec.kind == ObjectKind::kDisk && spec.param < kCupOpeningDiameterMm)
+        << spec.name;
+    if (spec.kind == ObjectKind::kCorner) {
+      // A corner passes one body diameter past its apex, on the second edge (60 mm each).
+      EXPECT_NEAR(t.goal.goal_arc_m - 0.060, 0.023, 1e-12) << spec.name;
+    }
   }
   // The benchmark disk: land on the centre, start 32 mm east of it (as published); elsewhere the
   // cup lands where it starts.
@@ -576,6 +586,16 @@ void ExpectOutcome(const char* name, Outcome expected, double goal_arc_m = -1) {
 TEST(ObjectTrialsTest, LargeDisk) { ExpectOutcome("disk_r35", Outcome::kSuccess); }
 TEST(ObjectTrialsTest, Hole) { ExpectOutcome("hole_d10", Outcome::kSuccess); }
 TEST(ObjectTrialsTest, ConcaveCorner) { ExpectOutcome("corner_a270", Outcome::kSuccess); }
+// Issue 12: the cup covers a 10 mm disk (11 mm opening) and turns over it: never a success.
+TEST(ObjectTrialsTest, DiskSmallerThanTheOpeningIsNotFollowed) {
+  const ObjectSpec spec = ObjectByName("disk_d10");
+  const Loaded l = Load((SceneDir() / ObjectFileNames("disk_d10").gantry_scene).string());
+  ASSERT_TRUE(l.m);
+  ContourLawParams law;
+  law.step_mm = 0.5;
+  const ObjectTrialRow row = RunObjectTrial(l.m.get(), spec, law, 1, false);
+  EXPECT_NE(row.result.outcome, Outcome::kSuccess) << row.result.detail;
+}
 TEST(ObjectTrialsTest, FilletSharpEnd) { ExpectOutcome("fillet", Outcome::kSuccess, 0.040); }
 
 }  // namespace

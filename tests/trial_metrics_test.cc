@@ -82,7 +82,9 @@ TEST(SweepTrackerTest, CountsCounterClockwisePositiveAndUnwraps) {
 TEST(TrialOutcomeTest, ClassifiesEachEnd) {
   TrialThresholds t;
   auto cls = [&](std::array<double, 4> p, double force, bool reached, double elapsed) {
-    return ClassifySample(t, p, force, reached, elapsed, 100).outcome;
+    return ClassifySample(t, p, force, reached ? GoalStatus::kReached : GoalStatus::kPending,
+                          elapsed, 100)
+        .outcome;
   };
   EXPECT_EQ(cls({100, 0, 0, 100}, 1.5, false, 10), Outcome::kRunning);
   EXPECT_EQ(cls({100, 0, 0, 100}, 1.5, true, 10), Outcome::kSuccess);
@@ -93,8 +95,12 @@ TEST(TrialOutcomeTest, ClassifiesEachEnd) {
   EXPECT_EQ(cls({100, 0, 0, 100}, 101, true, 10), Outcome::kUnstable);  // before success
   EXPECT_EQ(cls({NAN, 0, 0, 100}, 1.5, false, 10), Outcome::kUnstable);
   EXPECT_EQ(cls({100, 0, 0, 100}, 1.5, false, 101), Outcome::kTimeout);
+  // A lost goal ends the trial before success and before the pressure failures.
+  EXPECT_EQ(ClassifySample(t, {20000, 20000, 20000, 20000}, 1.5, GoalStatus::kLost, 10, 100).outcome,
+            Outcome::kLostEdge);
   EXPECT_STREQ(OutcomeName(Outcome::kFailureOffEdge), "failure_I");
   EXPECT_STREQ(OutcomeName(Outcome::kFailureGrasp), "failure_II");
+  EXPECT_STREQ(OutcomeName(Outcome::kLostEdge), "lost_edge");
 }
 
 // A circle of radius r about c, walked from angle a0 over `sweep` rad in n steps.
@@ -121,7 +127,7 @@ TEST(TrialGoalTest, SweptAngleIsReachedOnlyInItsSense) {
   }
   EXPECT_TRUE(ccw.reached());
   EXPECT_FALSE(cw.reached());
-  EXPECT_EQ(ccw.ReachedDetail(), "swept 356 deg");
+  EXPECT_EQ(ccw.Detail(), "swept 356 deg");
 }
 
 TEST(TrialGoalTest, GoalPointFollowsTheEdgeAndIgnoresNearbyParts) {
@@ -144,6 +150,66 @@ TEST(TrialGoalTest, GoalPointFollowsTheEdgeAndIgnoresNearbyParts) {
   GoalTracker blind;
   blind.Start(TrialGoal::GoalPoint(0.0), nullptr, {0, 0});
   EXPECT_FALSE(blind.reached());
+}
+
+// Issue 12: following means the edge stays under the cup body all the way round.
+TEST(TrialGoalTest, LeavingTheBandLosesTheGoal) {
+  const Point2 c{0.65, 0};
+  const double r = 0.035;
+  auto edge = std::make_shared<ContourPath>(ContourPath::Circle(c, r));
+  const TrialGoal goal = TrialGoal::AroundDisk(c, r);
+  ASSERT_NEAR(goal.band_m, 0.0115, 1e-12);
+  // 3 mm inside the edge all the way round: followed.
+  GoalTracker inside;
+  const auto near = Arc(c, r - 0.003, 0, 2 * M_PI * 356 / 360, 712);
+  inside.Start(goal, edge, near[0]);
+  for (size_t i = 1; i < near.size(); ++i) inside.Add(near[i]);
+  EXPECT_EQ(inside.status(), GoalStatus::kReached) << inside.Detail();
+  EXPECT_NEAR(inside.max_distance_m(), 0.003, 1e-6);
+  // The same loop, but half-way round the cup cuts 12 mm in toward the centre and back.
+  GoalTracker cut;
+  cut.Start(goal, edge, near[0]);
+  for (size_t i = 1; i < near.size(); ++i) {
+    const double a = 2 * M_PI * 356 / 360 * static_cast<double>(i) / 712;
+    const double rr = (i > 340 && i < 360) ? r - 0.0125 : r - 0.003;
+    cut.Add({c[0] + rr * std::cos(a), c[1] + rr * std::sin(a)});
+    if (i == 345) EXPECT_EQ(cut.status(), GoalStatus::kLost);
+  }
+  EXPECT_EQ(cut.status(), GoalStatus::kLost) << "swept " << cut.swept_deg();
+  EXPECT_NE(cut.Detail().find("left the 11.5 mm band"), std::string::npos) << cut.Detail();
+  // A band without an edge to measure against is never followed.
+  GoalTracker blind;
+  blind.Start(goal, nullptr, near[0]);
+  EXPECT_EQ(blind.status(), GoalStatus::kLost);
+}
+
+TEST(TrialGoalTest, ADiskSmallerThanTheOpeningIsNeverFollowed) {
+  const Point2 c{0.65, 0};
+  // 10 mm disk, opening 11 mm: the cup sits over it and turns about its centre, 1 mm off it.
+  const double small = 0.005;
+  auto small_edge = std::make_shared<ContourPath>(ContourPath::Circle(c, small));
+  const TrialGoal small_goal = TrialGoal::AroundDisk(c, small);
+  EXPECT_FALSE(small_goal.never_followed.empty());
+  GoalTracker over;
+  const auto wobble = Arc(c, 0.001, 0, 2 * M_PI * 377 / 360, 754);
+  over.Start(small_goal, small_edge, wobble[0]);
+  for (size_t i = 1; i < wobble.size(); ++i) over.Add(wobble[i]);
+  EXPECT_EQ(over.status(), GoalStatus::kLost) << over.Detail();
+  EXPECT_NE(over.Detail().find("smaller than the cup's 11 mm opening"), std::string::npos);
+  // Before the sweep completes it is still pending (the trial goes on).
+  GoalTracker part;
+  part.Start(small_goal, small_edge, wobble[0]);
+  for (size_t i = 1; i < 300; ++i) part.Add(wobble[i]);
+  EXPECT_EQ(part.status(), GoalStatus::kPending);
+  // 12 mm disk, wider than the opening, followed 3 mm outside its edge: counts.
+  const double wide = 0.006;
+  const TrialGoal wide_goal = TrialGoal::AroundDisk(c, wide);
+  EXPECT_TRUE(wide_goal.never_followed.empty());
+  GoalTracker round;
+  const auto loop = Arc(c, wide + 0.003, 0, 2 * M_PI * 356 / 360, 712);
+  round.Start(wide_goal, std::make_shared<ContourPath>(ContourPath::Circle(c, wide)), loop[0]);
+  for (size_t i = 1; i < loop.size(); ++i) round.Add(loop[i]);
+  EXPECT_EQ(round.status(), GoalStatus::kReached) << round.Detail();
 }
 
 TEST(TrialGoalTest, ValidateNamesTheField) {

@@ -78,6 +78,7 @@ TEST(TrialTest, ObjectOnTheRightTravelsClockwise) {
 TEST(TrialTest, StartingOffTheObjectIsFailureOne) {
   TrialConfig c;
   c.target.start = {0.65 + 0.050, 0.0};  // 15 mm beyond the edge: nothing under the cup
+  c.target.goal.band_m = 0;  // under test: the pressure failure, not the band of following
   const TrialResult r = Trial(100, 2.0, 2.5, 1, c);
   EXPECT_EQ(r.outcome, Outcome::kFailureOffEdge) << r.detail;
 }
@@ -85,8 +86,16 @@ TEST(TrialTest, StartingOffTheObjectIsFailureOne) {
 TEST(TrialTest, PushedOntoTheSurfaceIsFailureTwo) {
   TrialConfig c;
   c.target.start = {0.65, 0.0};  // stay on the disk centre: the cup seals
+  c.target.goal.band_m = 0;  // under test: the pressure failure, not the band of following
   const TrialResult r = Trial(100, 2.0, 2.5, 1, c);
   EXPECT_EQ(r.outcome, Outcome::kFailureGrasp) << r.detail;
+}
+
+TEST(TrialTest, StartingFarOffTheEdgeLosesIt) {
+  TrialConfig c;  // the benchmark's goal: round the disk within the cup body radius of its edge
+  c.target.start = {0.65 + 0.050, 0.0};  // 15 mm beyond the edge
+  const TrialResult r = Trial(100, 2.0, 2.5, 1, c);
+  EXPECT_EQ(r.outcome, Outcome::kLostEdge) << r.detail;
 }
 
 TEST(TrialTest, SameSeedSameTrajectory) {

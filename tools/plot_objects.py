@@ -16,7 +16,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 OPENING_MM, BODY_MM = 11.0, 23.0
 COLOURS = {"success": "tab:green", "failure_I": "tab:orange", "failure_II": "tab:red",
-           "timeout": "tab:purple", "unstable": "black"}
+           "timeout": "tab:purple", "unstable": "black", "lost_edge": "tab:brown"}
 
 
 def read_xy(path):

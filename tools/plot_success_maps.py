@@ -39,8 +39,9 @@ def main():
                 continue
             n = len(outcomes)
             ok = outcomes.count("success")
-            mark = "" if ok == n else ("I" if outcomes.count("failure_I") >= outcomes.count(
-                "failure_II") else "II")
+            modes = {"I": outcomes.count("failure_I"), "II": outcomes.count("failure_II"),
+                     "L": outcomes.count("lost_edge")}
+            mark = "" if ok == n else max(modes, key=modes.get)
             if outcomes.count("unstable"):
                 mark = "U"
             ax.text(prefs.index(p), betas.index(b), f"{ok}/{n}\n{mark}", ha="center",
@@ -53,7 +54,7 @@ def main():
         ax.set_ylabel("beta")
         ax.set_title(f"dL = {step:g} mm")
     fig.colorbar(im, ax=axes[0].tolist(), label="success rate")
-    fig.suptitle("success rate (I / II: dominant failure mode)")
+    fig.suptitle("success rate (I / II / L = lost edge: dominant failure mode)")
     fig.savefig(sys.argv[2], dpi=110, bbox_inches="tight")
 
 

@@ -1,5 +1,6 @@
 #include "controller/pure/trial_goal.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <utility>
@@ -11,6 +12,18 @@ TrialGoal TrialGoal::SweptAngle(const Point2& centre, double sweep_deg) {
   g.kind = Kind::kSweptAngle;
   g.centre = centre;
   g.sweep_deg = sweep_deg;
+  return g;
+}
+
+TrialGoal TrialGoal::AroundDisk(const Point2& centre, double radius_m) {
+  TrialGoal g = SweptAngle(centre, kLoopSweepDeg);
+  g.band_m = kFollowBandM;
+  if (2 * radius_m < kCupOpeningDiameterMm * 1e-3) {
+    std::ostringstream os;
+    os << "a disk of " << 2e3 * radius_m << " mm is smaller than the cup's "
+       << kCupOpeningDiameterMm << " mm opening: the cup covers it, it does not follow its edge";
+    g.never_followed = os.str();
+  }
   return g;
 }
 
@@ -31,6 +44,9 @@ std::string TrialGoal::Validate() const {
   } else if (!std::isfinite(goal_arc_m) || goal_arc_m < 0) {
     os << "goal goal_arc_m = " << goal_arc_m << " is out of range [0, inf) m";
   }
+  if (!std::isfinite(band_m) || band_m < 0 || band_m > 1) {
+    os << "goal band_m = " << band_m << " is out of range [0, 1] m";
+  }
   return os.str();
 }
 
@@ -42,14 +58,25 @@ void GoalTracker::Start(const TrialGoal& goal, std::shared_ptr<const ContourPath
   if (goal_.kind == TrialGoal::Kind::kSweptAngle) {
     sweep_.Reset(goal_.centre[0], goal_.centre[1], p[0], p[1]);
   }
-  arc_m_ = edge_ ? edge_->ArcPosition(p[0], p[1]) : 0.0;
+  arc_m_ = 0;
+  max_distance_m_ = 0;
+  left_band_ = false;
+  if (edge_) Track(p, 0, edge_->Length());
 }
 
 void GoalTracker::Add(const Point2& p) {
   if (goal_.kind == TrialGoal::Kind::kSweptAngle) sweep_.Add(p[0], p[1]);
-  if (edge_) {
-    arc_m_ = edge_->ProjectWithin(p[0], p[1], arc_m_ - kArcTrackWindowM, arc_m_ + kArcTrackWindowM)
-                 .arc_m;
+  if (edge_) Track(p, arc_m_ - kArcTrackWindowM, arc_m_ + kArcTrackWindowM);
+}
+
+void GoalTracker::Track(const Point2& p, double s_min, double s_max) {
+  const ContourProjection pr = edge_->ProjectWithin(p[0], p[1], s_min, s_max);
+  arc_m_ = pr.arc_m;
+  max_distance_m_ = std::max(max_distance_m_, pr.distance_m);
+  // Once lost, the goal stays lost (a trial that reached it first has already ended).
+  if (!left_band_ && goal_.band_m > 0 && pr.distance_m > goal_.band_m && !ProgressReached()) {
+    left_band_ = true;
+    left_at_ = p;
   }
 }
 
@@ -57,18 +84,33 @@ double GoalTracker::Progress() const {
   return goal_.sweep_deg < 0 ? -sweep_.swept_deg() : sweep_.swept_deg();
 }
 
-bool GoalTracker::reached() const {
+bool GoalTracker::ProgressReached() const {
   if (goal_.kind == TrialGoal::Kind::kSweptAngle) return Progress() >= std::fabs(goal_.sweep_deg);
   return edge_ != nullptr && arc_m_ >= goal_.goal_arc_m;
 }
 
-std::string GoalTracker::ReachedDetail() const {
+GoalStatus GoalTracker::status() const {
+  // A band needs the edge to measure against: without one the goal can never be followed.
+  if (left_band_ || (goal_.band_m > 0 && !edge_)) return GoalStatus::kLost;
+  if (!ProgressReached()) return GoalStatus::kPending;
+  return goal_.never_followed.empty() ? GoalStatus::kReached : GoalStatus::kLost;
+}
+
+std::string GoalTracker::Detail() const {
   std::ostringstream os;
+  if (left_band_) {
+    os << "left the " << goal_.band_m * 1e3 << " mm band about the edge at ("
+       << left_at_[0] * 1e3 << ", " << left_at_[1] * 1e3 << ") mm, "
+       << arc_m_ * 1e3 << " mm along it";
+    return os.str();
+  }
+  if (goal_.band_m > 0 && !edge_) return "a band of following needs the edge";
   if (goal_.kind == TrialGoal::Kind::kSweptAngle) {
     os << "swept " << Progress() << " deg";
   } else {
     os << "reached the goal point, " << arc_m_ * 1e3 << " mm along the edge";
   }
+  if (!goal_.never_followed.empty() && ProgressReached()) os << ", but " << goal_.never_followed;
   return os.str();
 }
 

@@ -5,6 +5,11 @@
 //   goal point (open contours: corners, strips, the fillet): the cup's tracked position along
 //     the edge passes the goal point's arc position.
 //
+// Following (issue 12): with a band, the cup centre must stay within band_m of the edge it is
+// tracking at every sample from the start to the goal; leaving the band loses the goal. A goal
+// marked never_followed (a disk the cup's opening covers whole: the cup sits over it and turns
+// about its centre without ever following the edge) is lost when it would have been reached.
+//
 // The tracked arc position follows the cup along the edge: each sample may move it at most
 // kArcTrackWindowM from the previous one, so it cannot jump to another part of the contour that
 // passes close by.
@@ -23,6 +28,8 @@ namespace ssc {
 
 inline constexpr double kLoopSweepDeg = 355;      // the implementation's "one loop"
 inline constexpr double kArcTrackWindowM = 0.010;  // largest move of the tracked arc position
+// The band of following: the edge stays under the cup body (its radius), m.
+inline constexpr double kFollowBandM = 0.5e-3 * kCupBodyDiameterMm;
 
 struct TrialGoal {
   enum class Kind { kSweptAngle, kGoalPoint };
@@ -30,9 +37,14 @@ struct TrialGoal {
   Point2 centre{kWorkspaceX, kWorkspaceY};  // kSweptAngle: the swept angle is measured about it
   double sweep_deg = kLoopSweepDeg;         // kSweptAngle: signed, > 0 counter-clockwise
   double goal_arc_m = 0;                    // kGoalPoint: arc position of the goal on the edge
+  double band_m = 0;          // > 0: the cup centre must stay this close to the tracked edge
+  std::string never_followed;  // non-empty: why this goal never counts as followed
 
   static TrialGoal SweptAngle(const Point2& centre, double sweep_deg);
   static TrialGoal GoalPoint(double goal_arc_m);
+  // Counter-clockwise round a disk of radius_m about centre, within kFollowBandM; never
+  // followed when the disk is smaller than the cup's opening.
+  static TrialGoal AroundDisk(const Point2& centre, double radius_m);
   // Empty when valid, else names the field and its range.
   std::string Validate() const;
 };
@@ -46,19 +58,26 @@ class GoalTracker {
   // One path sample.
   void Add(const Point2& p);
 
-  bool reached() const;
-  // Why the goal counts as reached, with the deciding value ("swept 356.1 deg").
-  std::string ReachedDetail() const;
+  GoalStatus status() const;
+  bool reached() const { return status() == GoalStatus::kReached; }
+  // Why the goal is reached or lost, with the deciding value ("swept 356.1 deg").
+  std::string Detail() const;
   double swept_deg() const { return sweep_.swept_deg(); }  // signed, 0 for kGoalPoint goals
   double arc_m() const { return arc_m_; }                  // tracked arc position (edge given)
+  double max_distance_m() const { return max_distance_m_; }  // from the tracked edge so far
 
  private:
   double Progress() const;  // kSweptAngle: swept angle in the goal's sense, deg
+  bool ProgressReached() const;
+  void Track(const Point2& p, double s_min, double s_max);
 
   TrialGoal goal_;
   std::shared_ptr<const ContourPath> edge_;
   SweepTracker sweep_;
   double arc_m_ = 0;
+  double max_distance_m_ = 0;
+  bool left_band_ = false;
+  Point2 left_at_{};
 };
 
 }  // namespace ssc

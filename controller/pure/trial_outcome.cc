@@ -13,6 +13,7 @@ const char* OutcomeName(Outcome outcome) {
     case Outcome::kFailureGrasp: return "failure_II";
     case Outcome::kTimeout: return "timeout";
     case Outcome::kUnstable: return "unstable";
+    case Outcome::kLostEdge: return "lost_edge";
   }
   return "?";
 }
@@ -38,7 +39,7 @@ void SweepTracker::Add(double x, double y) {
 }
 
 SampleCheck ClassifySample(const TrialThresholds& t, const std::array<double, 4>& p,
-                           double contact_force_n, bool goal_reached, double elapsed_s,
+                           double contact_force_n, GoalStatus goal, double elapsed_s,
                            double timeout_s) {
   SampleCheck c;
   std::ostringstream os;
@@ -56,7 +57,11 @@ SampleCheck ClassifySample(const TrialThresholds& t, const std::array<double, 4>
     c.detail = os.str();
     return c;
   }
-  if (goal_reached) {
+  if (goal == GoalStatus::kLost) {
+    c.outcome = Outcome::kLostEdge;
+    return c;
+  }
+  if (goal == GoalStatus::kReached) {
     c.outcome = Outcome::kSuccess;
     return c;
   }

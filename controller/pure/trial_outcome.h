@@ -16,10 +16,14 @@ struct TrialThresholds {
   double max_contact_force_n = 100.0; // safety: unstable beyond this |F/T| force
 };
 
-enum class Outcome { kRunning, kSuccess, kFailureOffEdge, kFailureGrasp, kTimeout, kUnstable };
+// kLostEdge: the trial's goal can no longer count as followed: the cup centre left the band
+// about the edge, or it circled a feature its opening covers whole (trial_goal.h).
+enum class Outcome {
+  kRunning, kSuccess, kFailureOffEdge, kFailureGrasp, kTimeout, kUnstable, kLostEdge
+};
 
 // The text form, as written in tables and summaries: "running", "success", "failure_I",
-// "failure_II", "timeout", "unstable".
+// "failure_II", "timeout", "unstable", "lost_edge".
 const char* OutcomeName(Outcome outcome);
 
 // Signed swept angle of a point about a centre, unwrapped (counter-clockwise positive seen from
@@ -40,10 +44,14 @@ struct SampleCheck {
   std::string detail;  // the value that decided, with units
 };
 
-// Classifies one sample. Order: unstable (non-finite input, force beyond the safety limit),
-// success (the goal is reached; the caller words the detail), failure II, failure I, timeout.
+// Where the trial stands against its goal (GoalTracker::status()).
+enum class GoalStatus { kPending, kReached, kLost };
+
+// Classifies one sample. Order: unstable (non-finite input, force beyond the safety limit), lost
+// edge, success (the goal is reached), failure II, failure I, timeout. For the two goal outcomes
+// the caller words the detail (GoalTracker::Detail()).
 SampleCheck ClassifySample(const TrialThresholds& t, const std::array<double, 4>& p_pa,
-                           double contact_force_n, bool goal_reached, double elapsed_s,
+                           double contact_force_n, GoalStatus goal, double elapsed_s,
                            double timeout_s);
 
 }  // namespace ssc
