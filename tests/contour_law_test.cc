@@ -74,6 +74,16 @@ TEST(ContourLawTest, StepCombinesTangentAndCorrection) {
   EXPECT_NEAR(s.step_m[0], 5e-3 * (-1.0) / n, 1e-12);  // north component
   EXPECT_NEAR(s.step_m[1], 5e-3 * cf / n, 1e-12);      // west component
   EXPECT_NEAR(std::hypot(s.step_m[0], s.step_m[1]), 5e-3, 1e-12);
+  // Object to the south (chambers 1, 4 covered), mean 50 Pa: the tangent is west and c_f > 0
+  // steers south (+x): both parts of the correction carry their sign.
+  const ContourStep south = ComputeContourStep({100, 0, 0, 100}, p);
+  ASSERT_TRUE(south.moving);
+  EXPECT_NEAR(south.step_m[0], 5e-3 * cf / n, 1e-12);  // south component
+  EXPECT_NEAR(south.step_m[1], 5e-3 * 1.0 / n, 1e-12);  // west component
+  // Above P_ref (mean 1000 Pa) c_f < 0 steers away from the object: north, for the object south.
+  const ContourStep deep = ComputeContourStep({2000, 0, 0, 2000}, p);
+  EXPECT_LT(deep.cf, 0);
+  EXPECT_LT(deep.step_m[0], 0);
 }
 
 TEST(ContourLawTest, DeadBandAndZeroDifferential) {

@@ -584,6 +584,11 @@ void ExpectOutcome(const char* name, Outcome expected, double goal_arc_m = -1) {
 }
 
 TEST(ObjectTrialsTest, LargeDisk) { ExpectOutcome("disk_r35", Outcome::kSuccess); }
+// A disk smaller than the 11 mm opening: the cup lands beside it (the lip would miss it), the
+// opening hangs over it whole and no chamber seals against an edge: failure I, as documented.
+TEST(ObjectTrialsTest, DiskSmallerThanTheOpeningFails) {
+  ExpectOutcome("disk_d06", Outcome::kFailureOffEdge);
+}
 TEST(ObjectTrialsTest, Hole) { ExpectOutcome("hole_d10", Outcome::kSuccess); }
 TEST(ObjectTrialsTest, ConcaveCorner) { ExpectOutcome("corner_a270", Outcome::kSuccess); }
 // Issue 12: the cup covers a 10 mm disk (11 mm opening) and turns over it: never a success.

@@ -73,6 +73,31 @@ TEST(SensorChainTest, NoiseIsCounterBasedAndHasTheConfiguredSigma) {
   EXPECT_NEAR(std::sqrt(sum2 / n), 1.0, 0.01);
 }
 
+TEST(SensorChainTest, OutputNoiseHasTheConfiguredSigmaBeforeAndAfterTheAverage) {
+  // A constant tap pressure through the chain: single samples scatter with noise_pa around it,
+  // the 7-sample average with noise_pa / sqrt(7) (disjoint windows are independent).
+  // 20,000 samples: the sample sigma's relative standard error is 1 / sqrt(2 n) = 0.5 %, so 3 %
+  // is six standard errors.
+  for (int window : {1, 7}) {
+    SensorChainParams p;
+    p.noise_pa = 6.0;
+    p.average_samples = window;
+    SensorChainState s = Fresh();
+    double sum = 0, sum2 = 0;
+    const int n = 20000;
+    for (int k = 0; k < n; ++k) {
+      for (int j = 0; j < window; ++j) TakeSamples(p, k * window + j, {100, 100, 100, 100}, &s);
+      const double v = FilteredOutput(s)[k % 4];
+      sum += v;
+      sum2 += v * v;
+    }
+    const double mean = sum / n, sigma = std::sqrt(sum2 / n - mean * mean);
+    const double expected = 6.0 / std::sqrt(static_cast<double>(window));
+    EXPECT_NEAR(mean, 100.0, 5 * expected / std::sqrt(static_cast<double>(n))) << window;
+    EXPECT_NEAR(sigma, expected, 0.03 * expected) << window;
+  }
+}
+
 TEST(SensorChainTest, LagSmoothsASteps) {
   SensorChainParams p;
   p.noise_pa = 0;

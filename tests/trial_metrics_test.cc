@@ -210,6 +210,42 @@ TEST(TrialGoalTest, ADiskSmallerThanTheOpeningIsNeverFollowed) {
   round.Start(wide_goal, std::make_shared<ContourPath>(ContourPath::Circle(c, wide)), loop[0]);
   for (size_t i = 1; i < loop.size(); ++i) round.Add(loop[i]);
   EXPECT_EQ(round.status(), GoalStatus::kReached) << round.Detail();
+// The thresholds at their edges: each just below and just above.
+TEST(TrialOutcomeTest, ThresholdsAtTheirEdges) {
+  const TrialThresholds t;
+  auto cls = [&](std::array<double, 4> p) {
+    return ClassifySample(t, p, 1.5, false, 10, 100).outcome;
+  };
+  // Failure II when all four chambers exceed 10 kPa; one chamber just under keeps it running.
+  EXPECT_EQ(cls({10000.5, 10000.5, 10000.5, 10000.5}), Outcome::kFailureGrasp);
+  EXPECT_EQ(cls({10000.5, 10000.5, 10000.5, 9999.5}), Outcome::kRunning);
+  EXPECT_EQ(cls({9999.5, 10000.5, 10000.5, 10000.5}), Outcome::kRunning);
+  EXPECT_EQ(cls({10000, 10000, 10000, 10000}), Outcome::kRunning);  // "exceed": not at
+  // Failure I when the mean falls below 5 Pa; just above keeps it running.
+  EXPECT_EQ(cls({4.9, 4.9, 4.9, 4.9}), Outcome::kFailureOffEdge);
+  EXPECT_EQ(cls({5.1, 5.1, 5.1, 5.1}), Outcome::kRunning);
+  EXPECT_EQ(cls({0, 0, 0, 19.6}), Outcome::kFailureOffEdge);  // the mean decides: 4.9 Pa
+  EXPECT_EQ(cls({0, 0, 0, 20.4}), Outcome::kRunning);         // 5.1 Pa
+  // Success is checked before the failures: a reached goal on a sealed cup is a success.
+  EXPECT_EQ(ClassifySample(t, {20000, 20000, 20000, 20000}, 1.5, true, 10, 100).outcome,
+            Outcome::kSuccess);
+}
+
+TEST(TrialGoalTest, LoopIsReachedAt355DegreesNotBefore) {
+  // 354.9 deg swept: running; 355 deg: reached (fine steps, so the edge is resolved).
+  const Point2 c{0.65, 0};
+  GoalTracker goal;
+  const double r = 0.033;
+  goal.Start(TrialGoal::SweptAngle(c, kLoopSweepDeg), nullptr, {c[0] + r, c[1]});
+  auto at = [&](double deg) {
+    const double a = deg * M_PI / 180;
+    return Point2{c[0] + r * std::cos(a), c[1] + r * std::sin(a)};
+  };
+  for (int i = 1; i <= 3549; ++i) goal.Add(at(0.1 * i));
+  EXPECT_NEAR(goal.swept_deg(), 354.9, 1e-9);
+  EXPECT_FALSE(goal.reached());
+  goal.Add(at(355.0 + 1e-9));
+  EXPECT_TRUE(goal.reached()) << goal.swept_deg();
 }
 
 TEST(TrialGoalTest, ValidateNamesTheField) {

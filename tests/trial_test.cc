@@ -49,22 +49,45 @@ TEST(TrialTest, PilotControllerCompletesTheDisk) {
 }
 
 TEST(TrialTest, BestControllerCompletesTheDiskAtAllThreeSteps) {
+  // The published best controller (P_ref 100 Pa, beta 2) at dL 2.5, 5, 7.5 mm: about 1, 2, 3 cm/s
+  // and the cup centre 2.5 mm inside the edge.
   const double published_speed_mm_s[3] = {10, 20, 30};
   const double steps[3] = {2.5, 5.0, 7.5};
   for (int i = 0; i < 3; ++i) {
     const TrialResult r = Trial(100, 2.0, steps[i]);
     EXPECT_EQ(r.outcome, Outcome::kSuccess) << "dL " << steps[i] << ": " << r.detail;
-    EXPECT_GT(r.swept_deg, 0) << "travel must be counter-clockwise";
-    // About 1, 2, 3 cm/s on the robot.
-    EXPECT_NEAR(r.metrics.speed_mm_s, published_speed_mm_s[i], 0.2 * published_speed_mm_s[i]);
-    // The cup centre rides inside the edge where the mean vacuum is P_ref (published -2.5 mm).
-    EXPECT_NEAR(r.metrics.dr_mm, -2.5, 1.0);
+    // One loop, counter-clockwise: success is checked once per control iteration, so the sweep
+    // passes 355 deg by at most one step's angle about the centre (dL / r_mean, plus the
+    // servo's catching up within one 20 ms path sample: 1 deg).
+    const double step_deg = steps[i] / r.metrics.r_mean_mm * 180 / M_PI;
+    EXPECT_GE(r.swept_deg, 355) << "dL " << steps[i];
+    EXPECT_LE(r.swept_deg, 355 + step_deg + 1) << "dL " << steps[i];
+    // The path is that loop: its length over the swept arc at the mean radius is 1 plus the
+    // wander (s_c-like; measured 1.00-1.09, the 7.5 mm step zig-zags most).
+    const double arc_mm = r.swept_deg * M_PI / 180 * r.metrics.r_mean_mm;
+    EXPECT_GT(r.metrics.s_mm / arc_mm, 0.99) << "dL " << steps[i];
+    EXPECT_LT(r.metrics.s_mm / arc_mm, 1.15) << "dL " << steps[i];
+    // Speed: the control period (0.15 s) and servo smoothing were chosen for the published
+    // speeds; measured 9.9, 19.9, 30.0 mm/s. 5 % holds the choice, not the 20 % the published
+    // "about" allows.
+    EXPECT_NEAR(r.metrics.speed_mm_s, published_speed_mm_s[i], 0.05 * published_speed_mm_s[i]);
+    // Where the cup rides: the static curve puts the mean vacuum at P_ref = 100 Pa 2.53 mm inside
+    // a straight edge (flow_network_test, the MuJoCo probe 2.55 mm). Following the loop moves the
+    // cup outward by the disk's curvature and the servo lag: measured -2.44, -2.38, -2.35 mm
+    // (seeds 1-5 agree within 0.02 mm). Band: the static offset +-0.25 mm, which the published
+    // -2.5 mm also satisfies; a calibration shift or a lag change beyond it fails here.
+    EXPECT_NEAR(r.metrics.dr_mm, -2.53, 0.25) << "dL " << steps[i];
   }
 }
 
 TEST(TrialTest, WithoutCorrectionTheCupDriftsOffTheEdge) {
+  // beta = 0: pure tangential steps; on a disk each step leaves the circle outward, so the cup
+  // loses the edge before a loop and the mean vacuum falls below the 5 Pa failure I threshold.
   const TrialResult r = Trial(100, 0.0, 2.5);
   EXPECT_EQ(r.outcome, Outcome::kFailureOffEdge) << r.detail;
+  EXPECT_NE(r.detail.find("below 5 Pa"), std::string::npos) << r.detail;
+  EXPECT_LT(r.swept_deg, 355);
+  EXPECT_GT(r.iterations, 1);  // it followed before it fell off
 }
 
 TEST(TrialTest, ObjectOnTheRightTravelsClockwise) {
@@ -89,6 +112,8 @@ TEST(TrialTest, PushedOntoTheSurfaceIsFailureTwo) {
   c.target.goal.band_m = 0;  // under test: the pressure failure, not the band of following
   const TrialResult r = Trial(100, 2.0, 2.5, 1, c);
   EXPECT_EQ(r.outcome, Outcome::kFailureGrasp) << r.detail;
+  EXPECT_NE(r.detail.find("all chambers above 10000 Pa"), std::string::npos) << r.detail;
+  EXPECT_EQ(r.iterations, 1);  // sealed from the first control iteration on
 }
 
 TEST(TrialTest, StartingFarOffTheEdgeLosesIt) {
