@@ -210,11 +210,13 @@ TEST(TrialGoalTest, ADiskSmallerThanTheOpeningIsNeverFollowed) {
   round.Start(wide_goal, std::make_shared<ContourPath>(ContourPath::Circle(c, wide)), loop[0]);
   for (size_t i = 1; i < loop.size(); ++i) round.Add(loop[i]);
   EXPECT_EQ(round.status(), GoalStatus::kReached) << round.Detail();
+}
+
 // The thresholds at their edges: each just below and just above.
 TEST(TrialOutcomeTest, ThresholdsAtTheirEdges) {
   const TrialThresholds t;
   auto cls = [&](std::array<double, 4> p) {
-    return ClassifySample(t, p, 1.5, false, 10, 100).outcome;
+    return ClassifySample(t, p, 1.5, GoalStatus::kPending, 10, 100).outcome;
   };
   // Failure II when all four chambers exceed 10 kPa; one chamber just under keeps it running.
   EXPECT_EQ(cls({10000.5, 10000.5, 10000.5, 10000.5}), Outcome::kFailureGrasp);
@@ -227,7 +229,7 @@ TEST(TrialOutcomeTest, ThresholdsAtTheirEdges) {
   EXPECT_EQ(cls({0, 0, 0, 19.6}), Outcome::kFailureOffEdge);  // the mean decides: 4.9 Pa
   EXPECT_EQ(cls({0, 0, 0, 20.4}), Outcome::kRunning);         // 5.1 Pa
   // Success is checked before the failures: a reached goal on a sealed cup is a success.
-  EXPECT_EQ(ClassifySample(t, {20000, 20000, 20000, 20000}, 1.5, true, 10, 100).outcome,
+  EXPECT_EQ(ClassifySample(t, {20000, 20000, 20000, 20000}, 1.5, GoalStatus::kReached, 10, 100).outcome,
             Outcome::kSuccess);
 }
 
