@@ -21,13 +21,13 @@ struct NumberRange {
   bool lo_open = false, hi_open = false;
   bool whole = false;  // integers only
 
-  static NumberRange Closed(double lo, double hi) { return {lo, hi, false, false, false}; }
-  static NumberRange Positive(double hi = std::numeric_limits<double>::infinity()) {
+  static constexpr NumberRange Closed(double lo, double hi) { return {lo, hi, false, false, false}; }
+  static constexpr NumberRange Positive(double hi = std::numeric_limits<double>::infinity()) {
     return {0.0, hi, true, false, false};
   }
-  static NumberRange Whole(double lo, double hi) { return {lo, hi, false, false, true}; }
-  NumberRange OpenLow() const { NumberRange r = *this; r.lo_open = true; return r; }
-  NumberRange OpenHigh() const { NumberRange r = *this; r.hi_open = true; return r; }
+  static constexpr NumberRange Whole(double lo, double hi) { return {lo, hi, false, false, true}; }
+  constexpr NumberRange OpenLow() const { return {lo, hi, true, hi_open, whole}; }
+  constexpr NumberRange OpenHigh() const { return {lo, hi, lo_open, true, whole}; }
 
   bool Contains(double v) const;
   // "[0, 100000]", "(0, 1]", "a whole number in [1, 64]", "> 0".

@@ -75,17 +75,13 @@ bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
   }
   const int mocap = m->body_mocapid[body];
   mjData* d = mj_makeData(m);
-  int instance = -1;
-  ChamberPressureSensor* sensor = FindChamberPressureSensor(m, d, &instance);
+  const ChamberPressureDiagnostics* sensor = FindChamberPressureDiagnostics(m, d);
   if (sensor == nullptr) {
     mj_deleteData(d);
     *error = "the replay scene has no ssc.chamber_pressure sensor";
     return false;
   }
-  int adr = -1;
-  for (int i = 0; i < m->nsensor; ++i) {
-    if (m->sensor_type[i] == mjSENS_PLUGIN && m->sensor_plugin[i] == instance) adr = m->sensor_adr[i];
-  }
+  const int adr = sensor->sensor_adr();
   auto place = [&](double t) {
     // Linear interpolation of the pose between log samples.
     const auto it = std::upper_bound(log.t_s.begin(), log.t_s.end(), t);

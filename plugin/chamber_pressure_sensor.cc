@@ -10,67 +10,13 @@
 namespace ssc {
 namespace {
 
-// Config keys, in the order MuJoCo is told about them.
-constexpr const char* kAttributes[] = {
-    "opening_radius_mm", "seal_distance_mm",   "lip_roughness_um",   "rays_per_chamber",
-    "ray_start_mm",      "ray_groups",         "lip_geom_group",     "pump_max_vacuum_pa",
-    "pump_free_flow_lpm", "port_area_mm2",     "neighbour_area_mm2", "tap_recovery",
-    "jet_area_mm2",      "discharge_coeff",    "air_density_kg_m3",  "sample_rate_hz",
-    "noise_pa",          "average_samples",    "lag_ms",             "seed"};
-constexpr int kNumAttributes = sizeof(kAttributes) / sizeof(kAttributes[0]);
+static_assert(kNumGeomGroups == mjNGROUP, "ray_groups is sized for MuJoCo's geom groups");
+static_assert(sizeof(mjtByte) == sizeof(unsigned char), "ray_groups is passed to mj_ray");
 constexpr int kWarmStartSize = kNumChambers + 1;
 // Vertical-ray bisections that locate an edge the horizontal rays missed: 5.5 mm / 2^6 = 0.09 mm.
 constexpr int kRimBisections = 6;
 // Per-mjData noise seed (set by the application after a reset), after the warm start.
 constexpr int kSeedSlot = kSensorChainStateSize + kWarmStartSize;
-
-// One numeric config value: absent or empty -> default; otherwise must parse fully, be finite and
-// lie in [lo, hi] (open ends where flagged).
-struct Range {
-  double lo, hi;
-  bool lo_open = false, hi_open = false;
-};
-
-bool ReadNumber(const mjModel* m, int instance, const char* key, double default_value, Range r,
-                const char* unit, double* out, std::string* error) {
-  const char* text = mj_getPluginConfig(m, instance, key);
-  if (text == nullptr || text[0] == '\0') {
-    *out = default_value;
-    return true;
-  }
-  char* end = nullptr;
-  const double v = std::strtod(text, &end);
-  while (end && *end == ' ') ++end;
-  const bool parsed = end != text && end && *end == '\0';
-  const bool in_range = std::isfinite(v) && (r.lo_open ? v > r.lo : v >= r.lo) &&
-                        (r.hi_open ? v < r.hi : v <= r.hi);
-  if (!parsed || !in_range) {
-    std::ostringstream os;
-    os << kChamberPressurePluginName << ": config key '" << key << "' has value '" << text
-       << "'; valid range is " << (r.lo_open ? "(" : "[") << r.lo << ", " << r.hi
-       << (r.hi_open ? ")" : "]") << (unit[0] ? " " : "") << unit;
-    *error = os.str();
-    return false;
-  }
-  *out = v;
-  return true;
-}
-
-bool ReadInt(const mjModel* m, int instance, const char* key, int default_value, int lo, int hi,
-             int* out, std::string* error) {
-  double v = 0;
-  if (!ReadNumber(m, instance, key, default_value, {double(lo), double(hi)}, "", &v, error)) {
-    return false;
-  }
-  if (v != std::floor(v)) {
-    *error = std::string(kChamberPressurePluginName) + ": config key '" + key +
-             "' must be a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-             "], got '" + mj_getPluginConfig(m, instance, key) + "'";
-    return false;
-  }
-  *out = static_cast<int>(v);
-  return true;
-}
 
 // World-frame axis `col` of a row-major 3x3 rotation.
 void Axis(const mjtNum* mat, int col, mjtNum out[3]) {
@@ -88,128 +34,60 @@ SensorChainState* StateOf(mjData* d, const mjModel* m, int instance) {
   return reinterpret_cast<SensorChainState*>(d->plugin_state + m->plugin_stateadr[instance]);
 }
 
-}  // namespace
 
-std::optional<ChamberPressureConfig> ChamberPressureConfig::FromModel(const mjModel* m,
-                                                                      int instance,
-                                                                      std::string* error) {
-  ChamberPressureConfig c;
-  PneumaticParams& p = c.pneumatics;
-  SensorChainParams& s = c.sensor;
-  double v = 0;
-  // Geometry.
-  if (!ReadNumber(m, instance, "opening_radius_mm", c.geometry.opening_radius_m * 1e3, {0.5, 50}, "mm", &v, error)) return {};
-  c.geometry.opening_radius_m = v * 1e-3;
-  if (!ReadNumber(m, instance, "seal_distance_mm", c.geometry.seal_distance_m * 1e3, {0, 10}, "mm", &v, error)) return {};
-  c.geometry.seal_distance_m = v * 1e-3;
-  if (!ReadNumber(m, instance, "lip_roughness_um", c.geometry.lip_roughness_gap_m * 1e6, {0, 1000}, "um", &v, error)) return {};
-  c.geometry.lip_roughness_gap_m = v * 1e-6;
-  if (!ReadInt(m, instance, "rays_per_chamber", c.geometry.rays_per_chamber, 1, kMaxRaysPerChamber,
-               &c.geometry.rays_per_chamber, error)) {
-    return {};
-  }
-  if (!ReadNumber(m, instance, "ray_start_mm", c.ray_start_m * 1e3, {0.1, 1000}, "mm", &v, error)) return {};
-  c.ray_start_m = v * 1e-3;
-  if (!ReadInt(m, instance, "lip_geom_group", c.lip_geom_group, 0, mjNGROUP - 1, &c.lip_geom_group, error)) {
-    return {};
-  }
-  const char* groups = mj_getPluginConfig(m, instance, "ray_groups");
-  if (groups == nullptr || groups[0] == '\0') groups = "0 2";
-  {
-    std::istringstream in(groups);
-    std::string token;
-    int count = 0;
-    while (in >> token) {
-      char* end = nullptr;
-      const long g = std::strtol(token.c_str(), &end, 10);
-      if (*end != '\0' || g < 0 || g >= mjNGROUP) {
-        *error = std::string(kChamberPressurePluginName) + ": config key 'ray_groups' has value '" +
-                 groups + "'; expected space-separated geom groups in [0, " +
-                 std::to_string(mjNGROUP - 1) + "]";
-        return {};
-      }
-      c.ray_groups[g] = 1;
-      ++count;
-    }
-    if (count == 0) {
-      *error = std::string(kChamberPressurePluginName) +
-               ": config key 'ray_groups' lists no geom group; expected groups in [0, 5]";
-      return {};
-    }
-  }
-  if (c.ray_groups[c.lip_geom_group]) {
-    *error = std::string(kChamberPressurePluginName) + ": lip_geom_group " +
-             std::to_string(c.lip_geom_group) +
-             " is also in ray_groups: the rays would hit the cup's own lip";
-    return {};
-  }
-  // Pneumatics.
-  if (!ReadNumber(m, instance, "pump_max_vacuum_pa", p.pump_max_vacuum_pa, {0, 100000, true, true}, "Pa",
-                  &p.pump_max_vacuum_pa, error)) {
-    return {};
-  }
-  if (!ReadNumber(m, instance, "pump_free_flow_lpm", p.pump_free_flow_m3_s * 60000.0, {0, 60000, true}, "L/min", &v, error)) {
-    return {};
-  }
-  p.pump_free_flow_m3_s = v / 60000.0;
-  if (!ReadNumber(m, instance, "port_area_mm2", p.port_area_m2 * 1e6, {0, 10000, true}, "mm^2", &v, error)) return {};
-  p.port_area_m2 = v * 1e-6;
-  if (!ReadNumber(m, instance, "neighbour_area_mm2", p.neighbour_area_m2 * 1e6, {0, 10000}, "mm^2", &v, error)) {
-    return {};
-  }
-  p.neighbour_area_m2 = v * 1e-6;
-  if (!ReadNumber(m, instance, "tap_recovery", p.tap_recovery, {0, 1}, "", &p.tap_recovery, error)) {
-    return {};
-  }
-  if (!ReadNumber(m, instance, "jet_area_mm2", p.jet_area_m2 * 1e6, {0, 10000, true}, "mm^2", &v, error)) return {};
-  p.jet_area_m2 = v * 1e-6;
-  if (!ReadNumber(m, instance, "discharge_coeff", p.discharge_coeff, {0, 1, true}, "", &p.discharge_coeff,
-                  error)) {
-    return {};
-  }
-  if (!ReadNumber(m, instance, "air_density_kg_m3", p.air_density_kg_m3, {0.1, 10, true}, "kg/m^3",
-                  &p.air_density_kg_m3, error)) {
-    return {};
-  }
-  // Sensor chain.
-  if (!ReadNumber(m, instance, "sample_rate_hz", s.sample_rate_hz, {1, 100000}, "Hz", &s.sample_rate_hz,
-                  error)) {
-    return {};
-  }
-  if (!ReadNumber(m, instance, "noise_pa", s.noise_pa, {0, 10000}, "Pa", &s.noise_pa, error)) return {};
-  if (!ReadInt(m, instance, "average_samples", s.average_samples, 1, kMaxAverageSamples, &s.average_samples,
-               error)) {
-    return {};
-  }
-  if (!ReadNumber(m, instance, "lag_ms", s.lag_s * 1e3, {0, 10000}, "ms", &v, error)) return {};
-  s.lag_s = v * 1e-3;
-  if (!ReadNumber(m, instance, "seed", double(s.seed), {0, 9007199254740992.0}, "", &v, error)) return {};
-  if (v != std::floor(v)) {
-    *error = std::string(kChamberPressurePluginName) +
-             ": config key 'seed' must be a whole number in [0, 2^53]";
-    return {};
-  }
-  s.seed = static_cast<std::uint64_t>(v);
-  // The pure structs validate their own invariants once more (belt and braces).
-  for (const std::string& e : {c.geometry.Validate(), p.Validate(), s.Validate()}) {
-    if (!e.empty()) {
-      *error = std::string(kChamberPressurePluginName) + ": " + e;
-      return {};
-    }
-  }
-  return c;
+// The sensor behind a plugin instance (its plugin_data). Private to this file: tools see it
+// through ChamberPressureDiagnostics.
+class ChamberPressureSensor final : public ChamberPressureDiagnostics {
+ public:
+  // Returns nullptr with *error when the config or model is invalid.
+  static ChamberPressureSensor* Create(const mjModel* m, int instance, std::string* error);
+
+  void Reset(mjtNum* plugin_state) const;
+  void Compute(const mjModel* m, mjData* d, int instance);
+  void Visualize(const mjModel* m, mjData* d, const mjvOption* opt, mjvScene* scn) const;
+
+  int instance() const override { return instance_; }
+  int site_id() const override { return site_id_; }
+  int sensor_adr() const override { return sensor_adr_; }
+  int num_lip_segments() const override { return static_cast<int>(lip_geoms_.size()); }
+  const ChamberPressureConfig& config() const override { return config_; }
+  const ChamberPressureSample& last_sample() const override { return sample_; }
+  void Measure(const mjModel* m, const mjData* d, ChamberPressureSample* sample) const override;
+  void CopyDiagnosticsFrom(const ChamberPressureSensor& other) { sample_ = other.sample_; }
+
+ private:
+  ChamberPressureSensor(ChamberPressureConfig config, int instance, int site_id, int sensor_adr);
+
+  ChamberPressureConfig config_;
+  int instance_;
+  int site_id_;
+  int sensor_adr_;
+  std::vector<int> lip_geoms_;          // geom id of each lip segment
+  std::vector<int> lip_of_geom_;        // segment index of each geom id, -1 if not lip
+  std::vector<mjtNum> ray_dirs_local_;  // unit radial directions in the site frame, 3 per ray
+  mutable std::vector<mjtNum> ray_dirs_world_;
+  mutable std::vector<int> ray_geom_;
+  mutable std::vector<mjtNum> ray_dist_;
+  mutable mjtNum dir_scratch_[3] = {0, 0, 0};
+  ChamberPressureSample sample_;
+};
+
+ChamberPressureSensor* SensorOf(const mjData* d, int instance) {
+  return reinterpret_cast<ChamberPressureSensor*>(d->plugin_data[instance]);
 }
 
-ChamberPressureSensor::ChamberPressureSensor(ChamberPressureConfig config, int site_id,
-                                             int sensor_adr)
-    : config_(std::move(config)), site_id_(site_id), sensor_adr_(sensor_adr) {}
+int StateSize() { return kSeedSlot + 1; }
 
-int ChamberPressureSensor::StateSize() { return kSeedSlot + 1; }
+}  // namespace
 
-ChamberPressureSensor* ChamberPressureSensor::Create(const mjModel* m, mjData* d, int instance,
+ChamberPressureSensor::ChamberPressureSensor(ChamberPressureConfig config, int instance,
+                                             int site_id, int sensor_adr)
+    : config_(std::move(config)), instance_(instance), site_id_(site_id), sensor_adr_(sensor_adr) {}
+
+ChamberPressureSensor* ChamberPressureSensor::Create(const mjModel* m, int instance,
                                                      std::string* error) {
-  (void)d;
-  std::optional<ChamberPressureConfig> config = ChamberPressureConfig::FromModel(m, instance, error);
+  std::optional<ChamberPressureConfig> config = ParseChamberPressureConfig(
+      [m, instance](const char* key) { return mj_getPluginConfig(m, instance, key); }, error);
   if (!config) return nullptr;
 
   // Find the sensor that uses this instance and its site.
@@ -232,7 +110,8 @@ ChamberPressureSensor* ChamberPressureSensor::Create(const mjModel* m, mjData* d
     return nullptr;
   }
   const int site_id = m->sensor_objid[sensor_id];
-  auto* sensor = new ChamberPressureSensor(std::move(*config), site_id, m->sensor_adr[sensor_id]);
+  auto* sensor = new ChamberPressureSensor(std::move(*config), instance, site_id,
+                                           m->sensor_adr[sensor_id]);
 
   // Lip segments: geoms of the lip group in the site body's subtree.
   const int root = m->site_bodyid[site_id];
@@ -303,8 +182,7 @@ void ChamberPressureSensor::Reset(mjtNum* plugin_state) const {
   plugin_state[kSeedSlot] = 0.0;
 }
 
-void ChamberPressureSensor::SetRunSeed(const mjModel* m, mjData* d, int instance,
-                                       std::uint64_t seed) {
+void SetChamberPressureRunSeed(const mjModel* m, mjData* d, int instance, std::uint64_t seed) {
   // Doubles hold integers exactly up to 2^53.
   d->plugin_state[m->plugin_stateadr[instance] + kSeedSlot] =
       static_cast<double>(seed & ((std::uint64_t{1} << 53) - 1));
@@ -482,33 +360,37 @@ void ChamberPressureSensor::Visualize(const mjModel* m, mjData* d, const mjvOpti
   (void)m;
 }
 
-ChamberPressureSensor* FindChamberPressureSensor(const mjModel* m, mjData* d, int* instance) {
+const ChamberPressureDiagnostics* FindChamberPressureDiagnostics(const mjModel* m,
+                                                                  const mjData* d) {
   int slot = -1;
   const mjpPlugin* plugin = mjp_getPlugin(kChamberPressurePluginName, &slot);
   if (plugin == nullptr) return nullptr;
   for (int i = 0; i < m->nplugin; ++i) {
-    if (m->plugin[i] == slot && d->plugin_data[i] != 0) {
-      if (instance) *instance = i;
-      return reinterpret_cast<ChamberPressureSensor*>(d->plugin_data[i]);
-    }
+    if (m->plugin[i] == slot && d->plugin_data[i] != 0) return SensorOf(d, i);
   }
   return nullptr;
 }
 
-void ChamberPressureSensor::RegisterPlugin() {
+void RegisterChamberPressurePlugin() {
+  // MuJoCo keeps the pointers: the names live as long as the key table (static).
+  static const std::vector<const char*> attributes = [] {
+    std::vector<const char*> names;
+    for (const ChamberPressureConfigKey& k : ChamberPressureConfigKeys()) names.push_back(k.key);
+    return names;
+  }();
   mjpPlugin plugin;
   mjp_defaultPlugin(&plugin);
   plugin.name = kChamberPressurePluginName;
   plugin.capabilityflags |= mjPLUGIN_SENSOR;
-  plugin.nattribute = kNumAttributes;
-  plugin.attributes = kAttributes;
+  plugin.nattribute = static_cast<int>(attributes.size());
+  plugin.attributes = attributes.data();
   // Position stage: a control callback in the same step sees this step's pressures.
   plugin.needstage = mjSTAGE_POS;
   plugin.nstate = +[](const mjModel*, int) { return StateSize(); };
   plugin.nsensordata = +[](const mjModel*, int, int) { return kNumChambers; };
   plugin.init = +[](const mjModel* m, mjData* d, int instance) {
     std::string error;
-    ChamberPressureSensor* sensor = Create(m, d, instance, &error);
+    ChamberPressureSensor* sensor = ChamberPressureSensor::Create(m, instance, &error);
     if (sensor == nullptr) {
       mju_warning("%s", error.c_str());
       return -1;
@@ -518,12 +400,12 @@ void ChamberPressureSensor::RegisterPlugin() {
     return 0;
   };
   plugin.destroy = +[](mjData* d, int instance) {
-    delete reinterpret_cast<ChamberPressureSensor*>(d->plugin_data[instance]);
+    delete SensorOf(d, instance);
     d->plugin_data[instance] = 0;
   };
   plugin.copy = +[](mjData* dest, const mjModel*, const mjData* src, int instance) {
-    auto* to = reinterpret_cast<ChamberPressureSensor*>(dest->plugin_data[instance]);
-    auto* from = reinterpret_cast<const ChamberPressureSensor*>(src->plugin_data[instance]);
+    ChamberPressureSensor* to = SensorOf(dest, instance);
+    const ChamberPressureSensor* from = SensorOf(src, instance);
     if (to && from) to->CopyDiagnosticsFrom(*from);
   };
   plugin.reset = +[](const mjModel*, mjtNum* plugin_state, void* plugin_data, int) {
@@ -531,13 +413,13 @@ void ChamberPressureSensor::RegisterPlugin() {
     if (sensor) sensor->Reset(plugin_state);
   };
   plugin.compute = +[](const mjModel* m, mjData* d, int instance, int) {
-    auto* sensor = reinterpret_cast<ChamberPressureSensor*>(d->plugin_data[instance]);
-    if (sensor) sensor->Compute(m, d, instance);
+    if (ChamberPressureSensor* sensor = SensorOf(d, instance)) sensor->Compute(m, d, instance);
   };
   plugin.visualize = +[](const mjModel* m, mjData* d, const mjvOption* opt, mjvScene* scn,
                          int instance) {
-    auto* sensor = reinterpret_cast<ChamberPressureSensor*>(d->plugin_data[instance]);
-    if (sensor) sensor->Visualize(m, d, opt, scn);
+    if (const ChamberPressureSensor* sensor = SensorOf(d, instance)) {
+      sensor->Visualize(m, d, opt, scn);
+    }
   };
   mjp_registerPlugin(&plugin);
 }

@@ -4,6 +4,6 @@
 
 namespace ssc {
 
-mjPLUGIN_LIB_INIT(ssc_plugin) { ChamberPressureSensor::RegisterPlugin(); }
+mjPLUGIN_LIB_INIT(ssc_plugin) { RegisterChamberPressurePlugin(); }
 
 }  // namespace ssc

@@ -1,5 +1,7 @@
 #include "runtime/mujoco_model.h"
 
+#include "plugin/chamber_pressure_config.h"
+
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -109,6 +111,11 @@ std::string SceneWithToolConfig(const std::string& scene_path, const std::string
 ModelPtr LoadModel(const std::string& path, std::string* error) {
   if (!FileExists(path)) {
     *error = path + ": file not found";
+    return nullptr;
+  }
+  // MuJoCo passes value="" to plugins as if the key were absent (silently the default).
+  if (std::string e = FindEmptyConfigValues(path); !e.empty()) {
+    *error = e;
     return nullptr;
   }
   char buffer[2048] = "";

@@ -75,17 +75,14 @@ std::unique_ptr<ContourTrial> ContourTrial::Create(const mjModel* m, mjData* d,
     return nullptr;
   }
   std::unique_ptr<ContourTrial> trial(new ContourTrial(m, d, config, keep_log));
-  ChamberPressureSensor* sensor = FindChamberPressureSensor(m, d, &trial->pressure_instance_);
+  const ChamberPressureDiagnostics* sensor = FindChamberPressureDiagnostics(m, d);
   if (sensor == nullptr) {
     *error = "scene has no ssc.chamber_pressure sensor";
     return nullptr;
   }
   trial->tool_site_ = sensor->site_id();
-  for (int i = 0; i < m->nsensor; ++i) {
-    if (m->sensor_type[i] == mjSENS_PLUGIN && m->sensor_plugin[i] == trial->pressure_instance_) {
-      trial->pressure_adr_ = m->sensor_adr[i];
-    }
-  }
+  trial->pressure_instance_ = sensor->instance();
+  trial->pressure_adr_ = sensor->sensor_adr();
   const int ft = mj_name2id(m, mjOBJ_SENSOR, "ft_force");
   if (ft < 0 || m->sensor_type[ft] != mjSENS_FORCE) {
     *error = "scene has no force sensor named 'ft_force' (the F/T transducer)";
@@ -119,7 +116,7 @@ void ContourTrial::Reset() {
   } else {
     mj_resetData(m_, d_);
   }
-  ChamberPressureSensor::SetRunSeed(m_, d_, pressure_instance_, config_.seed);
+  SetChamberPressureRunSeed(m_, d_, pressure_instance_, config_.seed);
   mj_forward(m_, d_);
   phase_ = TrialPhase::kApproach;
   ft_tare_n_ = 0;

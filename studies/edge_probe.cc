@@ -20,16 +20,13 @@ std::unique_ptr<EdgeProbe3d> EdgeProbe3d::Create(const std::string& scene_path,
     return nullptr;
   }
   probe->mocap_id_ = m->body_mocapid[body];
-  probe->sensor_ = FindChamberPressureSensor(m, probe->data_.get(), &probe->instance_);
+  probe->sensor_ = FindChamberPressureDiagnostics(m, probe->data_.get());
   if (probe->sensor_ == nullptr) {
     *error = scene_path + ": no ssc.chamber_pressure sensor in the scene";
     return nullptr;
   }
-  for (int i = 0; i < m->nsensor; ++i) {
-    if (m->sensor_type[i] == mjSENS_PLUGIN && m->sensor_plugin[i] == probe->instance_) {
-      probe->sensor_adr_ = m->sensor_adr[i];
-    }
-  }
+  probe->instance_ = probe->sensor_->instance();
+  probe->sensor_adr_ = probe->sensor_->sensor_adr();
   // Tool length: distance from the mocap frame (tool0) to the tool site, at the reference pose.
   mj_forward(m, probe->data_.get());
   const mjtNum* a = probe->data_->xpos + 3 * body;

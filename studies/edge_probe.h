@@ -46,7 +46,7 @@ class EdgeProbe3d {
   EdgeProbe3d() = default;
   ModelPtr model_;
   DataPtr data_;
-  ChamberPressureSensor* sensor_ = nullptr;
+  const ChamberPressureDiagnostics* sensor_ = nullptr;
   int instance_ = -1;
   int mocap_id_ = -1;
   int sensor_adr_ = -1;

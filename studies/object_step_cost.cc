@@ -23,8 +23,7 @@ std::optional<StepCost> MeasureStepCost(const ObjectSpec& spec, const std::strin
     *error = probe_scene + ": no mocap body 'probe' holding the tool site 'ssc_tool_site'";
     return std::nullopt;
   }
-  int instance = -1;
-  if (!FindChamberPressureSensor(m.get(), d.get(), &instance)) {
+  if (!FindChamberPressureDiagnostics(m.get(), d.get())) {
     *error = probe_scene + ": no ssc.chamber_pressure sensor (the cost includes it)";
     return std::nullopt;
   }

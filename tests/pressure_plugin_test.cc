@@ -200,6 +200,9 @@ TEST(PressurePluginTest, BadConfigFailsTheLoadNamingKeyValueAndRange) {
       {"ray_groups", "0 9", "ray_groups"},
       {"ray_groups", "4", "lip_geom_group"},
       {"unknown_key", "1", "unknown_key"},
+      {"noise_pa", "", "empty value"},
+      {"noise_pa", "0x10", "[0, 10000] Pa"},
+      {"sample_rate_hz", "1e400", "sample_rate_hz"},
   };
   for (const Case& c : cases) {
     const std::string error = LoadWithConfig(c.key, c.value);

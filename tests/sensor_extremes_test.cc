@@ -46,8 +46,7 @@ SweepRecord Sweep(const std::function<std::array<double, 3>(double)>& path, doub
   static ModelPtr m = LoadModel(Scene(), &error);
   EXPECT_TRUE(m) << error;
   DataPtr d = MakeData(m.get(), &error);
-  int instance = -1;
-  ChamberPressureSensor* sensor = FindChamberPressureSensor(m.get(), d.get(), &instance);
+  const ChamberPressureDiagnostics* sensor = FindChamberPressureDiagnostics(m.get(), d.get());
   SweepRecord run;
   double last_sample = -1;
   const int steps = static_cast<int>(duration_s / m->opt.timestep);

@@ -26,8 +26,7 @@ TEST(ToolVariantsTest, LipSegmentCountChangesKeepTheTotalStiffnessAndTheRing) {
     std::filesystem::remove(path);
     ASSERT_TRUE(m) << error;
     DataPtr d = MakeData(m.get(), &error);
-    int instance = -1;
-    const ChamberPressureSensor* sensor = FindChamberPressureSensor(m.get(), d.get(), &instance);
+    const ChamberPressureDiagnostics* sensor = FindChamberPressureDiagnostics(m.get(), d.get());
     ASSERT_NE(sensor, nullptr);
     EXPECT_EQ(sensor->num_lip_segments(), n);
     double stiffness = 0;

@@ -120,7 +120,7 @@ void PressureFigures::Add(double t, const double p[4], const ContourStep& step,
 }
 
 std::string TrialStatusText(const ContourTrial& trial, double rtf, bool paused, double speed,
-                            const ChamberPressureSensor* sensor) {
+                            const ChamberPressureDiagnostics* sensor) {
   const ChamberPressureSample* sample = sensor ? &sensor->last_sample() : nullptr;
   const TrialConfig& c = trial.config();
   // Sealed share of each chamber's opening (the sensor's view).

@@ -33,7 +33,7 @@ class PressureFigures {
 
 // The text panel: parameters, phase, outcome and live metrics.
 std::string TrialStatusText(const ContourTrial& trial, double realtime_factor, bool paused,
-                            double speed, const ChamberPressureSensor* sensor);
+                            double speed, const ChamberPressureDiagnostics* sensor);
 std::string ViewerHelpText();
 
 }  // namespace ssc

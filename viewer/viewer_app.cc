@@ -23,7 +23,7 @@ struct Session {
   const mjModel* m = nullptr;
   mjData* d = nullptr;
   ContourTrial* trial = nullptr;
-  const ChamberPressureSensor* sensor = nullptr;  // looked up once, for the status text
+  const ChamberPressureDiagnostics* sensor = nullptr;  // looked up once, for the status text
   int tool_site = -1;
   mjvCamera cam;
   mjvOption opt;
@@ -204,8 +204,7 @@ int RunViewer(const ViewerOptions& options) {
   s->m = model.get();
   s->d = data.get();
   s->trial = trial.get();
-  int instance = -1;
-  s->sensor = FindChamberPressureSensor(s->m, s->d, &instance);
+  s->sensor = FindChamberPressureDiagnostics(s->m, s->d);
   s->tool_site = s->sensor->site_id();
   mjv_defaultCamera(&s->cam);
   mjv_defaultOption(&s->opt);
