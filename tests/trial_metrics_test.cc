@@ -250,6 +250,30 @@ TEST(TrialGoalTest, LoopIsReachedAt355DegreesNotBefore) {
   EXPECT_TRUE(goal.reached()) << goal.swept_deg();
 }
 
+TEST(TrialGoalTest, BandAndDiskSizeAtTheirEdges) {
+  // The band is the cup body's radius (11.5 mm): a loop 11.4 mm inside the edge is followed,
+  // one that dips to 11.6 mm for a few samples is lost.
+  const Point2 c{0.65, 0};
+  const double r = 0.035;
+  auto edge = std::make_shared<ContourPath>(ContourPath::Circle(c, r));
+  const TrialGoal goal = TrialGoal::AroundDisk(c, r);
+  for (double depth_mm : {11.4, 11.6}) {
+    GoalTracker t;
+    const auto loop = Arc(c, r - 0.003, 0, 2 * M_PI * 356 / 360, 712);
+    t.Start(goal, edge, loop[0]);
+    for (size_t i = 1; i < loop.size(); ++i) {
+      const double a = 2 * M_PI * 356 / 360 * static_cast<double>(i) / 712;
+      const double rr = (i > 300 && i < 305) ? r - depth_mm * 1e-3 : r - 0.003;
+      t.Add({c[0] + rr * std::cos(a), c[1] + rr * std::sin(a)});
+    }
+    EXPECT_EQ(t.status(), depth_mm < 11.5 ? GoalStatus::kReached : GoalStatus::kLost)
+        << depth_mm << " mm: " << t.Detail();
+  }
+  // The opening is 11 mm: a 10.9 mm disk is never followed, an 11.1 mm disk can be.
+  EXPECT_FALSE(TrialGoal::AroundDisk(c, 0.5 * 10.9e-3).never_followed.empty());
+  EXPECT_TRUE(TrialGoal::AroundDisk(c, 0.5 * 11.1e-3).never_followed.empty());
+}
+
 TEST(TrialGoalTest, ValidateNamesTheField) {
   EXPECT_EQ(TrialGoal::SweptAngle({0, 0}, 355).Validate(), "");
   EXPECT_NE(TrialGoal::SweptAngle({0, 0}, 0.5).Validate().find("sweep_deg"), std::string::npos);
