@@ -17,6 +17,11 @@ std::string RangeError(const char* field, double v, const char* range) {
 
 bool Finite(double v) { return std::isfinite(v); }
 
+// World x/y displacement to the tool frame (site rotation, row-major).
+std::array<double, 2> WorldToTool(const mjtNum* R, double wx, double wy) {
+  return {R[0] * wx + R[3] * wy, R[1] * wx + R[4] * wy};
+}
+
 }  // namespace
 
 TrialTarget TrialTarget::Disk(double centre_x_m, double centre_y_m, double radius_m,
@@ -61,6 +66,7 @@ std::string TrialConfig::Validate() const {
     return RangeError("servo smoothing_s", servo.smoothing_s, "[0, 5] s");
   if (!Finite(log_period_s) || log_period_s <= 0 || log_period_s > 1)
     return RangeError("log_period_s", log_period_s, "(0, 1] s");
+  if (const std::string e = effects.Validate(control_period_s); !e.empty()) return e;
   return "";
 }
 
@@ -136,6 +142,13 @@ void ContourTrial::Reset() {
   }
   start_point_ = {config_.target.start[0], config_.target.start[1], 0};
   transfer_done_ = false;
+  lip_shear_ = LipShearState();
+  ResetChamberSpread(config_.effects.chambers, EffectsSeed(), &chamber_spread_);
+  last_tool_ = servo_ ? servo_->Measured(d_) : Vec3{};
+  step_pending_ = false;
+  step_apply_s_ = 0;
+  iteration_index_ = 0;
+  host_p_pa_ = {};
 }
 
 double ContourTrial::FtNormalForce() const {
@@ -154,7 +167,7 @@ void ContourTrial::Log(bool iteration) {
   TrialLogRow row;
   row.t_s = d_->time;
   row.tool_m = servo_->Measured(d_);
-  row.p_pa = Pressures();
+  row.p_pa = iteration ? host_p_pa_ : Pressures();
   row.pbar_pa = last_step_.p_mean_pa;
   row.dpx_pa = last_step_.dpx_pa;
   row.dpy_pa = last_step_.dpy_pa;
@@ -201,6 +214,18 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
   if (!active_) return;
   const double t = d_->time;
   const Vec3 tool = servo_->Measured(d_);
+  if (phase_ == TrialPhase::kMoveToStart || phase_ == TrialPhase::kFollow) {
+    // The lip's footprint drags on the object while the body slides over it.
+    const mjtNum* R = d_->site_xmat + 9 * tool_site_;
+    AdvanceLipShear(config_.effects.lip,
+                    WorldToTool(R, tool[0] - last_tool_[0], tool[1] - last_tool_[1]), &lip_shear_);
+  }
+  last_tool_ = tool;
+  if (step_pending_ && t + 1e-9 >= step_apply_s_) {
+    // The pose read after the plot: measured pose + the step computed from older pressures.
+    step_pending_ = false;
+    servo_->SetTarget({tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], hold_z_});
+  }
   // The log keeps every phase (the approach gives the in-air start a robot log also has),
   // one row per log period; a control iteration logs its own row instead.
   const bool iteration_now = phase_ == TrialPhase::kFollow && t + 1e-9 >= next_iteration_s_;
@@ -280,16 +305,25 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
         next_log_s_ += config_.log_period_s;
       }
       if (t + 1e-9 < next_iteration_s_) break;
-      next_iteration_s_ += config_.control_period_s;
+      next_iteration_s_ += IterationPeriod(config_.effects.loop, config_.control_period_s,
+                                           EffectsSeed(), iteration_index_++);
       ++result_.iterations;
-      const std::array<double, 4> p = Pressures();
+      std::array<double, 4> p = Pressures();
+      ApplyLipTilt(config_.effects.lip, lip_shear_, &p);
+      ApplyChamberSpread(config_.effects.chambers, EffectsSeed(), t, &chamber_spread_, &p);
+      host_p_pa_ = p;
       last_step_ = ComputeContourStep(p, config_.law);
       // Tool frame -> world with the tool site's rotation (orientation is held).
       const mjtNum* R = d_->site_xmat + 9 * tool_site_;
       last_step_world_ = {R[0] * last_step_.step_m[0] + R[1] * last_step_.step_m[1],
                           R[3] * last_step_.step_m[0] + R[4] * last_step_.step_m[1]};
-      // Measured pose + step, height held.
-      servo_->SetTarget({tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], hold_z_});
+      // Measured pose + step, height held; with a pose delay, the pose read after the plot.
+      if (config_.effects.loop.pose_delay_s > 0) {
+        step_pending_ = true;
+        step_apply_s_ = t + config_.effects.loop.pose_delay_s;
+      } else {
+        servo_->SetTarget({tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], hold_z_});
+      }
       Log(true);
       const SampleCheck check = ClassifySample(config_.thresholds, p, FtNormalForce(),
                                                goal_.status(), t - follow_start_s_,

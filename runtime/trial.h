@@ -18,6 +18,7 @@
 
 #include "controller/pure/contour_law.h"
 #include "controller/pure/trial_goal.h"
+#include "controller/pure/robot_effects.h"
 #include "controller/pure/trial_metrics.h"
 #include "controller/pure/trial_outcome.h"
 #include "runtime/control_dispatch.h"
@@ -64,6 +65,8 @@ struct TrialConfig {
   double timeout_s = 120;          // follow phase limit, simulated seconds
   std::uint64_t seed = 1;          // sensor noise seed for this trial
   double log_period_s = 0.02;      // path sampling for metrics and the log
+  // The real loop, lip and sensors (controller/pure/robot_effects.h); all zero = ideal.
+  RobotEffectsParams effects;
 
   // Empty when valid, else names the field and its range.
   std::string Validate() const;
@@ -120,12 +123,17 @@ class ContourTrial : public ControlCallback {
   int tool_site() const { return tool_site_; }
   // The four filtered chamber pressures now (the plugin's output), Pa.
   std::array<double, 4> Pressures() const;
+  // What the controller read at the last iteration: the plugin's output through the lip tilt
+  // and the chamber spread (equal to it with the effects off), Pa.
+  const std::array<double, 4>& HostPressures() const { return host_p_pa_; }
 
  private:
   ContourTrial(const mjModel* m, mjData* d, const TrialConfig& config, bool keep_log);
   void Finish(Outcome outcome, const std::string& detail);
   double FtNormalForce() const;
   void Log(bool iteration);
+  // The effects' draws come from the trial seed, in streams apart from the plugin's noise.
+  std::uint64_t EffectsSeed() const { return config_.seed ^ 0x5EEDEFFEC7ULL; }
 
   const mjModel* m_;
   mjData* d_;
@@ -147,6 +155,14 @@ class ContourTrial : public ControlCallback {
   std::array<double, 2> last_step_world_{};
   std::vector<Point2> path_xy_;
   std::vector<double> path_t_;
+  // Robot effects: lip shear, chamber spread, the step waiting for the pose read after the plot.
+  LipShearState lip_shear_;
+  ChamberSpreadState chamber_spread_;
+  Vec3 last_tool_{};
+  bool step_pending_ = false;
+  double step_apply_s_ = 0;
+  std::uint64_t iteration_index_ = 0;
+  std::array<double, 4> host_p_pa_{};
   TrialResult result_;
   std::unique_ptr<ScopedControl> registration_;
 };

@@ -21,6 +21,7 @@ struct TrialSettings {
   double sweep_deg = 0;
   std::string object_on = "left";
   bool no_dead_band = false;
+  std::string effects = "default";
 };
 void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* config, TrialSettings* settings);
 

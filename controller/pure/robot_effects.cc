@@ -1,0 +1,219 @@
+#include "controller/pure/robot_effects.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace ssc {
+namespace {
+
+std::uint64_t SplitMix(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ULL;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
+  return x ^ (x >> 31);
+}
+
+// (0, 1), never 0 or 1.
+double Unit(std::uint64_t seed, std::uint64_t counter, int k, int lane) {
+  const std::uint64_t h =
+      SplitMix(SplitMix(SplitMix(seed) ^ counter) ^ (static_cast<std::uint64_t>(k) * 4 + lane));
+  return (static_cast<double>(h >> 11) + 0.5) / 9007199254740992.0;
+}
+
+bool In(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }
+
+std::string Bad(const char* field, double v, const std::string& range) {
+  std::ostringstream os;
+  os << field << " = " << v << " is out of range " << range;
+  return os.str();
+}
+
+}  // namespace
+
+const std::array<EffectKey, 8>& EffectKeys() {
+  static const std::array<EffectKey, 8> kKeys = {{
+      {"jitter_s", "s", 0, 5, "half-width of the uniform jitter of the loop period",
+       [](RobotEffectsParams* p) { return &p->loop.jitter_s; }},
+      {"pose_delay_s", "s", 0, 10, "pressures read -> pose read (the live plot in between)",
+       [](RobotEffectsParams* p) { return &p->loop.pose_delay_s; }},
+      {"slip_mm", "mm", 0, 3, "lip shear before the footprint slides (0 = no lip drag)",
+       [](RobotEffectsParams* p) { return &p->lip.slip_mm; }},
+      {"tilt_decades", "decades", 0, 1, "vacuum change of a leading/trailing chamber at full shear",
+       [](RobotEffectsParams* p) { return &p->lip.tilt_decades; }},
+      {"gain_spread", "1", 0, 0.3, "1-sigma relative gain spread between chambers",
+       [](RobotEffectsParams* p) { return &p->chambers.gain_spread; }},
+      {"drift_pa", "Pa", 0, 50, "1-sigma slow additive noise per chamber",
+       [](RobotEffectsParams* p) { return &p->chambers.drift_pa; }},
+      {"drift_relative", "1", 0, 0.5, "1-sigma slow relative noise common to the chambers",
+       [](RobotEffectsParams* p) { return &p->chambers.drift_relative; }},
+      {"drift_time_s", "s", 0.001, 10, "correlation time of the slow noise",
+       [](RobotEffectsParams* p) { return &p->chambers.drift_time_s; }},
+  }};
+  return kKeys;
+}
+
+bool ParseRobotEffects(const std::string& text, RobotEffectsParams* p, std::string* error) {
+  if (text == "off") {  // every effect whose range starts at 0 is off there
+    for (const EffectKey& k : EffectKeys())
+      if (k.min == 0) *k.field(p) = 0;
+    return true;
+  }
+  if (text == "default") return true;
+  std::size_t pos = 0;
+  while (pos <= text.size()) {
+    const std::size_t end = std::min(text.find(',', pos), text.size());
+    const std::string item = text.substr(pos, end - pos);
+    const std::size_t eq = item.find('=');
+    if (item.empty() || eq == std::string::npos) {
+      *error = "effects: expected key=value, got '" + item + "'";
+      return false;
+    }
+    const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
+    const EffectKey* found = nullptr;
+    for (const EffectKey& k : EffectKeys())
+      if (key == k.key) found = &k;
+    if (found == nullptr) {
+      std::string names;
+      for (const EffectKey& k : EffectKeys()) names += std::string(names.empty() ? "" : ", ") + k.key;
+      *error = "effects: unknown key '" + key + "' (keys: " + names + ")";
+      return false;
+    }
+    char* stop = nullptr;
+    const double v = value.empty() ? NAN : std::strtod(value.c_str(), &stop);
+    if (value.empty() || stop != value.c_str() + value.size() || !std::isfinite(v) ||
+        value.find_first_of("xXpP") != std::string::npos || v < found->min || v > found->max) {
+      std::ostringstream os;
+      os << "effects: " << key << " = '" << value << "' must be a number in [" << found->min << ", "
+         << found->max << "] " << found->unit;
+      *error = os.str();
+      return false;
+    }
+    *found->field(p) = v;
+    pos = end + 1;
+  }
+  return true;
+}
+
+std::string FormatRobotEffects(const RobotEffectsParams& p) {
+  std::ostringstream os;
+  RobotEffectsParams copy = p;
+  for (const EffectKey& k : EffectKeys())
+    os << (&k == &EffectKeys()[0] ? "" : ",") << k.key << "=" << *k.field(&copy);
+  return os.str();
+}
+
+double EffectGaussian(std::uint64_t seed, std::uint64_t counter, int k) {
+  // Box-Muller on two independent lanes.
+  const double u1 = Unit(seed, counter, k, 0), u2 = Unit(seed, counter, k, 1);
+  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
+}
+
+double EffectUniform(std::uint64_t seed, std::uint64_t counter, int k) {
+  return 2.0 * Unit(seed, counter, k, 2) - 1.0;
+}
+
+std::uint64_t EffectCounter(EffectStream stream, std::uint64_t index) {
+  return (static_cast<std::uint64_t>(stream) << 56) ^ index;
+}
+
+std::string RobotEffectsParams::Validate(double period_s) const {
+  if (!In(loop.jitter_s, 0, period_s / 2))
+    return Bad("loop jitter_s", loop.jitter_s, "[0, period/2] s");
+  if (!In(loop.pose_delay_s, 0, period_s) || (loop.pose_delay_s >= period_s && period_s > 0))
+    return Bad("loop pose_delay_s", loop.pose_delay_s, "[0, period) s");
+  if (loop.pose_delay_s + loop.jitter_s >= period_s && loop.pose_delay_s > 0)
+    return Bad("loop pose_delay_s + jitter_s", loop.pose_delay_s + loop.jitter_s,
+               "below the period");
+  if (!In(lip.slip_mm, 0, 3)) return Bad("lip slip_mm", lip.slip_mm, "[0, 3] mm");
+  if (!In(lip.tilt_decades, 0, 1)) return Bad("lip tilt_decades", lip.tilt_decades, "[0, 1]");
+  if (!In(chambers.gain_spread, 0, 0.3))
+    return Bad("chamber gain_spread", chambers.gain_spread, "[0, 0.3]");
+  if (!In(chambers.drift_pa, 0, 50)) return Bad("chamber drift_pa", chambers.drift_pa, "[0, 50] Pa");
+  if (!In(chambers.drift_relative, 0, 0.5))
+    return Bad("chamber drift_relative", chambers.drift_relative, "[0, 0.5]");
+  if (!In(chambers.drift_time_s, 1e-3, 10))
+    return Bad("chamber drift_time_s", chambers.drift_time_s, "[0.001, 10] s");
+  return "";
+}
+
+bool RobotEffectsParams::AnyOn() const {
+  return loop.jitter_s > 0 || loop.pose_delay_s > 0 || (lip.slip_mm > 0 && lip.tilt_decades > 0) ||
+         chambers.gain_spread > 0 || chambers.drift_pa > 0 || chambers.drift_relative > 0;
+}
+
+double IterationPeriod(const LoopTimingParams& p, double period_s, std::uint64_t seed,
+                       std::uint64_t index) {
+  if (p.jitter_s <= 0) return period_s;
+  return period_s + p.jitter_s * EffectUniform(seed, EffectCounter(EffectStream::kJitter, index), 0);
+}
+
+void AdvanceLipShear(const LipShearParams& p, const std::array<double, 2>& body_move_m,
+                     LipShearState* s) {
+  if (p.slip_mm <= 0) {
+    s->shear_m = {0, 0};
+    return;
+  }
+  const double slip_m = p.slip_mm * 1e-3;
+  s->shear_m[0] += body_move_m[0];
+  s->shear_m[1] += body_move_m[1];
+  const double n = std::hypot(s->shear_m[0], s->shear_m[1]);
+  if (n > slip_m) {  // the footprint slides: shear stays at the friction limit
+    s->shear_m[0] *= slip_m / n;
+    s->shear_m[1] *= slip_m / n;
+  }
+}
+
+std::array<double, 2> ChamberDirection(int chamber) {
+  // south = +x_tool, west = +y_tool; SE, NE, NW, SW.
+  static const double kS = std::sqrt(0.5);
+  static const std::array<std::array<double, 2>, 4> kDir = {
+      {{kS, -kS}, {-kS, -kS}, {-kS, kS}, {kS, kS}}};
+  return kDir[static_cast<std::size_t>(chamber)];
+}
+
+void ApplyLipTilt(const LipShearParams& p, const LipShearState& s, std::array<double, 4>* p_pa) {
+  if (p.slip_mm <= 0 || p.tilt_decades <= 0) return;
+  const double slip_m = p.slip_mm * 1e-3;
+  for (int i = 0; i < 4; ++i) {
+    const std::array<double, 2> d = ChamberDirection(i);
+    // Leading chambers (along the shear: the way the body moved) are pressed, trailing lifted.
+    const double along = (d[0] * s.shear_m[0] + d[1] * s.shear_m[1]) / slip_m;
+    (*p_pa)[static_cast<std::size_t>(i)] *= std::pow(10.0, p.tilt_decades * along);
+  }
+}
+
+void ResetChamberSpread(const ChamberSpreadParams& p, std::uint64_t seed, ChamberSpreadState* s) {
+  *s = ChamberSpreadState();
+  for (int i = 0; i < 4; ++i) {
+    const double g =
+        1.0 + p.gain_spread * EffectGaussian(seed, EffectCounter(EffectStream::kGain, 0), i);
+    s->gain[static_cast<std::size_t>(i)] = std::fmax(0.2, g);  // a sensor never reads inverted
+  }
+  // Start the slow noise in its stationary distribution.
+  const std::uint64_t c = EffectCounter(EffectStream::kDrift, s->draws++);
+  for (int i = 0; i < 4; ++i) s->drift_pa[static_cast<std::size_t>(i)] = p.drift_pa * EffectGaussian(seed, c, i);
+  s->drift_rel = p.drift_relative * EffectGaussian(seed, c, 4);
+}
+
+void ApplyChamberSpread(const ChamberSpreadParams& p, std::uint64_t seed, double time_s,
+                        ChamberSpreadState* s, std::array<double, 4>* p_pa) {
+  if (s->last_time_s >= 0 && time_s > s->last_time_s && (p.drift_pa > 0 || p.drift_relative > 0)) {
+    const double a = std::exp(-(time_s - s->last_time_s) / p.drift_time_s);
+    const double b = std::sqrt(1.0 - a * a);
+    const std::uint64_t c = EffectCounter(EffectStream::kDrift, s->draws++);
+    for (int i = 0; i < 4; ++i) {
+      auto& x = s->drift_pa[static_cast<std::size_t>(i)];
+      x = a * x + b * p.drift_pa * EffectGaussian(seed, c, i);
+    }
+    s->drift_rel = a * s->drift_rel + b * p.drift_relative * EffectGaussian(seed, c, 4);
+  }
+  s->last_time_s = time_s;
+  for (int i = 0; i < 4; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    (*p_pa)[k] = (*p_pa)[k] * s->gain[k] * (1.0 + s->drift_rel) + s->drift_pa[k];
+  }
+}
+
+}  // namespace ssc

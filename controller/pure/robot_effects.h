@@ -1,0 +1,119 @@
+// What makes the real cup on the real robot differ from an ideal one, as plain C++ (no MuJoCo).
+//
+// Each mechanism is a physical parameter set with units, a range argued from the hardware
+// (docs/fidelity.md) and an off state (all zero = the ideal loop of round one). The trial applies
+// them between the plugin's filtered pressures and the control law ("what the host reads") and
+// in the loop's timing; the viewer runs the same trial code, so it sees the same thing.
+//
+//   LoopTimingParams  the real loop: no fixed rate (it redrew a live plot), and the pressures are
+//                     read before the plot while the pose the step is added to is read after it.
+//   LipShearParams    the soft lip dragged across the object: its footprint sticks until the
+//                     shear reaches slip_mm (Coulomb: mu * F_n / k_shear), and the sheared lip
+//                     tilts, pressing the leading lip and lifting the trailing one; a chamber's
+//                     vacuum scales by 10^(tilt_decades * (shear along the chamber) / slip).
+//   ChamberSpreadParams  the four sensors and tubes: gain spread between chambers (drawn per
+//                     trial: the twin does not know the real cup's), and slow noise the
+//                     7-sample average cannot remove (tube/pump pulsation; Ornstein-Uhlenbeck),
+//                     additive in Pa and relative (common to all chambers: the pump).
+//
+// Determinism: every random draw is a pure function of (seed, counter), so a trial with the same
+// seed gives the same rows on any thread or rank.
+#ifndef SSC_CONTROLLER_PURE_ROBOT_EFFECTS_H_
+#define SSC_CONTROLLER_PURE_ROBOT_EFFECTS_H_
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+namespace ssc {
+
+struct LoopTimingParams {
+  // Half-width of the uniform jitter of each iteration's period, s: [0, period / 2].
+  double jitter_s = 0.0;
+  // Time from reading the pressures to reading the pose the step is added to, s: [0, period).
+  // The lab's loop drew a live plot in between (about 0.05-0.15 s).
+  double pose_delay_s = 0.0;
+};
+
+struct LipShearParams {
+  // Shear the lip takes before its footprint slides, mm: [0, 3]; 0 = off. A silicone lip of
+  // ~1.5 mm wall under ~1.5-4 N of contact and suction load, mu ~ 0.5-1, k_shear ~ 1-5 N/mm.
+  double slip_mm = 0.0;
+  // Change of a fully leading / trailing chamber's vacuum at full shear, decades: [0, 1].
+  double tilt_decades = 0.0;
+};
+
+struct ChamberSpreadParams {
+  double gain_spread = 0.0;     // 1-sigma relative gain spread between chambers: [0, 0.3]
+  double drift_pa = 0.0;        // 1-sigma slow additive noise per chamber, Pa: [0, 50]
+  double drift_relative = 0.0;  // 1-sigma slow relative noise common to all chambers: [0, 0.5]
+  double drift_time_s = 0.5;    // correlation time of both, s: (0, 10]
+};
+
+struct RobotEffectsParams {
+  LoopTimingParams loop;
+  LipShearParams lip;
+  ChamberSpreadParams chambers;
+  // Empty when valid, else names the field, its value and range. `period_s` bounds the timing.
+  std::string Validate(double period_s) const;
+  bool AnyOn() const;
+};
+
+// The keys of the effects, one table: name, unit, range, what it is (parsing, --help, docs).
+struct EffectKey {
+  const char* key;
+  const char* unit;
+  double min, max;
+  const char* what;
+  double* (*field)(RobotEffectsParams*);
+};
+const std::array<EffectKey, 8>& EffectKeys();
+// Parses "key=value,key=value" (or "off": every effect off) onto *p. Values must be whole,
+// finite numbers in the key's range; the error names the key, the value and the range.
+bool ParseRobotEffects(const std::string& text, RobotEffectsParams* p, std::string* error);
+// "key=value,..." for every key (for summaries and reproducible command lines).
+std::string FormatRobotEffects(const RobotEffectsParams& p);
+
+// Counter-based standard normal / uniform(-1, 1) deviates: pure functions of (seed, counter, k).
+double EffectGaussian(std::uint64_t seed, std::uint64_t counter, int k);
+double EffectUniform(std::uint64_t seed, std::uint64_t counter, int k);
+
+// Stream ids (the `counter`'s top byte), so the mechanisms never share draws.
+enum class EffectStream : std::uint64_t { kJitter = 1, kGain = 2, kDrift = 3 };
+std::uint64_t EffectCounter(EffectStream stream, std::uint64_t index);
+
+// The period of iteration `index`: period_s + jitter_s * U(-1, 1).
+double IterationPeriod(const LoopTimingParams& p, double period_s, std::uint64_t seed,
+                       std::uint64_t index);
+
+// The lip's shear state: the footprint lags the body until |shear| reaches slip (then slides).
+// Unit vectors of the chambers' centres in the tool frame come from ChamberDirection.
+struct LipShearState {
+  std::array<double, 2> shear_m{};  // body minus footprint, tool frame, m
+};
+// Moves the body by `body_move_m` (tool frame, m).
+void AdvanceLipShear(const LipShearParams& p, const std::array<double, 2>& body_move_m,
+                     LipShearState* s);
+// Chamber i's centre direction seen from the cup axis, tool frame (unit): chambers 1..4 =
+// SE, NE, NW, SW with north = -x_tool, west = +y_tool (controller/pure/contour_law.h).
+std::array<double, 2> ChamberDirection(int chamber);
+// Multiplies each chamber's vacuum by the tilt the shear gives it.
+void ApplyLipTilt(const LipShearParams& p, const LipShearState& s, std::array<double, 4>* p_pa);
+
+// Per-trial chamber gains and the slow noise state.
+struct ChamberSpreadState {
+  std::array<double, 4> gain{1, 1, 1, 1};
+  std::array<double, 4> drift_pa{};
+  double drift_rel = 0;
+  double last_time_s = -1;
+  std::uint64_t draws = 0;
+};
+void ResetChamberSpread(const ChamberSpreadParams& p, std::uint64_t seed, ChamberSpreadState* s);
+// Advances the slow noise to `time_s` (exact Ornstein-Uhlenbeck update) and applies gain, drift
+// and the common relative drift to the four vacuums.
+void ApplyChamberSpread(const ChamberSpreadParams& p, std::uint64_t seed, double time_s,
+                        ChamberSpreadState* s, std::array<double, 4>* p_pa);
+
+}  // namespace ssc
+
+#endif  // SSC_CONTROLLER_PURE_ROBOT_EFFECTS_H_
