@@ -80,6 +80,26 @@ std::uint64_t TrialSeed(std::uint64_t base, double pref, double beta, double ste
 
 // Estimated simulated time of a trial, for the longest-first handout: a lap of the disk at
 // about four step lengths per second (docs/trials.md) plus the approach and move.
+ScopedTrialErrorGuard::ScopedTrialErrorGuard() : previous_(mju_user_error) {
+  mju_user_error = ThrowingError;
+}
+ScopedTrialErrorGuard::~ScopedTrialErrorGuard() { mju_user_error = previous_; }
+
+TrialResult RunGuardedTrial(const mjModel* m, const TrialConfig& config) {
+  TrialResult result;
+  std::string trial_error;
+  t_in_trial = true;
+  try {
+    result = RunTrial(m, config, false, &trial_error);
+  } catch (const std::exception& e) {
+    result = TrialResult();
+    result.outcome = Outcome::kUnstable;
+    result.detail = std::string("MuJoCo error: ") + e.what();
+  }
+  t_in_trial = false;
+  return result;
+}
+
 double EstimatedTrialCost(const TrialConfig& c) {
   const double lap_mm = 2 * 3.14159265358979 * c.target.disk_radius_m * 1e3;
   return 5.0 + lap_mm / (4.0 * std::max(c.law.step_mm, 0.1));
@@ -88,7 +108,13 @@ double EstimatedTrialCost(const TrialConfig& c) {
 bool RunSweep(const mjModel* m, const SweepSpec& spec,
               const std::function<void(const SweepProgress&)>& progress, SweepSummary* summary,
               std::string* error) {
-  if (spec.pref_pa.empty() || spec.beta.empty() || spec.step_mm.empty() || spec.repeats < 1) {
+  std::vector<std::array<double, 3>> points = spec.points;
+  if (points.empty()) {
+    for (double pref : spec.pref_pa)
+      for (double beta : spec.beta)
+        for (double step : spec.step_mm) points.push_back({pref, beta, step});
+  }
+  if (points.empty() || spec.repeats < 1) {
     *error = "sweep grid is empty (need at least one P_ref, beta, step and repeat)";
     return false;
   }
@@ -98,23 +124,19 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
   };
   // The whole grid, the same on every rank; only rank 0 reads the CSV to skip finished rows.
   std::vector<Job> jobs;
-  for (double pref : spec.pref_pa) {
-    for (double beta : spec.beta) {
-      for (double step : spec.step_mm) {
-        for (int rep = 0; rep < spec.repeats; ++rep) {
-          Job job{spec.base, rep};
-          job.config.law.p_ref_pa = pref;
-          job.config.law.beta = beta;
-          job.config.law.step_mm = step;
-          job.config.seed = TrialSeed(spec.seed, pref, beta, step, rep);
-          if (const std::string e = job.config.Validate(); !e.empty()) {
-            *error = "sweep point P_ref=" + std::to_string(pref) + " beta=" +
-                     std::to_string(beta) + " step=" + std::to_string(step) + ": " + e;
-            return false;
-          }
-          jobs.push_back(job);
-        }
+  for (const auto& [pref, beta, step] : points) {
+    for (int rep = 0; rep < spec.repeats; ++rep) {
+      Job job{spec.base, rep};
+      job.config.law.p_ref_pa = pref;
+      job.config.law.beta = beta;
+      job.config.law.step_mm = step;
+      job.config.seed = TrialSeed(spec.seed, pref, beta, step, rep);
+      if (const std::string e = job.config.Validate(); !e.empty()) {
+        *error = "sweep point P_ref=" + std::to_string(pref) + " beta=" + std::to_string(beta) +
+                 " step=" + std::to_string(step) + ": " + e;
+        return false;
       }
+      jobs.push_back(job);
     }
   }
   const bool writer = JobRunnerRank() == 0;
@@ -139,21 +161,10 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
     return done.count(MakeKey(k.p_ref_pa, k.beta, k.step_mm, jobs[i].repeat)) > 0;
   };
   set.run = [&](std::size_t i) {
-    TrialResult result;
-    std::string trial_error;
-    t_in_trial = true;
-    try {
-      result = RunTrial(m, jobs[i].config, false, &trial_error);
-    } catch (const std::exception& e) {
-      result = TrialResult();
-      result.outcome = Outcome::kUnstable;
-      result.detail = std::string("MuJoCo error: ") + e.what();
-    }
-    t_in_trial = false;
-    return SweepCsvRow(spec.scene_name, jobs[i].config, jobs[i].repeat, result);
+    return SweepCsvRow(spec.scene_name, jobs[i].config, jobs[i].repeat,
+                       RunGuardedTrial(m, jobs[i].config));
   };
-  auto* previous_error = mju_user_error;
-  mju_user_error = ThrowingError;
+  ScopedTrialErrorGuard guard;
   int skipped = 0, finished = 0;
   if (writer) {
     for (std::size_t i = 0; i < jobs.size(); ++i) skipped += set.skip(i) ? 1 : 0;
@@ -173,8 +184,6 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
       progress(p);
     }
   });
-  mju_user_error = previous_error;
-
   summary->total = static_cast<int>(stats.total);
   summary->skipped = static_cast<int>(stats.skipped);
   summary->ran = static_cast<int>(stats.ran);

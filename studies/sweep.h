@@ -6,6 +6,7 @@
 #ifndef SSC_STUDIES_SWEEP_H_
 #define SSC_STUDIES_SWEEP_H_
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -19,6 +20,9 @@ struct SweepSpec {
   std::string scene_name;           // written into each row
   TrialConfig base;                 // everything but P_ref, beta, step, seed
   std::vector<double> pref_pa, beta, step_mm;
+  // Explicit grid points (P_ref Pa, beta, step mm), e.g. a published map's cells; when set,
+  // they replace the product of the three lists above.
+  std::vector<std::array<double, 3>> points;
   int repeats = 3;
   std::uint64_t seed = 1;
   int threads = 1;
@@ -42,6 +46,23 @@ struct SweepSummary {
 
 // Seed of one grid point (stable across thread counts and runs).
 std::uint64_t TrialSeed(std::uint64_t base, double pref, double beta, double step, int repeat);
+
+// Estimated simulated time of a trial (for the longest-first handout).
+double EstimatedTrialCost(const TrialConfig& c);
+
+// While alive, MuJoCo's fatal errors inside RunGuardedTrial become 'unstable' results instead of
+// ending the process (mju_user_error is process-wide: one guard at a time, around a whole run).
+class ScopedTrialErrorGuard {
+ public:
+  ScopedTrialErrorGuard();
+  ~ScopedTrialErrorGuard();
+  ScopedTrialErrorGuard(const ScopedTrialErrorGuard&) = delete;
+  ScopedTrialErrorGuard& operator=(const ScopedTrialErrorGuard&) = delete;
+
+ private:
+  void (*previous_)(const char*);
+};
+TrialResult RunGuardedTrial(const mjModel* m, const TrialConfig& config);
 
 // Runs the sweep on `m` (shared read-only by the threads). Collective under MPI: every rank
 // calls it; rank 0 writes the CSV. `progress` (optional) is called on rank 0 after each row. False + *error on I/O or spec errors; trial

@@ -9,6 +9,10 @@
 #include "apps/ssc/commands.h"
 #include "calibration/pneumatic_fit.h"
 #include "studies/dynamic_calibration.h"
+#include "studies/success_map_fit.h"
+#include "studies/validation.h"
+#include "apps/ssc/trial_options.h"
+#include "controller/pure/robot_effects.h"
 #include "runtime/mujoco_model.h"
 
 namespace ssc {
@@ -35,8 +39,73 @@ int RunCalibrateCommand(int argc, char** argv) {
   cmd.Integer("wander-seeds", &seeds, "trials per beta per evaluation", NumberRange::Closed(1, 100));
   cmd.Integer("wander-evals", &evals, "Nelder-Mead evaluations for the wander fit",
               NumberRange::Closed(3, 10000));
+  bool dynamic = false;
+  long dyn_evals = 40, dyn_seeds = 3, dyn_threads = 2;
+  std::string dyn_keys = "period_s,smoothing_s,pose_delay_s,tilt_decades,drift_relative";
+  std::string dyn_algorithm = "bobyqa";
+  std::string dyn_map = SourceDir() + "/data/published/success_map_dl5.csv";
+  TrialConfig dyn_base;
+  TrialSettings settings;
+  cmd.Flag("dynamic", &dynamic,
+           "fit the real loop and the robot effects (docs/fidelity.md) to the published success "
+           "map at dL 5 mm and the Fig. 6 targets, on the gantry scene; skips the static fit");
+  cmd.Text("dynamic-keys", &dyn_keys, "comma-separated parameters to fit (" +
+           [] { std::string s; for (const auto& p : DynamicParameters()) s += std::string(s.empty() ? "" : ", ") + p.key + " [" + std::to_string(p.min).substr(0, 4) + ", " + std::to_string(p.max).substr(0, 4) + "] " + p.unit; return s; }() + ")");
+  cmd.Integer("dynamic-evals", &dyn_evals, "evaluation budget (each runs seeds x cells trials)",
+              NumberRange::Closed(1, 100000));
+  cmd.Integer("dynamic-seeds", &dyn_seeds, "trials per cell per evaluation (common seeds)",
+              NumberRange::Closed(3, 1000));
+  cmd.Integer("threads", &dyn_threads, "worker threads", NumberRange::Closed(1, 256));
+  cmd.Choice("dynamic-algorithm", &dyn_algorithm, "NLopt algorithm", {"bobyqa", "sbplx"});
+  cmd.Text("map", &dyn_map, "training map for --dynamic");
   cmd.OutputDir("out", &out_dir, "output directory");
+  AddTrialSettingOptions(&cmd, &dyn_base, &settings);
   if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
+  if (dynamic) {
+    std::string error;
+    DynamicFitSpec spec;
+    spec.base = dyn_base;
+    if (!ReadPublishedMap(dyn_map, &spec.cells, &error)) {
+      std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
+      return 2;
+    }
+    std::stringstream ks(dyn_keys);
+    for (std::string k; std::getline(ks, k, ',');) spec.keys.push_back(k);
+    spec.seeds = static_cast<int>(dyn_seeds);
+    spec.threads = static_cast<int>(dyn_threads);
+    spec.max_evaluations = static_cast<int>(dyn_evals);
+    spec.algorithm = dyn_algorithm;
+    ModelPtr model = LoadModel(ResolveScenePath("disk_benchmark_gantry"), &error);
+    if (!model) {
+      std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
+      return 1;
+    }
+    const std::filesystem::path out = out_dir;
+    std::ofstream evals_log(out / "dynamic_evals.txt");
+    DynamicFitResult fit;
+    if (!FitDynamic(model.get(), spec, [&](const std::string& line) {
+          std::printf("%s\n", line.c_str());
+          std::fflush(stdout);
+          evals_log << line << '\n' << std::flush;
+        }, &fit, &error)) {
+      std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
+      return 1;
+    }
+    std::printf("\ndynamic fit: %d evaluations, %.0f s; cost %.4g (start %.4g)\n", fit.evaluations,
+                fit.wall_s, fit.cost, fit.start_cost);
+    for (std::size_t i = 0; i < spec.keys.size(); ++i)
+      std::printf("  %-16s %.4g\n", spec.keys[i].c_str(), fit.values[i]);
+    std::printf("map (%d seeds/cell): class match %.1f %%, expected agreement %.3f, opposite %d\n",
+                spec.seeds, 100 * fit.score.class_match, fit.score.expected_agreement,
+                fit.score.opposite);
+    std::printf("%-32s %10s %10s\n", "target", "published", "twin");
+    for (const MetricTarget& t : fit.targets)
+      std::printf("%-32s %10.3g %10.3g\n", t.name.c_str(), t.published, t.model);
+    std::printf("as options: --period %.4g --smoothing %.4g --effects %s\n",
+                fit.best.control_period_s, fit.best.servo.smoothing_s,
+                FormatRobotEffects(fit.best.effects).c_str());
+    return 0;
+  }
   PneumaticModel start;
   start.pneumatics.pump_free_flow_m3_s *= scale;
   start.pneumatics.port_area_m2 *= scale;

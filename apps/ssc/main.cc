@@ -23,6 +23,8 @@ const Command kCommands[] = {
     {"trial", ssc::RunTrialCommand, "one contour-following disk trial, headless; log + plot"},
     {"sweep", ssc::RunSweepCommand,
      "grid of trials over P_ref x beta x dL x repeats on all cores; resumable CSV + maps"},
+    {"validate", ssc::RunValidateCommand,
+     "the twin on every cell of a published success map, N seeds per cell; scores + figure"},
     {"objects", ssc::RunObjectsCommand,
      "write the test objects' scenes and run the trial on each; table + plots"},
     {"view", ssc::RunViewCommand,

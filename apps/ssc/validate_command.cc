@@ -1,0 +1,93 @@
+// ssc validate: the twin on every cell of a published success map, scored.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <thread>
+
+#include "apps/ssc/cli.h"
+#include "apps/ssc/commands.h"
+#include "apps/ssc/plotting.h"
+#include "apps/ssc/trial_options.h"
+#include "runtime/mujoco_model.h"
+#include "studies/job_runner.h"
+#include "studies/validation.h"
+
+namespace ssc {
+
+int RunValidateCommand(int argc, char** argv) {
+  cli::Command cmd("validate",
+                   "Runs the twin on every cell of a published success map (N seeds per cell)\n"
+                   "and scores it: class match with 3 trials per cell, expected agreement,\n"
+                   "opposite cells, failure modes. Writes OUT/trials.csv (resumable),\n"
+                   "OUT/cells.csv, OUT/validate.json and OUT/validate.png. Reports figures;\n"
+                   "it does not pass or fail.");
+  ValidateSpec spec;
+  spec.map_path = SourceDir() + "/data/published/success_map_dl5.csv";
+  spec.scene_name = "disk_benchmark_gantry";
+  long seeds = 10, threads = std::max(1u, std::thread::hardware_concurrency());
+  std::string out_dir = "out/validate";
+  bool no_plot = false, no_progress = false;
+  TrialSettings settings;
+  cmd.Text("map", &spec.map_path, "published map CSV (step_mm,beta,pref_pa,successes_of_3)");
+  cmd.Text("scene", &spec.scene_name, "scene (name under scenes/ or a path)");
+  cmd.Integer("seeds", &seeds, "trials per cell (the first 3 give the class match)",
+              NumberRange::Closed(3, 10000));
+  cmd.Seed("seed", &spec.seed, "base seed, as ssc sweep --seed");
+  cmd.Integer("threads", &threads, "worker threads", NumberRange::Closed(1, 256));
+  cmd.OutputDir("out", &out_dir, "output directory");
+  cmd.Flag("no-plot", &no_plot, "skip the PNG figure");
+  cmd.Flag("no-progress", &no_progress, "no progress bar even on a terminal");
+  AddTrialSettingOptions(&cmd, &spec.base, &settings);
+  if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
+  spec.seeds = static_cast<int>(seeds);
+  spec.threads = static_cast<int>(threads);
+  spec.out_dir = out_dir;
+
+  std::string error;
+  ModelPtr model = LoadModel(ResolveScenePath(spec.scene_name), &error);
+  if (!model) {
+    std::fprintf(stderr, "ssc validate: %s\n", error.c_str());
+    return 1;
+  }
+  const bool rank0 = JobRunnerRank() == 0;
+  const bool bar = rank0 && !no_progress && isatty(STDERR_FILENO);
+  auto progress = [&](const SweepProgress& s) {
+    if (!bar) return;
+    std::fprintf(stderr, "\r%d/%d trials  %.0f s ", s.done, s.total, s.elapsed_s);
+    std::fflush(stderr);
+  };
+  MapScore score;
+  SweepSummary summary;
+  if (!RunValidation(model.get(), spec, progress, &score, &summary, &error)) {
+    std::fprintf(stderr, "ssc validate: %s\n", error.c_str());
+    return 1;
+  }
+  if (bar) std::fprintf(stderr, "\n");
+  if (!rank0) return 0;
+  std::printf("%-6s %-5s %-7s %-9s %-6s %-9s %-8s %s\n", "dL_mm", "beta", "Pref_Pa", "published",
+              "twin3", "p(N)", "P(class)", "failures");
+  for (const CellScore& c : score.cells) {
+    std::printf("%-6g %-5g %-7g %-9s %-6s %2d/%-6d %-8.2f %s%s\n", c.cell.step_mm, c.cell.beta,
+                c.cell.pref_pa, MapClassName(c.cell.published), MapClassName(c.twin_class),
+                c.successes, c.trials, c.expected_agreement, c.main_failure.c_str(),
+                c.opposite ? "  OPPOSITE" : "");
+  }
+  std::printf("\n%d cells, %d seeds per cell (base seed %llu), %d trials run in %.1f s:\n",
+              score.cells_scored, spec.seeds, static_cast<unsigned long long>(spec.seed),
+              summary.ran, summary.wall_s);
+  std::printf("  class match (3 trials/cell)   %.1f %%\n", 100 * score.class_match);
+  std::printf("  expected agreement            %.3f\n", score.expected_agreement);
+  std::printf("  opposite cells                %d\n", score.opposite);
+  std::printf("wrote %s/cells.csv, %s/validate.json\n", out_dir.c_str(), out_dir.c_str());
+  if (!no_plot) {
+    const std::string png = out_dir + "/validate.png";
+    if (RunPlotScript("plot_validation.py", {out_dir + "/cells.csv", png})) {
+      std::printf("wrote %s\n", png.c_str());
+    }
+  }
+  return 0;
+}
+
+}  // namespace ssc

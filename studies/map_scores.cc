@@ -1,0 +1,118 @@
+#include "studies/map_scores.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace ssc {
+
+const char* MapClassName(MapClass c) {
+  switch (c) {
+    case MapClass::kThreeOfThree: return "3";
+    case MapClass::kTwoOfThree: return "2";
+    case MapClass::kAtMostOne: return "<=1";
+  }
+  return "?";
+}
+
+bool ParseMapClass(const std::string& text, MapClass* c) {
+  if (text == "3") {
+    *c = MapClass::kThreeOfThree;
+  } else if (text == "2") {
+    *c = MapClass::kTwoOfThree;
+  } else if (text == "<=1") {
+    *c = MapClass::kAtMostOne;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+MapClass ClassOfSuccesses(int successes_of_3) {
+  if (successes_of_3 >= 3) return MapClass::kThreeOfThree;
+  if (successes_of_3 == 2) return MapClass::kTwoOfThree;
+  return MapClass::kAtMostOne;
+}
+
+double ClassProbability(MapClass c, double p) {
+  p = std::clamp(p, 0.0, 1.0);
+  const double three = p * p * p, two = 3 * p * p * (1 - p);
+  switch (c) {
+    case MapClass::kThreeOfThree: return three;
+    case MapClass::kTwoOfThree: return two;
+    case MapClass::kAtMostOne: return std::max(0.0, 1.0 - three - two);
+  }
+  return 0;
+}
+
+std::array<double, 2> WilsonInterval(int k, int n) {
+  if (n <= 0) return {0, 1};
+  const double z = 1.959963984540054, p = static_cast<double>(k) / n;
+  const double denom = 1 + z * z / n;
+  const double centre = (p + z * z / (2.0 * n)) / denom;
+  const double half = z * std::sqrt(p * (1 - p) / n + z * z / (4.0 * n * n)) / denom;
+  return {k == 0 ? 0.0 : std::max(0.0, centre - half), k == n ? 1.0 : std::min(1.0, centre + half)};
+}
+
+bool ScoreMap(const std::vector<MapCell>& cells, const std::vector<CellTrials>& trials,
+              MapScore* score, std::string* error) {
+  if (cells.size() != trials.size()) {
+    *error = "map scoring: cells and trial lists differ in length";
+    return false;
+  }
+  *score = MapScore();
+  double match = 0, agreement = 0, loss = 0;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const std::vector<std::string>& out = trials[i].outcomes;
+    if (out.size() < 3) {
+      std::ostringstream os;
+      os << "map cell step " << cells[i].step_mm << " mm, beta " << cells[i].beta << ", P_ref "
+         << cells[i].pref_pa << " Pa has " << out.size() << " trials; at least 3 are needed";
+      *error = os.str();
+      return false;
+    }
+    CellScore c;
+    c.cell = cells[i];
+    for (std::size_t r = 0; r < out.size(); ++r) {
+      const bool ok = out[r] == "success";
+      if (r < 3 && ok) ++c.successes_of_3;
+      c.successes += ok ? 1 : 0;
+      if (out[r] == "failure_I") ++c.failure_off_edge;
+      if (out[r] == "failure_II") ++c.failure_grasp;
+      if (out[r] == "timeout") ++c.timeout;
+      if (out[r] == "unstable") ++c.unstable;
+    }
+    c.trials = static_cast<int>(out.size());
+    c.twin_class = ClassOfSuccesses(c.successes_of_3);
+    c.class_match = c.twin_class == c.cell.published;
+    c.p_success = static_cast<double>(c.successes) / c.trials;
+    c.p_interval = WilsonInterval(c.successes, c.trials);
+    c.expected_agreement = ClassProbability(c.cell.published, c.p_success);
+    c.opposite = (c.cell.published == MapClass::kThreeOfThree && c.p_success <= 1.0 / 3.0 + 1e-12) ||
+                 (c.cell.published == MapClass::kAtMostOne && c.p_success >= 0.9 - 1e-12);
+    const std::array<std::pair<int, const char*>, 4> modes = {{{c.failure_off_edge, "failure_I"},
+                                                               {c.failure_grasp, "failure_II"},
+                                                               {c.timeout, "timeout"},
+                                                               {c.unstable, "unstable"}}};
+    int most = 0;
+    for (const auto& [count, name] : modes) {
+      if (count > most) {
+        most = count;
+        c.main_failure = name;
+      }
+    }
+    match += c.class_match ? 1 : 0;
+    agreement += c.expected_agreement;
+    loss += -std::log(std::max(c.expected_agreement, 0.01));
+    score->opposite += c.opposite ? 1 : 0;
+    score->cells.push_back(c);
+  }
+  const double n = std::max<std::size_t>(1, cells.size());
+  score->cells_scored = static_cast<int>(cells.size());
+  score->class_match = match / n;
+  score->expected_agreement = agreement / n;
+  score->log_loss = loss / n;
+  return true;
+}
+
+}  // namespace ssc

@@ -1,0 +1,73 @@
+// Scoring the twin against a published success map, as pure statistics (no MuJoCo).
+//
+// The paper ran 3 trials per cell and reports a cell's class: 3 of 3, 2 of 3 or at most 1 of 3.
+// Scores (docs/fidelity.md):
+//   class match          the twin's class from its first 3 trials equals the published class;
+//   expected agreement   P(Binomial(3, p) lands in the published class), p the twin's success
+//                        rate over N seeds, averaged over the cells;
+//   opposite cells       published 3/3 where p <= 1/3, or published <= 1/3 where p >= 0.9.
+#ifndef SSC_STUDIES_MAP_SCORES_H_
+#define SSC_STUDIES_MAP_SCORES_H_
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace ssc {
+
+enum class MapClass { kThreeOfThree, kTwoOfThree, kAtMostOne };
+
+// "3", "2", "<=1".
+const char* MapClassName(MapClass c);
+// Parses "3", "2" or "<=1"; false otherwise.
+bool ParseMapClass(const std::string& text, MapClass* c);
+// The class of k successes in 3 trials (k in [0, 3]).
+MapClass ClassOfSuccesses(int successes_of_3);
+// P(Binomial(3, p) in class c), exact.
+double ClassProbability(MapClass c, double p_success);
+
+// Wilson score interval (95 %) of k successes in n trials.
+std::array<double, 2> WilsonInterval(int successes, int trials);
+
+struct MapCell {
+  double step_mm = 0, beta = 0, pref_pa = 0;
+  MapClass published = MapClass::kThreeOfThree;
+};
+
+// Outcomes of one cell's trials in repeat order (repeat 0, 1, ...).
+struct CellTrials {
+  std::vector<std::string> outcomes;  // "success", "failure_I", ... (OutcomeName)
+};
+
+struct CellScore {
+  MapCell cell;
+  int successes_of_3 = 0;        // among repeats 0..2
+  MapClass twin_class = MapClass::kAtMostOne;
+  bool class_match = false;
+  int successes = 0, trials = 0;  // over all N repeats
+  double p_success = 0;           // successes / trials
+  std::array<double, 2> p_interval{};
+  double expected_agreement = 0;  // P(3 twin trials land in the published class)
+  bool opposite = false;
+  int failure_off_edge = 0, failure_grasp = 0, timeout = 0, unstable = 0;
+  // The most common failure ("failure_I", "failure_II", "timeout", "unstable"; "" if none).
+  std::string main_failure;
+};
+
+struct MapScore {
+  std::vector<CellScore> cells;
+  int cells_scored = 0;
+  double class_match = 0;          // fraction of cells
+  double expected_agreement = 0;   // mean over cells
+  int opposite = 0;
+  // The fit's map term: mean over cells of -log(max(P(class), floor)), floor 0.01.
+  double log_loss = 0;
+};
+
+// Scores every cell; a cell needs at least 3 trials (false + *error naming it otherwise).
+bool ScoreMap(const std::vector<MapCell>& cells, const std::vector<CellTrials>& trials,
+              MapScore* score, std::string* error);
+
+}  // namespace ssc
+
+#endif  // SSC_STUDIES_MAP_SCORES_H_

@@ -1,0 +1,195 @@
+#include "studies/success_map_fit.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include <nlopt.hpp>
+
+#include "studies/validation.h"
+
+namespace ssc {
+
+const std::vector<DynamicParameter>& DynamicParameters() {
+  static const std::vector<DynamicParameter> kParams = {
+      {"period_s", "s", 0.20, 0.30, [](TrialConfig* c) { return &c->control_period_s; }},
+      {"smoothing_s", "s", 0.03, 0.25, [](TrialConfig* c) { return &c->servo.smoothing_s; }},
+      {"jitter_s", "s", 0.0, 0.08, [](TrialConfig* c) { return &c->effects.loop.jitter_s; }},
+      {"pose_delay_s", "s", 0.0, 0.15,
+       [](TrialConfig* c) { return &c->effects.loop.pose_delay_s; }},
+      {"slip_mm", "mm", 0.2, 2.0, [](TrialConfig* c) { return &c->effects.lip.slip_mm; }},
+      {"tilt_decades", "decades", 0.0, 0.4,
+       [](TrialConfig* c) { return &c->effects.lip.tilt_decades; }},
+      {"gain_spread", "1", 0.0, 0.2,
+       [](TrialConfig* c) { return &c->effects.chambers.gain_spread; }},
+      {"drift_pa", "Pa", 0.0, 20.0, [](TrialConfig* c) { return &c->effects.chambers.drift_pa; }},
+      {"drift_relative", "1", 0.0, 0.3,
+       [](TrialConfig* c) { return &c->effects.chambers.drift_relative; }},
+  };
+  return kParams;
+}
+
+std::vector<MetricTarget> PublishedMetricTargets() {
+  // smart-suction-cup.md, calibration targets (published means of three trials).
+  return {
+      {"dr_mm beta 1.5 P_ref 40", 1.5, 40, MetricTarget::kDr, -0.7, 0.3},
+      {"dr_mm beta 1.5 P_ref 100", 1.5, 100, MetricTarget::kDr, -2.5, 0.3},
+      {"dr_mm beta 1.5 P_ref 200", 1.5, 200, MetricTarget::kDr, -3.2, 0.3},
+      {"sigma_r_mm beta 1.5 P_ref 100", 1.5, 100, MetricTarget::kSigmaR, 1.36, 0.3},
+      {"sigma_r_mm beta 3.5 P_ref 100", 3.5, 100, MetricTarget::kSigmaR, 1.89, 0.3},
+      {"s_c beta 1.5 P_ref 100", 1.5, 100, MetricTarget::kSc, 0.11, 0.05},
+      {"s_c beta 2.5 P_ref 100", 2.5, 100, MetricTarget::kSc, 0.21, 0.05},
+      {"s_c beta 3.5 P_ref 100", 3.5, 100, MetricTarget::kSc, 0.31, 0.05},
+  };
+}
+
+namespace {
+
+const DynamicParameter* FindParameter(const std::string& key) {
+  for (const DynamicParameter& p : DynamicParameters())
+    if (key == p.key) return &p;
+  return nullptr;
+}
+
+}  // namespace
+
+bool EvaluateDynamic(const mjModel* m, const DynamicFitSpec& spec, const TrialConfig& config,
+                     double* cost, MapScore* score, std::vector<MetricTarget>* targets,
+                     std::string* error) {
+  std::vector<MapCell> cells = spec.cells;
+  *targets = PublishedMetricTargets();
+  // The metric targets' cells must be run too (they are in the dL 5 mm map; add any missing).
+  for (const MetricTarget& t : *targets) {
+    bool found = false;
+    for (const MapCell& c : cells)
+      found |= c.step_mm == 5.0 && c.beta == t.beta && c.pref_pa == t.pref_pa;
+    if (!found) cells.push_back({5.0, t.beta, t.pref_pa, MapClass::kThreeOfThree});
+  }
+  std::vector<std::vector<MapTrial>> results;
+  if (!RunMapTrials(m, cells, config, spec.seeds, spec.seed, spec.threads, &results, error))
+    return false;
+  std::vector<CellTrials> trials(spec.cells.size());
+  for (std::size_t i = 0; i < spec.cells.size(); ++i)
+    for (const MapTrial& t : results[i]) trials[i].outcomes.push_back(t.outcome);
+  if (!ScoreMap(spec.cells, trials, score, error)) return false;
+  double metric_cost = 0;
+  for (MetricTarget& t : *targets) {
+    double sum = 0;
+    int n = 0;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      if (cells[i].step_mm != 5.0 || cells[i].beta != t.beta || cells[i].pref_pa != t.pref_pa)
+        continue;
+      for (const MapTrial& r : results[i]) {
+        if (r.outcome != "success") continue;
+        sum += t.metric == MetricTarget::kDr ? r.dr_mm
+                                            : (t.metric == MetricTarget::kSigmaR ? r.sigma_r_mm : r.s_c);
+        ++n;
+      }
+    }
+    t.model = n > 0 ? sum / n : std::numeric_limits<double>::quiet_NaN();
+    // No successful trial: the target cannot be measured; charge a large but finite residual.
+    const double res = n > 0 ? (t.model - t.published) / t.tolerance : 5.0;
+    metric_cost += res * res;
+  }
+  metric_cost /= static_cast<double>(targets->size());
+  *cost = score->log_loss + spec.metric_weight * metric_cost;
+  return true;
+}
+
+bool FitDynamic(const mjModel* m, const DynamicFitSpec& spec,
+                const std::function<void(const std::string&)>& log, DynamicFitResult* result,
+                std::string* error) {
+  std::vector<const DynamicParameter*> params;
+  for (const std::string& k : spec.keys) {
+    const DynamicParameter* p = FindParameter(k);
+    if (p == nullptr) {
+      std::string names;
+      for (const DynamicParameter& q : DynamicParameters())
+        names += std::string(names.empty() ? "" : ", ") + q.key;
+      *error = "dynamic fit: unknown parameter '" + k + "' (parameters: " + names + ")";
+      return false;
+    }
+    params.push_back(p);
+  }
+  if (params.empty()) {
+    *error = "dynamic fit: no parameters to fit";
+    return false;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  TrialConfig start = spec.base;
+  std::vector<double> x0(params.size());
+  for (std::size_t i = 0; i < params.size(); ++i) {
+    const double v = *params[i]->field(&start);
+    x0[i] = std::clamp((v - params[i]->min) / (params[i]->max - params[i]->min), 0.0, 1.0);
+  }
+  auto config_at = [&](const std::vector<double>& x) {
+    TrialConfig c = spec.base;
+    for (std::size_t i = 0; i < params.size(); ++i)
+      *params[i]->field(&c) = params[i]->min + std::clamp(x[i], 0.0, 1.0) * (params[i]->max - params[i]->min);
+    return c;
+  };
+  int evaluations = 0;
+  double best_cost = std::numeric_limits<double>::infinity();
+  std::vector<double> best_x = x0;
+  std::string eval_error;
+  auto objective = [&](const std::vector<double>& x) {
+    const TrialConfig c = config_at(x);
+    if (const std::string e = c.Validate(); !e.empty()) return 50.0;  // outside joint limits
+    double cost = 0;
+    MapScore score;
+    std::vector<MetricTarget> targets;
+    if (!EvaluateDynamic(m, spec, c, &cost, &score, &targets, &eval_error)) {
+      throw nlopt::forced_stop();
+    }
+    ++evaluations;
+    if (evaluations == 1) result->start_cost = cost;
+    if (cost < best_cost) {
+      best_cost = cost;
+      best_x = x;
+    }
+    if (log) {
+      std::ostringstream os;
+      os.precision(4);
+      os << "eval " << evaluations << ": cost " << cost << " (class match "
+         << 100 * score.class_match << " %, agreement " << score.expected_agreement << ", opposite "
+         << score.opposite << ")";
+      for (std::size_t i = 0; i < params.size(); ++i) os << ' ' << params[i]->key << '=' << *params[i]->field(const_cast<TrialConfig*>(&c));
+      log(os.str());
+    }
+    return cost;
+  };
+  nlopt::opt opt(spec.algorithm == "sbplx" ? nlopt::LN_SBPLX : nlopt::LN_BOBYQA,
+                 static_cast<unsigned>(params.size()));
+  opt.set_lower_bounds(std::vector<double>(params.size(), 0.0));
+  opt.set_upper_bounds(std::vector<double>(params.size(), 1.0));
+  opt.set_maxeval(spec.max_evaluations);
+  opt.set_initial_step(std::vector<double>(params.size(), 0.25));
+  opt.set_min_objective(
+      [](const std::vector<double>& x, std::vector<double>&, void* data) {
+        return (*static_cast<decltype(objective)*>(data))(x);
+      },
+      &objective);
+  std::vector<double> x = x0;
+  double f = 0;
+  try {
+    opt.optimize(x, f);
+  } catch (const nlopt::forced_stop&) {
+    *error = "dynamic fit: " + eval_error;
+    return false;
+  } catch (const std::exception&) {
+    // Budget reached or roundoff: NLopt still leaves the best point found; ours is best_x.
+  }
+  result->best = config_at(best_x);
+  result->values.clear();
+  for (const DynamicParameter* p : params) result->values.push_back(*p->field(&result->best));
+  result->evaluations = evaluations;
+  if (!EvaluateDynamic(m, spec, result->best, &result->cost, &result->score, &result->targets,
+                       error))
+    return false;
+  result->wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return true;
+}
+
+}  // namespace ssc

@@ -1,0 +1,74 @@
+// `ssc calibrate --dynamic`: fits the robot effects (controller/pure/robot_effects.h) and the
+// real loop's timing GLOBALLY to the published success map at dL 5 mm together with the Fig. 6
+// targets (dr against P_ref; sigma_r and s_c against beta). No per-cell parameters, no outcome
+// tables: each parameter is physical, with a unit and a range argued from the hardware
+// (docs/fidelity.md). The objective uses the same seeds in every evaluation (common random
+// numbers; the sweep's seeds, never chosen to match). NLopt (BOBYQA, or Sbplx) on the unit cube.
+#ifndef SSC_STUDIES_SUCCESS_MAP_FIT_H_
+#define SSC_STUDIES_SUCCESS_MAP_FIT_H_
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "runtime/trial.h"
+#include "studies/map_scores.h"
+
+namespace ssc {
+
+// A fitted parameter: where it lives in the trial config, its unit and its range.
+struct DynamicParameter {
+  const char* key;
+  const char* unit;
+  double min, max;
+  double* (*field)(TrialConfig*);
+};
+// Every parameter the dynamic fit may move (period, servo smoothing and the effects' keys).
+const std::vector<DynamicParameter>& DynamicParameters();
+
+// One Fig. 6 target at dL 5 mm (the map's cells; metrics of the successful trials).
+struct MetricTarget {
+  std::string name;   // e.g. "dr_mm beta 1.5 P_ref 40"
+  double beta, pref_pa;
+  enum Metric { kDr, kSigmaR, kSc } metric;
+  double published, tolerance;
+  double model = 0;    // the twin's mean over successful trials (NaN if none succeeded)
+};
+std::vector<MetricTarget> PublishedMetricTargets();
+
+struct DynamicFitSpec {
+  TrialConfig base;                  // the starting point (its values are the start)
+  std::vector<std::string> keys;     // parameters to fit (DynamicParameters keys)
+  std::vector<MapCell> cells;        // the training map
+  int seeds = 3;                     // trials per cell per evaluation
+  std::uint64_t seed = 1;
+  int threads = 1;
+  int max_evaluations = 40;
+  double metric_weight = 0.05;       // cost = map log-loss + weight * mean((res/tol)^2)
+  std::string algorithm = "bobyqa";  // or "sbplx"
+};
+
+struct DynamicFitResult {
+  TrialConfig best;
+  std::vector<double> values;        // fitted values of spec.keys
+  double cost = 0, start_cost = 0;
+  MapScore score;                    // of the best point (its seeds)
+  std::vector<MetricTarget> targets; // at the best point
+  int evaluations = 0;
+  double wall_s = 0;
+};
+
+// One evaluation (also used to report the start and the best point).
+bool EvaluateDynamic(const mjModel* m, const DynamicFitSpec& spec, const TrialConfig& config,
+                     double* cost, MapScore* score, std::vector<MetricTarget>* targets,
+                     std::string* error);
+
+// `log` (optional) gets one line per evaluation.
+bool FitDynamic(const mjModel* m, const DynamicFitSpec& spec,
+                const std::function<void(const std::string&)>& log, DynamicFitResult* result,
+                std::string* error);
+
+}  // namespace ssc
+
+#endif  // SSC_STUDIES_SUCCESS_MAP_FIT_H_

@@ -1,0 +1,202 @@
+// The robot effects, each on its own (controller/pure/robot_effects.h), against hand values.
+#include "controller/pure/robot_effects.h"
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "controller/pure/contour_law.h"
+
+namespace ssc {
+namespace {
+
+TEST(LoopTimingTest, JitterIsUniformWithTheStatedHalfWidth) {
+  LoopTimingParams p;
+  p.jitter_s = 0.04;
+  const double period = 0.25;
+  const int n = 40000;
+  double sum = 0, sum2 = 0, lo = 1, hi = 0;
+  int low_quarter = 0;
+  for (int i = 0; i < n; ++i) {
+    const double t = IterationPeriod(p, period, 7, static_cast<std::uint64_t>(i));
+    sum += t;
+    sum2 += (t - period) * (t - period);
+    lo = std::fmin(lo, t);
+    hi = std::fmax(hi, t);
+    low_quarter += t < period - p.jitter_s / 2 ? 1 : 0;
+  }
+  EXPECT_GE(lo, period - p.jitter_s);
+  EXPECT_LE(hi, period + p.jitter_s);
+  // Uniform on [-j, j]: mean 0 (sd j/sqrt(3n)), variance j^2/3, a quarter below -j/2.
+  EXPECT_NEAR(sum / n, period, 4 * p.jitter_s / std::sqrt(3.0 * n));
+  EXPECT_NEAR(sum2 / n, p.jitter_s * p.jitter_s / 3, 0.03 * p.jitter_s * p.jitter_s / 3);
+  EXPECT_NEAR(static_cast<double>(low_quarter) / n, 0.25, 0.01);
+  EXPECT_LT(lo, period - 0.95 * p.jitter_s);  // the whole band is used
+  // Off: exactly the period. Same seed and index: the same period (determinism).
+  EXPECT_EQ(IterationPeriod(LoopTimingParams(), period, 7, 3), period);
+  EXPECT_EQ(IterationPeriod(p, period, 7, 3), IterationPeriod(p, period, 7, 3));
+  EXPECT_NE(IterationPeriod(p, period, 7, 3), IterationPeriod(p, period, 8, 3));
+}
+
+TEST(ChamberSpreadTest, AGainSpreadRotatesTheDirectionAsComputedByHand) {
+  // Cup on the east edge of a disk: the west chambers (3 = NW, 4 = SW) covered at 100 Pa.
+  std::array<double, 4> p = {0, 0, 100, 100};
+  ChamberSpreadParams params;  // no drift: only the gains act
+  ChamberSpreadState s;
+  s.gain = {1.0, 1.0, 1.2, 0.8};
+  ApplyChamberSpread(params, 1, 0.0, &s, &p);
+  EXPECT_DOUBLE_EQ(p[2], 120);
+  EXPECT_DOUBLE_EQ(p[3], 80);
+  // By hand: dPx = P_N - P_S = (0+120)/2 - (0+80)/2 = 20; dPy = P_W - P_E = 100 - 0 = 100.
+  // g = 20 north + 100 west: atan(20/100) = 11.31 deg from west toward north.
+  ContourLawParams law;
+  const ContourStep step = ComputeContourStep(p, law);
+  EXPECT_DOUBLE_EQ(step.dpx_pa, 20);
+  EXPECT_DOUBLE_EQ(step.dpy_pa, 100);
+  const double north = -step.correction[0], west = step.correction[1];  // north = -x_tool
+  EXPECT_NEAR(std::atan2(north, west) * 180 / M_PI, std::atan(0.2) * 180 / M_PI, 1e-9);
+  // Equal gains: straight west.
+  std::array<double, 4> q = {0, 0, 100, 100};
+  ChamberSpreadState equal;
+  ApplyChamberSpread(params, 1, 0.0, &equal, &q);
+  EXPECT_NEAR(ComputeContourStep(q, law).correction[0], 0.0, 1e-12);
+}
+
+TEST(ChamberSpreadTest, GainsAreDrawnPerTrialWithTheStatedSpread) {
+  ChamberSpreadParams params;
+  params.gain_spread = 0.1;
+  double sum2 = 0;
+  int n = 0;
+  for (std::uint64_t seed = 0; seed < 3000; ++seed) {
+    ChamberSpreadState s;
+    ResetChamberSpread(params, seed, &s);
+    for (double g : s.gain) {
+      sum2 += (g - 1) * (g - 1);
+      ++n;
+    }
+  }
+  EXPECT_NEAR(std::sqrt(sum2 / n), 0.1, 0.005);
+  ChamberSpreadState off;
+  ResetChamberSpread(ChamberSpreadParams(), 5, &off);
+  for (double g : off.gain) EXPECT_EQ(g, 1.0);
+}
+
+TEST(ChamberSpreadTest, SlowNoiseHasItsStationarySpreadAndCorrelationTime) {
+  ChamberSpreadParams params;
+  params.drift_pa = 8;
+  params.drift_time_s = 0.2;
+  ChamberSpreadState s;
+  ResetChamberSpread(params, 3, &s);
+  std::vector<double> x;
+  for (int i = 0; i < 40000; ++i) {
+    std::array<double, 4> p = {0, 0, 0, 0};
+    ApplyChamberSpread(params, 3, i * 0.05, &s, &p);  // 50 ms apart: a quarter of tau
+    x.push_back(p[0]);
+  }
+  double m = 0, v = 0, c = 0;
+  for (double a : x) m += a;
+  m /= x.size();
+  for (double a : x) v += (a - m) * (a - m);
+  v /= x.size();
+  for (std::size_t i = 4; i < x.size(); ++i) c += (x[i] - m) * (x[i - 4] - m);
+  c /= (x.size() - 4) * v;
+  EXPECT_NEAR(std::sqrt(v), 8.0, 0.4);
+  EXPECT_NEAR(c, std::exp(-1.0), 0.05);  // lag 4 x 50 ms = tau
+}
+
+TEST(LipShearTest, NoFrictionNoShearNoTilt) {
+  LipShearParams p;  // slip 0: the footprint never sticks
+  p.tilt_decades = 0.3;
+  LipShearState s;
+  AdvanceLipShear(p, {0.004, 0.0}, &s);
+  EXPECT_EQ(s.shear_m[0], 0.0);
+  std::array<double, 4> pa = {10, 20, 30, 40};
+  ApplyLipTilt(p, s, &pa);
+  EXPECT_EQ(pa, (std::array<double, 4>{10, 20, 30, 40}));
+}
+
+TEST(LipShearTest, ShearSaturatesAtSlipAndTiltsLeadingUpTrailingDown) {
+  LipShearParams p;
+  p.slip_mm = 1.0;
+  p.tilt_decades = 0.2;
+  LipShearState s;
+  AdvanceLipShear(p, {0.0004, 0.0}, &s);  // 0.4 mm south: sticks
+  EXPECT_NEAR(s.shear_m[0], 0.0004, 1e-15);
+  AdvanceLipShear(p, {0.004, 0.0}, &s);  // on to 4.4 mm: slides at the 1 mm limit
+  EXPECT_NEAR(s.shear_m[0], 0.001, 1e-15);
+  std::array<double, 4> pa = {100, 100, 100, 100};
+  ApplyLipTilt(p, s, &pa);
+  // Moving south (+x_tool): SE and SW lead (x 10^(0.2 cos 45)), NE and NW trail.
+  const double f = std::pow(10.0, 0.2 * std::sqrt(0.5));
+  EXPECT_NEAR(pa[0], 100 * f, 1e-9);
+  EXPECT_NEAR(pa[3], 100 * f, 1e-9);
+  EXPECT_NEAR(pa[1], 100 / f, 1e-9);
+  EXPECT_NEAR(pa[2], 100 / f, 1e-9);
+  // Reversing by 1 mm unloads the shear to zero: no tilt.
+  AdvanceLipShear(p, {-0.001, 0.0}, &s);
+  std::array<double, 4> flat = {100, 100, 100, 100};
+  ApplyLipTilt(p, s, &flat);
+  EXPECT_NEAR(flat[0], 100, 1e-9);
+}
+
+TEST(LipShearTest, ForwardTiltTurnsTheTravelAwayFromTheObject) {
+  // East edge, object west, moving north (object on the left): the NW chamber leads.
+  LipShearParams p;
+  p.slip_mm = 1;
+  p.tilt_decades = 0.2;
+  LipShearState s;
+  AdvanceLipShear(p, {-0.003, 0.0}, &s);  // north = -x_tool
+  std::array<double, 4> pa = {0, 0, 100, 100};
+  ApplyLipTilt(p, s, &pa);
+  EXPECT_GT(pa[2], pa[3]);
+  ContourLawParams law;
+  law.beta = 0;  // travel direction only
+  const ContourStep step = ComputeContourStep(pa, law);
+  // Without tilt the travel is due north (-x); the tilt gives it an eastward (-y) component:
+  // away from the object, the drift behind failure I.
+  EXPECT_LT(step.direction[0], 0);
+  EXPECT_LT(step.direction[1], -0.05);
+}
+
+TEST(RobotEffectsKeysTest, ParseIsStrictAndOffTurnsEverythingOff) {
+  RobotEffectsParams p;
+  std::string error;
+  ASSERT_TRUE(ParseRobotEffects("jitter_s=0.02,tilt_decades=0.1", &p, &error)) << error;
+  EXPECT_EQ(p.loop.jitter_s, 0.02);
+  EXPECT_EQ(p.lip.tilt_decades, 0.1);
+  for (const char* bad : {"jitter_s=", "jitter_s=0x10", "tilt_decades=2", "nope=1", "jitter_s=0.1,",
+                          "slip_mm=nan", "drift_pa=1e3", "gain_spread"}) {
+    RobotEffectsParams q = p;
+    EXPECT_FALSE(ParseRobotEffects(bad, &q, &error)) << bad;
+    EXPECT_FALSE(error.empty());
+  }
+  EXPECT_FALSE(ParseRobotEffects("tilt_decades=2", &p, &error));
+  EXPECT_NE(error.find("tilt_decades"), std::string::npos);
+  EXPECT_NE(error.find("[0, 1]"), std::string::npos);
+  p.chambers.gain_spread = 0.1;
+  p.lip.slip_mm = 1;
+  ASSERT_TRUE(ParseRobotEffects("off", &p, &error));
+  EXPECT_FALSE(p.AnyOn());
+  EXPECT_GT(p.chambers.drift_time_s, 0);  // a time constant, not an effect
+  // Round trip through the text form.
+  RobotEffectsParams r;
+  r.loop.pose_delay_s = 0.05;
+  r.chambers.drift_pa = 3;
+  RobotEffectsParams back;
+  ASSERT_TRUE(ParseRobotEffects(FormatRobotEffects(r), &back, &error)) << error;
+  EXPECT_EQ(FormatRobotEffects(back), FormatRobotEffects(r));
+}
+
+TEST(RobotEffectsKeysTest, ValidateBoundsTheTimingByThePeriod) {
+  RobotEffectsParams p;
+  EXPECT_EQ(p.Validate(0.25), "");
+  p.loop.jitter_s = 0.2;
+  EXPECT_NE(p.Validate(0.25).find("jitter_s"), std::string::npos);
+  p.loop.jitter_s = 0.05;
+  p.loop.pose_delay_s = 0.25;
+  EXPECT_NE(p.Validate(0.25).find("pose_delay_s"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace ssc

@@ -1,0 +1,168 @@
+// Scoring a published success map (studies/map_scores.h) and `ssc validate`'s study
+// (studies/validation.h) on maps whose scores are known.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "runtime/mujoco_model.h"
+#include "studies/map_scores.h"
+#include "studies/validation.h"
+
+namespace ssc {
+namespace {
+
+TEST(MapScoresTest, BinomialClassProbabilitiesAreExact) {
+  EXPECT_DOUBLE_EQ(ClassProbability(MapClass::kThreeOfThree, 0.5), 0.125);
+  EXPECT_DOUBLE_EQ(ClassProbability(MapClass::kTwoOfThree, 0.5), 0.375);
+  EXPECT_DOUBLE_EQ(ClassProbability(MapClass::kAtMostOne, 0.5), 0.5);
+  EXPECT_DOUBLE_EQ(ClassProbability(MapClass::kThreeOfThree, 0.9), 0.729);
+  EXPECT_NEAR(ClassProbability(MapClass::kTwoOfThree, 0.9), 0.243, 1e-15);
+  EXPECT_NEAR(ClassProbability(MapClass::kAtMostOne, 0.9), 0.028, 1e-15);
+  EXPECT_DOUBLE_EQ(ClassProbability(MapClass::kAtMostOne, 0.0), 1.0);
+  EXPECT_DOUBLE_EQ(ClassProbability(MapClass::kThreeOfThree, 1.0), 1.0);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int i = 0; i < 100; ++i) {
+    const double p = u(rng);
+    EXPECT_NEAR(ClassProbability(MapClass::kThreeOfThree, p) +
+                    ClassProbability(MapClass::kTwoOfThree, p) +
+                    ClassProbability(MapClass::kAtMostOne, p),
+                1.0, 1e-14);
+  }
+  EXPECT_EQ(ClassOfSuccesses(3), MapClass::kThreeOfThree);
+  EXPECT_EQ(ClassOfSuccesses(2), MapClass::kTwoOfThree);
+  EXPECT_EQ(ClassOfSuccesses(1), MapClass::kAtMostOne);
+  EXPECT_EQ(ClassOfSuccesses(0), MapClass::kAtMostOne);
+}
+
+TEST(MapScoresTest, WilsonIntervalMatchesTheTextbook) {
+  // 8 of 10: Wilson 95 % = [0.490, 0.943].
+  const auto w = WilsonInterval(8, 10);
+  EXPECT_NEAR(w[0], 0.4902, 1e-3);
+  EXPECT_NEAR(w[1], 0.9433, 1e-3);
+  EXPECT_EQ(WilsonInterval(0, 10)[0], 0.0);
+}
+
+TEST(MapScoresTest, ASyntheticMapScoresAsComputedByHand) {
+  const std::vector<MapCell> cells = {{5, 1, 100, MapClass::kThreeOfThree},
+                                      {5, 2, 100, MapClass::kAtMostOne},
+                                      {5, 3, 100, MapClass::kTwoOfThree},
+                                      {5, 4, 100, MapClass::kAtMostOne}};
+  const std::string S = "success", I = "failure_I", II = "failure_II";
+  std::vector<CellTrials> trials(4);
+  trials[0].outcomes = {S, S, S, S};          // p 1: class 3 = published, agreement 1
+  trials[1].outcomes = {S, S, S, S, S, S, S, S, S, II};  // p 0.9 vs <=1: opposite
+  trials[2].outcomes = {S, I, S, I};          // first 3: 2 of 3 = published; p 0.5: 0.375
+  trials[3].outcomes = {S, I, II, II};        // class <=1 = published; p 0.25
+  MapScore score;
+  std::string error;
+  ASSERT_TRUE(ScoreMap(cells, trials, &score, &error)) << error;
+  EXPECT_DOUBLE_EQ(score.class_match, 3.0 / 4.0);  // cell 1's first three succeed: class 3
+  EXPECT_EQ(score.opposite, 1);
+  EXPECT_TRUE(score.cells[1].opposite);
+  const double p3 = 1 - 0.25 * 0.25 * 0.25 - 3 * 0.25 * 0.25 * 0.75;
+  const double p1 = ClassProbability(MapClass::kAtMostOne, 0.9);
+  EXPECT_NEAR(score.expected_agreement, (1.0 + p1 + 0.375 + p3) / 4, 1e-12);
+  EXPECT_EQ(score.cells[3].failure_grasp, 2);
+  EXPECT_EQ(score.cells[3].failure_off_edge, 1);
+  EXPECT_EQ(score.cells[3].main_failure, "failure_II");
+  EXPECT_EQ(score.cells[0].main_failure, "");
+  // Too few trials in a cell is an error naming the cell.
+  trials[2].outcomes = {S, S};
+  EXPECT_FALSE(ScoreMap(cells, trials, &score, &error));
+  EXPECT_NE(error.find("beta 3"), std::string::npos);
+}
+
+std::string WriteFile(const std::string& name, const std::string& text) {
+  const std::string path = (std::filesystem::temp_directory_path() / name).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(PublishedMapTest, TheShippedMapReadsWithItsClassCounts) {
+  std::vector<MapCell> cells;
+  std::string error;
+  ASSERT_TRUE(ReadPublishedMap(SourceDir() + "/data/published/success_map_dl5.csv", &cells, &error))
+      << error;
+  int three = 0, two = 0, low = 0;
+  for (const MapCell& c : cells) {
+    EXPECT_EQ(c.step_mm, 5.0);
+    three += c.published == MapClass::kThreeOfThree;
+    two += c.published == MapClass::kTwoOfThree;
+    low += c.published == MapClass::kAtMostOne;
+  }
+  EXPECT_EQ(cells.size(), 45u);
+  EXPECT_EQ(three, 13);
+  EXPECT_EQ(two, 14);
+  EXPECT_EQ(low, 18);
+}
+
+TEST(PublishedMapTest, BadFilesNameTheLineAndTheRange) {
+  std::vector<MapCell> cells;
+  std::string error;
+  const std::string h = "step_mm,beta,pref_pa,successes_of_3\n";
+  struct Case {
+    std::string text, expect;
+  } cases[] = {{"step,beta,pref,ok\n5,1,100,3\n", ":1: header"},
+               {h + "5,1,100,1\n", "must be 3, 2 or <=1"},
+               {h + "5,1,100,3\n5,1,100,2\n", "appears twice"},
+               {h + "5,-1,100,3\n", "beta '-1'"},
+               {h + "5,1,0x10,3\n", "pref_pa '0x10'"},
+               {h + "5,1,100\n", "expected 4 fields"},
+               {h, "no cells"},
+               {"", "empty"}};
+  for (const Case& c : cases) {
+    const std::string path = WriteFile("ssc_bad_map.csv", c.text);
+    EXPECT_FALSE(ReadPublishedMap(path, &cells, &error)) << c.text;
+    EXPECT_NE(error.find(c.expect), std::string::npos) << error;
+    EXPECT_NE(error.find(path), std::string::npos) << error;
+  }
+  EXPECT_FALSE(ReadPublishedMap("/nonexistent/map.csv", &cells, &error));
+}
+
+// The whole study on a tiny map with the ideal loop, whose outcomes the docs state: beta 0 never
+// corrects (failure I), beta 2 at P_ref 100 follows the disk. Publishing "3" for beta 0 makes
+// that cell opposite with agreement 0.
+TEST(ValidationStudyTest, ATinyMapGetsTheKnownScores) {
+  std::string error;
+  ModelPtr model = LoadModel(SourceDir() + "/scenes/disk_benchmark_gantry.xml", &error);
+  ASSERT_TRUE(model) << error;
+  const std::string dir =
+      (std::filesystem::temp_directory_path() / "ssc_validation_test").string();
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  ValidateSpec spec;
+  spec.map_path = WriteFile("ssc_tiny_map.csv",
+                            "step_mm,beta,pref_pa,successes_of_3\n5,2,100,3\n5,0,100,3\n");
+  spec.scene_name = "disk_benchmark_gantry";
+  ASSERT_TRUE(ParseRobotEffects("off", &spec.base.effects, &error));
+  spec.base.control_period_s = 0.15;
+  spec.base.servo.smoothing_s = 0.15;
+  spec.seeds = 3;
+  spec.threads = 2;
+  spec.out_dir = dir;
+  MapScore score;
+  SweepSummary summary;
+  ASSERT_TRUE(RunValidation(model.get(), spec, nullptr, &score, &summary, &error)) << error;
+  ASSERT_EQ(score.cells.size(), 2u);
+  EXPECT_EQ(score.cells[0].successes, 3);
+  EXPECT_EQ(score.cells[1].successes, 0);
+  EXPECT_EQ(score.cells[1].failure_off_edge, 3);
+  EXPECT_DOUBLE_EQ(score.class_match, 0.5);
+  EXPECT_DOUBLE_EQ(score.expected_agreement, 0.5);
+  EXPECT_EQ(score.opposite, 1);
+  EXPECT_TRUE(std::filesystem::exists(dir + "/cells.csv"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/validate.json"));
+  // Resuming runs nothing new and scores the same.
+  MapScore again;
+  ASSERT_TRUE(RunValidation(model.get(), spec, nullptr, &again, &summary, &error)) << error;
+  EXPECT_EQ(summary.ran, 0);
+  EXPECT_DOUBLE_EQ(again.expected_agreement, score.expected_agreement);
+}
+
+}  // namespace
+}  // namespace ssc

@@ -1,0 +1,76 @@
+#!/usr/bin/env python3
+"""Published | twin | difference for `ssc validate` (cells.csv), one row of panels per step."""
+import csv
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.colors import ListedColormap  # noqa: E402
+
+CLASS_VALUE = {"<=1": 0, "2": 1, "3": 2}
+
+
+def main(cells_csv, out_png):
+    rows = list(csv.DictReader(open(cells_csv)))
+    steps = sorted({float(r["step_mm"]) for r in rows})
+    fig, axes = plt.subplots(len(steps), 3, figsize=(13, 4.2 * len(steps)), squeeze=False)
+    cmap = ListedColormap(["#d7301f", "#fdae61", "#1a9850"])
+    for si, step in enumerate(steps):
+        sub = [r for r in rows if float(r["step_mm"]) == step]
+        betas = sorted({float(r["beta"]) for r in sub})
+        prefs = sorted({float(r["pref_pa"]) for r in sub})
+        grids = [[[None] * len(prefs) for _ in betas] for _ in range(3)]
+        for r in sub:
+            i, j = betas.index(float(r["beta"])), prefs.index(float(r["pref_pa"]))
+            grids[0][i][j] = CLASS_VALUE[r["published"]]
+            grids[1][i][j] = float(r["p_success"])
+            grids[2][i][j] = float(r["p_success"]) * 3 - (CLASS_VALUE[r["published"]] + 1)
+        titles = ["published (class of 3 trials)", "twin: success rate over seeds",
+                  "twin minus published (expected successes of 3)"]
+        for k, ax in enumerate(axes[si]):
+            for i, _ in enumerate(betas):
+                for j, _ in enumerate(prefs):
+                    v = grids[k][i][j]
+                    if v is None:
+                        ax.add_patch(plt.Rectangle((j - .5, i - .5), 1, 1, color="#eeeeee"))
+                        continue
+                    if k == 0:
+                        color = cmap(v / 2)
+                        text = ["<=1", "2", "3"][v]
+                    elif k == 1:
+                        color = plt.cm.RdYlGn(v)
+                        text = f"{v:.1f}"
+                    else:
+                        color = plt.cm.coolwarm((v + 3) / 6)
+                        text = f"{v:+.1f}"
+                    ax.add_patch(plt.Rectangle((j - .5, i - .5), 1, 1, color=color))
+                    ax.text(j, i, text, ha="center", va="center", fontsize=10)
+                    r = next(x for x in sub if float(x["beta"]) == betas[i]
+                             and float(x["pref_pa"]) == prefs[j])
+                    if k == 2 and r["opposite"] == "1":
+                        ax.add_patch(plt.Rectangle((j - .45, i - .45), .9, .9, fill=False,
+                                                   lw=2.5, ec="black"))
+                    if k == 1 and r["main_failure"]:
+                        ax.text(j, i - 0.32, {"failure_I": "I", "failure_II": "II"}.get(
+                            r["main_failure"], r["main_failure"][:2]), ha="center",
+                            va="center", fontsize=7, color="#333333")
+            ax.set_xlim(-.5, len(prefs) - .5)
+            ax.set_ylim(-.5, len(betas) - .5)
+            ax.set_xticks(range(len(prefs)))
+            ax.set_xticklabels([f"{p:g}" for p in prefs])
+            ax.set_yticks(range(len(betas)))
+            ax.set_yticklabels([f"{b:g}" for b in betas])
+            ax.set_xlabel("P_ref (Pa)")
+            ax.set_ylabel("beta")
+            ax.set_title(f"dL {step:g} mm: {titles[k]}", fontsize=10)
+            ax.set_aspect("equal")
+    fig.text(0.5, 0.005, "small letters: the twin's most common failure (I off the edge, II "
+             "grasped); black frame: opposite cell", ha="center", fontsize=9)
+    fig.tight_layout(rect=(0, 0.02, 1, 1))
+    fig.savefig(out_png, dpi=110)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], sys.argv[2])
