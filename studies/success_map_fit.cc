@@ -91,7 +91,7 @@ bool EvaluateDynamic(const mjModel* m, const DynamicFitSpec& spec, const TrialCo
     t.model = n > 0 ? sum / n : std::numeric_limits<double>::quiet_NaN();
     // No successful trial: the target cannot be measured; charge a large but finite residual.
     const double res = n > 0 ? (t.model - t.published) / t.tolerance : 5.0;
-    metric_cost += res * res;
+    metric_cost += std::min(res * res, 25.0);  // capped: one hopeless target cannot outweigh the map
   }
   metric_cost /= static_cast<double>(targets->size());
   *cost = score->log_loss + spec.metric_weight * metric_cost;

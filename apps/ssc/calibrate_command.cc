@@ -58,6 +58,10 @@ int RunCalibrateCommand(int argc, char** argv) {
   cmd.Integer("threads", &dyn_threads, "worker threads", NumberRange::Closed(1, 256));
   cmd.Choice("dynamic-algorithm", &dyn_algorithm, "NLopt algorithm", {"bobyqa", "sbplx"});
   cmd.Text("map", &dyn_map, "training map for --dynamic");
+  double dyn_weight = 0.02;
+  cmd.Number("dynamic-metric-weight", &dyn_weight,
+             "weight of the Fig. 6 targets against the map's log-loss", "",
+             NumberRange::Closed(0, 100));
   cmd.OutputDir("out", &out_dir, "output directory");
   AddTrialSettingOptions(&cmd, &dyn_base, &settings);
   if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
@@ -75,6 +79,7 @@ int RunCalibrateCommand(int argc, char** argv) {
     spec.threads = static_cast<int>(dyn_threads);
     spec.max_evaluations = static_cast<int>(dyn_evals);
     spec.algorithm = dyn_algorithm;
+    spec.metric_weight = dyn_weight;
     ModelPtr model = LoadModel(ResolveScenePath("disk_benchmark_gantry"), &error);
     if (!model) {
       std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
