@@ -9,15 +9,10 @@ namespace ssc {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kLipRadius = 5.5e-3;
-constexpr int kLipSegments = 16;
 
 std::array<double, 4> Taps(const PneumaticModel& m, double offset_m) {
-  // Edge normal toward north (chambers 2, 3 over the edge), lip phase as in the cup model.
-  const EdgeProbe probe = ProbeStraightEdge(m.geometry, offset_m, kPi, kLipRadius, kLipSegments,
-                                            kPi / kLipSegments);
-  const auto leak = LeakAreas(m.geometry, probe.sealed_area_m2, probe.segments.data(), probe.n_segments);
-  return SolveFlowNetwork(m.pneumatics, leak).tap_pa;
+  // Edge normal toward north (chambers 2, 3 over the edge).
+  return SolveProbe(m.geometry, m.pneumatics, ProbeStraightEdge(m.geometry, offset_m, kPi)).tap_pa;
 }
 
 double Mean(const std::array<double, 4>& p) { return 0.25 * (p[0] + p[1] + p[2] + p[3]); }

@@ -59,6 +59,7 @@ std::string FormatGroups(const C& c) {
 // constexpr: the table is built from the plugin library's load-time initialiser, maybe before
 // this file's dynamic initialisers have run.
 constexpr NumberRange kArea = NumberRange::Positive(10000);
+constexpr double kDegPerRad = 57.29577951308232;
 
 }  // namespace
 
@@ -67,9 +68,10 @@ const std::vector<ChamberPressureConfigKey>& ChamberPressureConfigKeys() {
       // Geometry.
       {"opening_radius_mm", "mm", "geometry", "internal radius of the cup's opening",
        NumberRange::Closed(0.5, 50), SSC_KEY_SCALED(geometry.opening_radius_m, 1e3, 1e-3)},
-      {"seal_distance_mm", "mm", "geometry",
-       "a surface this far below the lip plane still seals the opening", NumberRange::Closed(0, 10),
-       SSC_KEY_SCALED(geometry.seal_distance_m, 1e3, 1e-3)},
+      {"open_depth_mm", "mm", "geometry",
+       "depth scale of the continuous seal: a layer of air this thick under the lip tips passes "
+       "air freely, thinner ones in proportion (no threshold)",
+       NumberRange::Closed(0.05, 10), SSC_KEY_SCALED(geometry.open_depth_m, 1e3, 1e-3)},
       {"lip_roughness_um", "um", "geometry", "leak gap of a lip segment lying on a surface",
        NumberRange::Closed(0, 1000), SSC_KEY_SCALED(geometry.lip_roughness_gap_m, 1e6, 1e-6)},
       {"rays_per_chamber", "", "geometry", "radial rays sampling each chamber's opening",
@@ -81,6 +83,17 @@ const std::vector<ChamberPressureConfigKey>& ChamberPressureConfigKeys() {
        NumberRange::Whole(0, kNumGeomGroups - 1), nullptr, nullptr, ParseGroups, FormatGroups},
       {"lip_geom_group", "", "geometry", "geom group of the lip segments under the sensor's site",
        NumberRange::Whole(0, kNumGeomGroups - 1), SSC_KEY_INT(lip_geom_group, int)},
+      // Lip mechanics (docs/pneumatics.md: the lip ring, shear and tilt).
+      {"lip_bending_nmm2", "N mm^2", "lip",
+       "EI of the lip ring bent out of its plane (couples the lip segments; 0 = uncoupled)",
+       NumberRange::Closed(0, 100), SSC_KEY_SCALED(lip.bending_stiffness_nm2, 1e6, 1e-6)},
+      {"lip_shear_n_per_mm", "N/mm", "lip",
+       "lateral stiffness of the lip carrier under friction; 0 = rigid (off), soft cup ~1",
+       NumberRange::Closed(0, 100), SSC_KEY_SCALED(lip.shear_stiffness_n_per_m, 1e-3, 1e3)},
+      {"lip_tilt_nmm_per_deg", "N mm/deg", "lip",
+       "tilt stiffness of the lip carrier about its pivot; 0 = rigid (off), soft cup ~5",
+       NumberRange::Closed(0, 1000),
+       SSC_KEY_SCALED(lip.tilt_stiffness_nm_per_rad, 1e3 / kDegPerRad, 1e-3 * kDegPerRad)},
       // Pneumatics.
       {"pump_max_vacuum_pa", "Pa", "pneumatics", "pump vacuum at zero flow",
        NumberRange::Positive(100000).OpenHigh(), SSC_KEY_SCALED(pneumatics.pump_max_vacuum_pa, 1, 1)},

@@ -18,6 +18,7 @@
 #include "common/strict_number.h"
 #include "plugin/pneumatics/cup_geometry.h"
 #include "plugin/pneumatics/flow_network.h"
+#include "plugin/pneumatics/lip_ring.h"
 #include "plugin/pneumatics/sensor_chain.h"
 
 namespace ssc {
@@ -28,6 +29,7 @@ inline constexpr int kNumGeomGroups = 6;  // MuJoCo's mjNGROUP (checked where Mu
 // Every config value, parsed and validated once.
 struct ChamberPressureConfig {
   CupGeometry geometry;
+  LipMechanics lip;
   PneumaticParams pneumatics;
   SensorChainParams sensor;
   double ray_start_m = 0.01;

@@ -55,8 +55,17 @@ class ChamberPressureSensor final : public ChamberPressureDiagnostics {
   void Measure(const mjModel* m, const mjData* d, ChamberPressureSample* sample) const override;
   void CopyDiagnosticsFrom(const ChamberPressureSensor& other) { sample_ = other.sample_; }
 
+  // Passive forces of the lip (ring bending, shear and tilt springs) into d->qfrc_passive, and
+  // the carrier's locks switched to match the config.
+  void ApplyLipForces(const mjModel* m, mjData* d) const;
+
  private:
   ChamberPressureSensor(ChamberPressureConfig config, int instance, int site_id, int sensor_adr);
+  // Finds the lip's carrier, the segments' joints and the carrier's shear/tilt joints; checks
+  // the lip stiffnesses against the time step. False with *error on a bad model or config.
+  bool BindLip(const mjModel* m, std::string* error);
+  // World pose of the opening's frame (the tool frame carried by the lip).
+  void OpeningFrame(const mjData* d, mjtNum pos[3], mjtNum mat[9]) const;
 
   ChamberPressureConfig config_;
   int instance_;
@@ -64,11 +73,33 @@ class ChamberPressureSensor final : public ChamberPressureDiagnostics {
   int sensor_adr_;
   std::vector<int> lip_geoms_;          // geom id of each lip segment
   std::vector<int> lip_of_geom_;        // segment index of each geom id, -1 if not lip
+  std::vector<double> lip_tip_radius_;  // tip below the segment geom's centre (capsule radius)
+  mutable std::vector<double> lip_tip_depth_;  // per sample: tip depth below the lip plane
+  // The body carrying the lip segments and the site's pose relative to it.
+  int carrier_body_ = 0;
+  mjtNum opening_offset_pos_[3] = {0, 0, 0};
+  mjtNum opening_offset_mat_[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  // The lip segments either side of each wedge's bisector and the weight of the second.
+  struct WedgeRim {
+    int segment[2] = {0, 0};
+    double weight1 = 0.0;
+  };
+  std::vector<WedgeRim> wedge_rim_;
+  // Ring bending: each segment's slide joint, its angle, the ring radius and the mode cap.
+  std::vector<int> segment_dof_, segment_qpos_;
+  std::vector<double> segment_angle_;
+  mutable std::vector<double> ring_u_, ring_force_;
+  double lip_radius_m_ = 5.5e-3;
+  double ring_mode_cap_n_per_m_ = kNoModeCap;
+  struct CarrierJoint {
+    int dof = 0, qpos = 0, lock = -1;  // lock: equality constraint that pins it, -1 if none
+    bool is_tilt = false;              // hinge (tilt) or slide (shear)
+  };
+  std::vector<CarrierJoint> carrier_joints_;
   std::vector<mjtNum> ray_dirs_local_;  // unit radial directions in the site frame, 3 per ray
   mutable std::vector<mjtNum> ray_dirs_world_;
   mutable std::vector<int> ray_geom_;
   mutable std::vector<mjtNum> ray_dist_;
-  mutable mjtNum dir_scratch_[3] = {0, 0, 0};
   ChamberPressureSample sample_;
 };
 
@@ -151,11 +182,23 @@ ChamberPressureSensor* ChamberPressureSensor::Create(const mjModel* m, int insta
                      p[2] - m->site_pos[3 * site_id + 2]};
     mjtNum local[3];
     mju_rotVecQuat(local, rel, site_quat_inv);
-    sensor->sample_.lip[i].chamber = ChamberOfAngle(std::atan2(local[1], local[0]));
+    const double angle = std::atan2(local[1], local[0]);
+    sensor->sample_.lip[i].chamber = ChamberOfAngle(angle);
+    sensor->segment_angle_.push_back(angle);
     radius_sum += std::hypot(local[0], local[1]);
+    const int type = m->geom_type[g];
+    sensor->lip_tip_radius_.push_back(type == mjGEOM_CAPSULE || type == mjGEOM_SPHERE
+                                          ? m->geom_size[3 * g]
+                                          : m->geom_size[3 * g + 2]);
   }
-  const double arc = 2.0 * M_PI * (radius_sum / n_seg) / n_seg;
+  sensor->lip_radius_m_ = radius_sum / n_seg;
+  const double arc = 2.0 * M_PI * sensor->lip_radius_m_ / n_seg;
   for (LipSegmentState& s : sensor->sample_.lip) s.arc_m = arc;
+  sensor->lip_tip_depth_.assign(n_seg, 0.0);
+  if (!sensor->BindLip(m, error)) {
+    delete sensor;
+    return nullptr;
+  }
 
   // Radial ray directions in the site frame.
   const int per = sensor->config_.geometry.rays_per_chamber;
@@ -173,7 +216,136 @@ ChamberPressureSensor* ChamberPressureSensor::Create(const mjModel* m, int insta
   sensor->ray_dirs_world_.resize(3 * n_rays);
   sensor->ray_geom_.resize(n_rays);
   sensor->ray_dist_.resize(n_rays);
+  sensor->sample_.wedges.resize(n_rays);
+  // Each wedge's rim lies between the two lip segments either side of its bisector.
+  sensor->wedge_rim_.resize(n_rays);
+  for (int c = 0; c < kNumChambers; ++c) {
+    for (int j = 0; j < per; ++j) {
+      const int r = c * per + j;
+      const double a = RayAngle(c, j, per);
+      OpeningWedge& w = sensor->sample_.wedges[r];
+      w.chamber = c;
+      w.dtheta_rad = 0.5 * M_PI / per;
+      double before = 1e9, after = 1e9;
+      WedgeRim& rim = sensor->wedge_rim_[r];
+      for (int i = 0; i < n_seg; ++i) {
+        const double delta = std::remainder(a - sensor->segment_angle_[i], 2.0 * M_PI);
+        if (delta >= 0 && delta < before) {
+          before = delta;
+          rim.segment[0] = i;
+        }
+        if (delta < 0 && -delta < after) {
+          after = -delta;
+          rim.segment[1] = i;
+        }
+      }
+      if (after >= 1e9) rim.segment[1] = rim.segment[0];
+      if (before >= 1e9) rim.segment[0] = rim.segment[1];
+      rim.weight1 = (before < 1e9 && after < 1e9) ? before / (before + after) : 0.0;
+    }
+  }
   return sensor;
+}
+
+bool ChamberPressureSensor::BindLip(const mjModel* m, std::string* error) {
+  const int root = m->site_bodyid[site_id_];
+  const int n_seg = static_cast<int>(lip_geoms_.size());
+  const double dt = m->opt.timestep;
+  auto fail = [&](const std::string& what) {
+    *error = std::string(kChamberPressurePluginName) + ": " + what;
+    return false;
+  };
+  // The carrier: the common parent of the segments' bodies (the site's body in a rigid cup).
+  int carrier = -1;
+  for (int g : lip_geoms_) {
+    const int b = m->geom_bodyid[g];
+    const int parent = b == root ? root : m->body_parentid[b];
+    if (carrier < 0) carrier = parent;
+    if (parent != carrier) {
+      carrier = root;
+      break;
+    }
+  }
+  if (carrier != root && m->body_parentid[carrier] != root) {
+    return fail("the lip segments' parent body must be the tool site's body or its child");
+  }
+  carrier_body_ = carrier;
+  // The site's pose in the carrier's frame at the reference configuration.
+  mjtNum site_mat[9];
+  mju_quat2Mat(site_mat, m->site_quat + 4 * site_id_);
+  if (carrier == root) {
+    mju_copy3(opening_offset_pos_, m->site_pos + 3 * site_id_);
+    mju_copy(opening_offset_mat_, site_mat, 9);
+  } else {
+    mjtNum carrier_mat[9], rel[3];
+    mju_quat2Mat(carrier_mat, m->body_quat + 4 * carrier);
+    mju_sub3(rel, m->site_pos + 3 * site_id_, m->body_pos + 3 * carrier);
+    mju_mulMatTVec3(opening_offset_pos_, carrier_mat, rel);
+    mju_mulMatTMat(opening_offset_mat_, carrier_mat, site_mat, 3, 3, 3);
+  }
+
+  // Ring bending acts on each segment's slide joint.
+  const LipMechanics& lip = config_.lip;
+  double min_mass = 1e9;
+  for (int g : lip_geoms_) {
+    const int b = m->geom_bodyid[g];
+    const int j = m->body_jntadr[b];
+    if (m->body_jntnum[b] < 1 || m->jnt_type[j] != mjJNT_SLIDE) {
+      segment_dof_.clear();
+      segment_qpos_.clear();
+      break;
+    }
+    segment_dof_.push_back(m->jnt_dofadr[j]);
+    segment_qpos_.push_back(m->jnt_qposadr[j]);
+    min_mass = std::min(min_mass, m->dof_M0[m->jnt_dofadr[j]]);
+  }
+  if (lip.bending_stiffness_nm2 > 0 && segment_dof_.empty()) {
+    return fail("lip_bending_nmm2 > 0 needs a slide joint on every lip segment's body");
+  }
+  // Explicit springs stay stable while omega * dt <= 1: modes stiffer than that are capped.
+  if (!segment_dof_.empty()) ring_mode_cap_n_per_m_ = min_mass / (dt * dt);
+  ring_u_.assign(n_seg, 0.0);
+  ring_force_.assign(n_seg, 0.0);
+
+  // Carrier joints: slides shear, hinges tilt; each may be pinned by a joint equality.
+  bool has_shear = false, has_tilt = false;
+  if (carrier != root) {
+    for (int j = m->body_jntadr[carrier]; j < m->body_jntadr[carrier] + m->body_jntnum[carrier];
+         ++j) {
+      if (m->jnt_type[j] != mjJNT_SLIDE && m->jnt_type[j] != mjJNT_HINGE) continue;
+      CarrierJoint cj;
+      cj.dof = m->jnt_dofadr[j];
+      cj.qpos = m->jnt_qposadr[j];
+      cj.is_tilt = m->jnt_type[j] == mjJNT_HINGE;
+      for (int e = 0; e < m->neq; ++e) {
+        if (m->eq_type[e] == mjEQ_JOINT && m->eq_obj1id[e] == j && m->eq_obj2id[e] < 0) cj.lock = e;
+      }
+      const double k = cj.is_tilt ? lip.tilt_stiffness_nm_per_rad : lip.shear_stiffness_n_per_m;
+      const double k_max = m->dof_M0[cj.dof] / (dt * dt);
+      if (k > k_max) {
+        std::ostringstream os;
+        if (cj.is_tilt) {
+          os << "lip_tilt_nmm_per_deg = " << k * 1e3 * M_PI / 180
+             << " is too stiff for the time step " << dt << " s: stable up to "
+             << k_max * 1e3 * M_PI / 180 << " N mm/deg (or make the tilt hinge's armature larger)";
+        } else {
+          os << "lip_shear_n_per_mm = " << k * 1e-3 << " is too stiff for the time step " << dt
+             << " s: stable up to " << k_max * 1e-3
+             << " N/mm (or make the shear slides' armature larger)";
+        }
+        return fail(os.str());
+      }
+      (cj.is_tilt ? has_tilt : has_shear) = true;
+      carrier_joints_.push_back(cj);
+    }
+  }
+  if (lip.shear_stiffness_n_per_m > 0 && !has_shear) {
+    return fail("lip_shear_n_per_mm > 0 needs slide joints on the lip carrier body (models/ssc_tool.xml)");
+  }
+  if (lip.tilt_stiffness_nm_per_rad > 0 && !has_tilt) {
+    return fail("lip_tilt_nmm_per_deg > 0 needs hinge joints on the lip carrier body (models/ssc_tool.xml)");
+  }
+  return true;
 }
 
 void ChamberPressureSensor::Reset(mjtNum* plugin_state) const {
@@ -188,22 +360,37 @@ void SetChamberPressureRunSeed(const mjModel* m, mjData* d, int instance, std::u
       static_cast<double>(seed & ((std::uint64_t{1} << 53) - 1));
 }
 
+void ChamberPressureSensor::OpeningFrame(const mjData* d, mjtNum pos[3], mjtNum mat[9]) const {
+  const mjtNum* cpos = d->xpos + 3 * carrier_body_;
+  const mjtNum* cmat = d->xmat + 9 * carrier_body_;
+  mju_mulMatVec3(pos, cmat, opening_offset_pos_);
+  for (int k = 0; k < 3; ++k) pos[k] += cpos[k];
+  mju_mulMatMat(mat, cmat, opening_offset_mat_, 3, 3, 3);
+}
+
 void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
                                     ChamberPressureSample* sample) const {
   const CupGeometry& geo = config_.geometry;
   const mjtByte* groups = config_.ray_groups.data();
-  const mjtNum* site_pos = d->site_xpos + 3 * site_id_;
-  const mjtNum* site_mat = d->site_xmat + 9 * site_id_;
+  // The opening moves with the lip (its carrier shears and tilts when the lip is soft).
+  mjtNum origin_lip[3], frame[9];
+  OpeningFrame(d, origin_lip, frame);
   mjtNum axis_z[3];
-  Axis(site_mat, 2, axis_z);
+  Axis(frame, 2, axis_z);
   int geom_hit = -1;
   int rays = 0;
+  // Depth below the lip plane of the first surface under a point of the lip plane (kNoSurfaceGapM
+  // when none): a vertical ray from ray_start above it.
+  auto surface_depth_at = [&](const mjtNum point[3]) {
+    mjtNum start[3];
+    for (int q = 0; q < 3; ++q) start[q] = point[q] - config_.ray_start_m * axis_z[q];
+    const mjtNum t = mj_ray(m, d, start, axis_z, groups, 1, -1, &geom_hit, nullptr);
+    ++rays;
+    return t < 0 ? kNoSurfaceGapM : t - config_.ray_start_m;
+  };
 
-  // Lip segments: contacts first, rays for the rest.
-  for (LipSegmentState& s : sample->lip) {
-    s.in_contact = false;
-    s.gap_m = 1.0;
-  }
+  // Lip segments: contacts first, rays for the rest. Gaps are from each segment's tip.
+  for (LipSegmentState& s : sample->lip) s.in_contact = false;
   for (int i = 0; i < d->ncon; ++i) {
     const mjContact& con = d->contact[i];
     if (con.dist > 0 || con.geom[0] < 0 || con.geom[1] < 0) continue;
@@ -212,109 +399,129 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
     if ((seg0 >= 0) == (seg1 >= 0)) continue;  // lip against lip, or no lip at all
     sample->lip[seg0 >= 0 ? seg0 : seg1].in_contact = true;
   }
+  double tip_sum = 0.0;
   for (size_t i = 0; i < lip_geoms_.size(); ++i) {
     LipSegmentState& s = sample->lip[i];
+    const mjtNum* gp = d->geom_xpos + 3 * lip_geoms_[i];
+    mjtNum rel[3] = {gp[0] - origin_lip[0], gp[1] - origin_lip[1], gp[2] - origin_lip[2]};
+    const mjtNum along = mju_dot3(rel, axis_z);
+    lip_tip_depth_[i] = along + lip_tip_radius_[i];
+    tip_sum += lip_tip_depth_[i];
     if (s.in_contact) {
       s.gap_m = 0.0;
       continue;
     }
-    // Project the segment onto the lip plane, then look down the cup axis from above it.
-    const mjtNum* gp = d->geom_xpos + 3 * lip_geoms_[i];
-    mjtNum rel[3] = {gp[0] - site_pos[0], gp[1] - site_pos[1], gp[2] - site_pos[2]};
-    const mjtNum along = mju_dot3(rel, axis_z);
-    mjtNum start[3];
-    for (int k = 0; k < 3; ++k) start[k] = gp[k] - (along + config_.ray_start_m) * axis_z[k];
-    // Only gaps within the seal distance matter: the cutoff lets MuJoCo skip far geoms.
-    const mjtNum t = mj_ray(m, d, start, axis_z, groups, 1, -1, &geom_hit, nullptr);
-    ++rays;
-    s.gap_m = t < 0 ? 1.0 : std::max(0.0, t - config_.ray_start_m);
+    mjtNum on_plane[3];
+    for (int k = 0; k < 3; ++k) on_plane[k] = gp[k] - along * axis_z[k];
+    const double depth = surface_depth_at(on_plane);
+    s.gap_m = depth >= kNoSurfaceGapM ? kNoSurfaceGapM : std::max(0.0, depth - lip_tip_depth_[i]);
   }
+  const double tip_mean = tip_sum / std::max(1.0, static_cast<double>(lip_geoms_.size()));
 
   // Centre of the opening.
-  {
-    mjtNum start[3];
-    for (int k = 0; k < 3; ++k) start[k] = site_pos[k] - config_.ray_start_m * axis_z[k];
-    const mjtNum t = mj_ray(m, d, start, axis_z, groups, 1, -1, &geom_hit, nullptr);
-    ++rays;
-    sample->centre_covered = t >= 0 && t - config_.ray_start_m <= geo.seal_distance_m;
-  }
+  const double plane_depth = tip_mean + geo.open_depth_m;
+  sample->centre_covered = surface_depth_at(origin_lip) <= plane_depth;
 
-  // Radial rays in the plane seal_distance below the lip plane; each surface crossing toggles
-  // covered/uncovered. The first hit of all rays comes from one batched call.
+  // Radial rays in a plane open_depth below the lip tips find where surfaces begin and end
+  // (exactly); each stretch between them is sampled by vertical rays, so the seams between convex
+  // pieces of one object, overlapping geoms and height fields all read right. The first hit of
+  // all rays comes from one batched call.
   mjtNum origin[3];
-  for (int k = 0; k < 3; ++k) origin[k] = site_pos[k] + geo.seal_distance_m * axis_z[k];
+  for (int k = 0; k < 3; ++k) origin[k] = origin_lip[k] + plane_depth * axis_z[k];
   const int per = geo.rays_per_chamber;
   const int n_rays = per * kNumChambers;
   for (int r = 0; r < n_rays; ++r) {
-    mju_mulMatVec3(ray_dirs_world_.data() + 3 * r, site_mat, ray_dirs_local_.data() + 3 * r);
+    mju_mulMatVec3(ray_dirs_world_.data() + 3 * r, frame, ray_dirs_local_.data() + 3 * r);
   }
   const double radius = geo.opening_radius_m;
   mj_multiRay(m, const_cast<mjData*>(d), origin, ray_dirs_world_.data(), groups, 1, -1,
               ray_geom_.data(), ray_dist_.data(), nullptr, n_rays, radius);
   rays += n_rays;
-  const double dtheta = 0.5 * M_PI / per;
   constexpr double kStepPast = 1e-6;  // restart just past a crossing, metres
-  // The horizontal rays give where surfaces begin and end (exactly); whether the stretch between
-  // two hits is covered is asked of a vertical ray at its middle, with the same seal-distance
-  // rule as the centre. Hits then need no interpretation, so the seams between adjacent convex
-  // pieces of one object, overlapping geoms and height fields all read right; the first stretch
-  // contains the centre and takes its state.
-  auto covered_at = [&](double along) {
-    mjtNum start[3];
-    for (int q = 0; q < 3; ++q) {
-      start[q] = site_pos[q] + along * dir_scratch_[q] - config_.ray_start_m * axis_z[q];
+  for (int r = 0; r < n_rays; ++r) {
+    const mjtNum* dir = ray_dirs_world_.data() + 3 * r;
+    auto depth_along = [&](double along) {
+      mjtNum point[3];
+      for (int q = 0; q < 3; ++q) point[q] = origin_lip[q] + along * dir[q];
+      return surface_depth_at(point);
+    };
+    // Where the wedge's surfaces begin and end.
+    double cuts[kMaxCrossings + 2];
+    int n = 0;
+    cuts[n++] = 0.0;
+    double t = ray_dist_[r];
+    for (int k = 0; t >= 0 && t < radius && k < kMaxCrossings; ++k) {
+      cuts[n++] = t;
+      const double from = t + kStepPast;
+      mjtNum start[3];
+      for (int q = 0; q < 3; ++q) start[q] = origin[q] + from * dir[q];
+      const mjtNum next = mj_ray(m, d, start, dir, groups, 1, -1, &geom_hit, nullptr);
+      ++rays;
+      t = next >= 0 ? from + next : -1.0;
     }
-    const mjtNum tv = mj_ray(m, d, start, axis_z, groups, 1, -1, &geom_hit, nullptr);
-    ++rays;
-    return tv >= 0 && tv - config_.ray_start_m <= geo.seal_distance_m;
-  };
-  for (int c = 0; c < kNumChambers; ++c) {
-    double area = 0.0;
-    for (int j = 0; j < per; ++j) {
-      const int r = c * per + j;
-      const mjtNum* dir = ray_dirs_world_.data() + 3 * r;
-      for (int q = 0; q < 3; ++q) dir_scratch_[q] = dir[q];
-      double t = ray_dist_[r];
-      bool covered = sample->centre_covered;
-      double crossings[kMaxCrossings];
-      int n = 0;
-      for (int k = 0; t >= 0 && t < radius && k < kMaxCrossings; ++k) {
-        const double from = t + kStepPast;
-        mjtNum start[3];
-        for (int q = 0; q < 3; ++q) start[q] = origin[q] + from * dir[q];
-        const mjtNum next = mj_ray(m, d, start, dir, groups, 1, -1, &geom_hit, nullptr);
-        ++rays;
-        const double t_next = next >= 0 ? from + next : -1.0;
-        const double stretch_end = (t_next >= 0 && t_next < radius) ? t_next : radius;
-        const bool state = covered_at(0.5 * (t + stretch_end));
-        if (state != covered) {
-          crossings[n++] = t;
-          covered = state;
-        }
-        t = t_next;
-      }
-      if (n == 0 && kRimBisections > 0) {
-        // No boundary seen by the horizontal ray. A surface the ray plane misses (thinner than
-        // the seal distance, or grazing that plane) can still end inside the opening: compare
-        // the rim with the centre, and bisect with vertical rays if they differ.
+    if (n == 1 && kRimBisections > 0) {
+      // No boundary seen by the horizontal ray. A surface the ray plane misses (thinner than
+      // the plane depth, or grazing that plane) can still end inside the opening: compare the
+      // rim with the centre, and bisect with vertical rays if they differ.
+      const bool centre = sample->centre_covered;
+      if ((depth_along(radius) <= plane_depth) != centre) {
         double inside = 0, outside = radius;
-        if (covered_at(radius) != covered) {
-          for (int b = 0; b < kRimBisections; ++b) {
-            const double mid = 0.5 * (inside + outside);
-            (covered_at(mid) == covered ? inside : outside) = mid;
-          }
-          crossings[n++] = 0.5 * (inside + outside);
+        for (int b = 0; b < kRimBisections; ++b) {
+          const double mid = 0.5 * (inside + outside);
+          ((depth_along(mid) <= plane_depth) == centre ? inside : outside) = mid;
         }
+        cuts[n++] = 0.5 * (inside + outside);
       }
-      area += SubSectorCoveredArea(sample->centre_covered, crossings, n, radius, dtheta);
     }
-    sample->sealed_area_m2[c] = area;
+    cuts[n++] = radius;
+    // The wedge's rim: the lip segments either side of its bisector.
+    OpeningWedge& w = sample->wedges[r];
+    const WedgeRim& rim = wedge_rim_[r];
+    const LipSegmentState& s0 = sample->lip[rim.segment[0]];
+    const LipSegmentState& s1 = sample->lip[rim.segment[1]];
+    w.rim_gap_m = (1.0 - rim.weight1) * s0.gap_m + rim.weight1 * s1.gap_m;
+    const double tip = (1.0 - rim.weight1) * lip_tip_depth_[rim.segment[0]] +
+                       rim.weight1 * lip_tip_depth_[rim.segment[1]];
+    w.n_samples = 0;
+    for (int k = 0; k + 1 < n; ++k) {
+      double radii[kSamplesPerStretch], gaps[kSamplesPerStretch];
+      StretchSampleRadii(cuts[k], cuts[k + 1], radii);
+      for (int q = 0; q < kSamplesPerStretch; ++q) {
+        const double depth = depth_along(radii[q]);
+        gaps[q] = depth >= kNoSurfaceGapM ? kNoSurfaceGapM : std::max(0.0, depth - tip);
+      }
+      AddStretch(cuts[k], cuts[k + 1], gaps, &w);
+    }
   }
 
-  sample->leak_area_m2 = LeakAreas(geo, sample->sealed_area_m2, sample->lip.data(),
-                                   static_cast<int>(sample->lip.size()));
+  const ChamberLeaks leaks = LeakAreas(geo, sample->wedges.data(), n_rays);
+  sample->leak_area_m2 = leaks.area_m2;
+  sample->jet_area_m2 = leaks.jet_area_m2;
+  sample->sealed_area_m2 = leaks.sealed_area_m2;
   sample->rays_cast = rays;
   sample->time_s = d->time;
+}
+
+void ChamberPressureSensor::ApplyLipForces(const mjModel* m, mjData* d) const {
+  const LipMechanics& lip = config_.lip;
+  if (lip.bending_stiffness_nm2 > 0 && !segment_dof_.empty()) {
+    const int n = static_cast<int>(segment_dof_.size());
+    for (int i = 0; i < n; ++i) {
+      ring_u_[i] = d->qpos[segment_qpos_[i]];
+      ring_force_[i] = 0.0;
+    }
+    AddRingBendingForce(ring_u_.data(), segment_angle_.data(), n, lip.bending_stiffness_nm2,
+                        lip_radius_m_, ring_mode_cap_n_per_m_, ring_force_.data());
+    for (int i = 0; i < n; ++i) d->qfrc_passive[segment_dof_[i]] += ring_force_[i];
+  }
+  // The carrier's shear slides and tilt hinges: springs when soft, locked by their equality
+  // constraints when off (the model's default).
+  for (const CarrierJoint& j : carrier_joints_) {
+    const double k = j.is_tilt ? lip.tilt_stiffness_nm_per_rad : lip.shear_stiffness_n_per_m;
+    if (j.lock >= 0) d->eq_active[j.lock] = k > 0 ? 0 : 1;
+    if (k > 0) d->qfrc_passive[j.dof] -= k * d->qpos[j.qpos];
+  }
+  (void)m;
 }
 
 void ChamberPressureSensor::Compute(const mjModel* m, mjData* d, int instance) {
@@ -324,7 +531,8 @@ void ChamberPressureSensor::Compute(const mjModel* m, mjData* d, int instance) {
   if (k > static_cast<std::int64_t>(state->last_sample_index)) {
     Measure(m, d, &sample_);
     mjtNum* warm = raw_state + kSensorChainStateSize;
-    sample_.flow = SolveFlowNetwork(config_.pneumatics, sample_.leak_area_m2, warm);
+    sample_.flow =
+        SolveFlowNetwork(config_.pneumatics, sample_.leak_area_m2, warm, &sample_.jet_area_m2);
     for (int i = 0; i < kNumChambers; ++i) warm[i] = sample_.flow.chamber_pa[i];
     warm[kNumChambers] = sample_.flow.port_pa;
     SensorChainParams sensor = config_.sensor;
@@ -338,9 +546,9 @@ void ChamberPressureSensor::Compute(const mjModel* m, mjData* d, int instance) {
 void ChamberPressureSensor::Visualize(const mjModel* m, mjData* d, const mjvOption* opt,
                                       mjvScene* scn) const {
   (void)opt;
-  // Lip segments coloured by state: green = sealed (contact), amber = gap within the seal
-  // distance, red = open.
-  const double seal = config_.geometry.seal_distance_m;
+  // Lip segments coloured by state: green = sealed (contact), amber = gap within the open depth,
+  // red = open.
+  const double seal = config_.geometry.open_depth_m;
   for (size_t i = 0; i < lip_geoms_.size() && i < sample_.lip.size(); ++i) {
     if (scn->ngeom >= scn->maxgeom) return;
     const LipSegmentState& s = sample_.lip[i];
@@ -381,7 +589,8 @@ void RegisterChamberPressurePlugin() {
   mjpPlugin plugin;
   mjp_defaultPlugin(&plugin);
   plugin.name = kChamberPressurePluginName;
-  plugin.capabilityflags |= mjPLUGIN_SENSOR;
+  // Sensor: the chamber pressures. Passive: the lip's ring bending and its shear/tilt springs.
+  plugin.capabilityflags |= mjPLUGIN_SENSOR | mjPLUGIN_PASSIVE;
   plugin.nattribute = static_cast<int>(attributes.size());
   plugin.attributes = attributes.data();
   // Position stage: a control callback in the same step sees this step's pressures.
@@ -412,8 +621,14 @@ void RegisterChamberPressurePlugin() {
     auto* sensor = reinterpret_cast<ChamberPressureSensor*>(plugin_data);
     if (sensor) sensor->Reset(plugin_state);
   };
-  plugin.compute = +[](const mjModel* m, mjData* d, int instance, int) {
-    if (ChamberPressureSensor* sensor = SensorOf(d, instance)) sensor->Compute(m, d, instance);
+  plugin.compute = +[](const mjModel* m, mjData* d, int instance, int capability) {
+    ChamberPressureSensor* sensor = SensorOf(d, instance);
+    if (sensor == nullptr) return;
+    if (capability == mjPLUGIN_PASSIVE) {
+      sensor->ApplyLipForces(m, d);
+    } else {
+      sensor->Compute(m, d, instance);
+    }
   };
   plugin.visualize = +[](const mjModel* m, mjData* d, const mjvOption* opt, mjvScene* scn,
                          int instance) {

@@ -17,12 +17,17 @@
 // already applied (the controller must not filter again).
 //
 // What it reads each sensor sample (never more often than sample_rate_hz):
-//   - lip segments: geoms in the site body's subtree whose group is lip_geom_group. A segment is
-//     sealed when MuJoCo reports a contact of it with any geom; otherwise a ray along the cup axis
-//     gives its gap to the surface below.
-//   - the opening: a vertical ray at the centre and, per chamber, rays_per_chamber radial rays
-//     in the plane seal_distance_mm below the lip plane find where a surface within the seal
-//     distance begins and ends; the covered part of each chamber's opening is its sealed area.
+//   - lip segments: geoms in the site body's subtree whose group is lip_geom_group. A segment
+//     touches when MuJoCo reports a contact of it with any geom; otherwise a ray along the cup
+//     axis gives the gap from its tip to the surface below.
+//   - the opening (in the frame of the body carrying the lip, so it shears and tilts with a soft
+//     lip): per chamber, rays_per_chamber radial rays in a plane open_depth_mm below the lip tips
+//     find where surfaces begin and end; each stretch between them is sampled by vertical rays
+//     (the gap field). Each wedge's leak follows from its rim gap and gap field
+//     (pneumatics/cup_geometry.h: WedgeLeakArea); no distance threshold decides a chamber.
+// Passive forces (same plugin, mjPLUGIN_PASSIVE): the lip ring's bending couples the segments'
+// slide joints; the lip carrier's shear slides and tilt hinges get springs when lip_shear_n_per_mm
+// / lip_tilt_nmm_per_deg are set, and stay locked by their equality constraints when 0.
 //   Rays see only geoms in ray_groups (the cup's own geoms live in other groups); give object
 //   geoms a group in ray_groups and contype/conaffinity that collide with the lip, so that rays
 //   and contacts see the same surfaces.
@@ -54,9 +59,11 @@ struct ChamberPressureSample {
   double time_s = -1.0;
   std::array<double, kNumChambers> sealed_area_m2{};
   std::array<double, kNumChambers> leak_area_m2{};
+  std::array<double, kNumChambers> jet_area_m2{};  // part of the leak that passes the taps as a jet
   bool centre_covered = false;
   FlowSolution flow;
   std::vector<LipSegmentState> lip;  // sized once at init
+  std::vector<OpeningWedge> wedges;  // one per radial ray, sized once at init
   int rays_cast = 0;
 };
 

@@ -2,6 +2,7 @@
 
 #include <tinyxml2.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -20,26 +21,31 @@ std::string ToolWithLipSegments(const std::string& tool_xml, int segments, std::
     *error = "the tool model does not parse as XML";
     return "";
   }
-  // Find the cup body and the existing lip segments (bodies named ssc_lip_*).
+  // Find the body that carries the lip segments (bodies named ssc_lip_<n>).
+  auto is_segment = [](const XMLElement* e) {
+    const char* name = e->Attribute("name");
+    return std::strcmp(e->Name(), "body") == 0 && name && std::strncmp(name, "ssc_lip_", 8) == 0 &&
+           std::isdigit(static_cast<unsigned char>(name[8]));
+  };
   XMLElement* cup = nullptr;
   std::vector<XMLElement*> stack = {doc.RootElement()};
   while (!stack.empty() && cup == nullptr) {
     XMLElement* e = stack.back();
     stack.pop_back();
-    const char* name = e->Attribute("name");
-    if (std::strcmp(e->Name(), "body") == 0 && name && std::strcmp(name, "ssc_cup") == 0) cup = e;
-    for (XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) stack.push_back(c);
+    for (XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+      if (is_segment(c)) cup = e;
+      stack.push_back(c);
+    }
   }
   if (cup == nullptr) {
-    *error = "the tool model has no body 'ssc_cup'";
+    *error = "the tool model has no lip segment bodies (ssc_lip_*)";
     return "";
   }
   double radius = 0, z = 0, total_stiffness = 0;
   int old = 0;
   std::vector<XMLElement*> lips;
   for (XMLElement* b = cup->FirstChildElement("body"); b; b = b->NextSiblingElement("body")) {
-    const char* name = b->Attribute("name");
-    if (!name || std::strncmp(name, "ssc_lip_", 8) != 0) continue;
+    if (!is_segment(b)) continue;
     double x = 0, y = 0, zz = 0;
     std::sscanf(b->Attribute("pos"), "%lf %lf %lf", &x, &y, &zz);
     radius += std::hypot(x, y);

@@ -12,16 +12,10 @@ namespace ssc {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kLipRadius = 5.5e-3;
-constexpr int kLipSegments = 16;
-
 // Static tap pressures with a straight edge `offset_m` inside the cup centre.
 FlowSolution EdgeSolution(double offset_m, double normal_rad = kPi,
                           const PneumaticParams& params = {}, const CupGeometry& geo = {}) {
-  const EdgeProbe probe = ProbeStraightEdge(geo, offset_m, normal_rad, kLipRadius, kLipSegments,
-                                            kPi / kLipSegments);
-  const auto leak = LeakAreas(geo, probe.sealed_area_m2, probe.segments.data(), probe.n_segments);
-  return SolveFlowNetwork(params, leak);
+  return SolveProbe(geo, params, ProbeStraightEdge(geo, offset_m, normal_rad));
 }
 
 double Mean(const std::array<double, 4>& p) { return 0.25 * (p[0] + p[1] + p[2] + p[3]); }
@@ -238,26 +232,17 @@ TEST(FlowNetworkTest, MeanPressureRisesMonotonicallyWithCoverage) {
 }
 
 TEST(FlowNetworkTest, MeanPressureFallsMonotonicallyWithHoverGap) {
-  // Cup hovering over a plate: every lip segment at the same gap, opening covered while the
-  // plate is within the seal distance.
+  // Cup hovering over a plate: no distance at which the state jumps.
   const CupGeometry geo;
   double previous = 1e9;
-  for (double gap_um = 0; gap_um <= 2000; gap_um += 25) {
-    const double gap = gap_um * 1e-6;
-    std::array<LipSegmentState, kLipSegments> segs;
-    for (int i = 0; i < kLipSegments; ++i) {
-      segs[i].chamber = ChamberOfAngle(2 * kPi * (i + 0.5) / kLipSegments);
-      segs[i].arc_m = 2 * kPi * kLipRadius / kLipSegments;
-      segs[i].in_contact = gap == 0;
-      segs[i].gap_m = gap;
-    }
-    std::array<double, 4> sealed{};
-    if (gap <= geo.seal_distance_m) sealed.fill(geo.ChamberOpeningArea());
-    const auto leak = LeakAreas(geo, sealed, segs.data(), kLipSegments);
-    const FlowSolution s = SolveFlowNetwork(PneumaticParams{}, leak);
+  for (double gap_um = 0; gap_um <= 6000; gap_um += 25) {
+    const FlowSolution s = SolveProbe(geo, PneumaticParams{}, ProbeFlatPlate(geo, gap_um * 1e-6));
     ASSERT_TRUE(s.converged);
     const double pbar = Mean(s.tap_pa);
     EXPECT_LE(pbar, previous + 1e-9) << "at gap " << gap_um << " um";
+    if (gap_um > 0) {
+      EXPECT_GT(pbar, 0.2 * previous) << "jump at gap " << gap_um << " um";
+    }
     previous = pbar;
   }
   // At 2 mm the plate still covers the opening; each quadrant leaks through its lip curtain
@@ -341,6 +326,34 @@ TEST(FlowNetworkTest, DefaultsReproduceThePublishedDifferential) {
   EXPECT_NEAR(south - north, 200.0, 30.0);
   EXPECT_LT(north, 15.0);
   EXPECT_NEAR(south, 2 * Mean(p), 20.0);
+}
+
+// |(dPx, dPy)| where the mean is 100 Pa over an edge rounded with radius rho (edge normal north).
+double DifferentialAtMean100(double rho_m) {
+  const CupGeometry geo;
+  auto taps = [&](double offset) {
+    return SolveProbe(geo, PneumaticParams{}, ProbeRoundedEdge(geo, offset, kPi, rho_m)).tap_pa;
+  };
+  double lo = -30e-3, hi = 8e-3;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (Mean(taps(mid)) < 100.0 ? lo : hi) = mid;
+  }
+  const auto p = taps(0.5 * (lo + hi));
+  return 0.5 * (p[0] + p[3]) - 0.5 * (p[1] + p[2]);
+}
+
+TEST(FlowNetworkTest, DifferentialOverARoundedEdgeFallsAsTheRadiusGrows) {
+  // The published cross-sections of the fillet bar: 0, 4.7, 10.4, 14.5, 16 mm.
+  const double sharp = DifferentialAtMean100(0.0);
+  EXPECT_GT(sharp, 150.0);
+  double previous = sharp;
+  for (double rho_mm : {4.7, 10.4, 14.5, 16.0}) {
+    const double dp = DifferentialAtMean100(rho_mm * 1e-3);
+    EXPECT_LE(dp, previous + 0.1) << "fillet radius " << rho_mm << " mm";
+    previous = dp;
+  }
+  EXPECT_LT(previous, 0.8 * sharp);
 }
 
 TEST(FlowNetworkTest, ValidateNamesTheBadField) {

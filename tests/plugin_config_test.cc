@@ -63,7 +63,7 @@ TEST(PluginConfigTest, BadValuesNameKeyValueAndRange) {
     const char* expect;
   };
   for (const Case& c : {Case{"noise_pa", "0x10", "[0, 10000]"}, Case{"noise_pa", "inf", "noise_pa"},
-                        Case{"noise_pa", "6 Pa", "decimal"}, Case{"seal_distance_mm", "-1", "[0, 10] mm"},
+                        Case{"noise_pa", "6 Pa", "decimal"}, Case{"open_depth_mm", "-1", "[0.05, 10] mm"},
                         Case{"port_area_mm2", "0", "(0, 10000] mm^2"},
                         Case{"rays_per_chamber", "2.5", "whole number"},
                         Case{"seed", "-1", "seed"}, Case{"ray_groups", "0 9", "ray_groups"},

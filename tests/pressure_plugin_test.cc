@@ -192,7 +192,8 @@ TEST(PressurePluginTest, BadConfigFailsTheLoadNamingKeyValueAndRange) {
     const char* expect;  // must appear in the message
   };
   const Case cases[] = {
-      {"seal_distance_mm", "-1", "[0, 10] mm"},
+      {"open_depth_mm", "-1", "[0.05, 10] mm"},
+      {"lip_shear_n_per_mm", "-0.5", "[0, 100] N/mm"},
       {"port_area_mm2", "-3", "(0, 10000] mm^2"},
       {"noise_pa", "nan", "noise_pa"},
       {"rays_per_chamber", "2.5", "whole number"},

@@ -80,7 +80,8 @@ double OrificeFlow(const PneumaticParams& params, double area_m2, double dp_pa) 
 
 FlowSolution SolveFlowNetwork(const PneumaticParams& params,
                               const std::array<double, kNumChambers>& leak_area_m2,
-                              const double* warm_start) {
+                              const double* warm_start,
+                              const std::array<double, kNumChambers>* jet_area_m2) {
   const double k = params.discharge_coeff * std::sqrt(2.0 / params.air_density_kg_m3);
   const double c = params.laminar_pa;
   const double p_max = params.pump_max_vacuum_pa;
@@ -187,7 +188,8 @@ FlowSolution SolveFlowNetwork(const PneumaticParams& params,
     sol.port_flow_m3_s[i] = k * a_port * Ssqrt(x[kNumChambers] - x[i], c);
     // The tap reads the static pressure minus the recovered part of the inflow jet's dynamic
     // pressure (which, for orifice inflow from ambient, equals the chamber vacuum itself).
-    const double fill = std::min(1.0, std::max(0.0, leak_area_m2[i]) / params.jet_area_m2);
+    const double jet = jet_area_m2 ? std::min((*jet_area_m2)[i], leak_area_m2[i]) : leak_area_m2[i];
+    const double fill = std::min(1.0, std::max(0.0, jet) / params.jet_area_m2);
     const double recovered = params.tap_recovery * fill * std::max(0.0, x[i]);
     sol.tap_pa[i] = x[i] - recovered;
   }

@@ -63,10 +63,13 @@ struct FlowSolution {
 
 // Solves the network by damped Newton iteration. `warm_start` (may be null) holds a previous
 // solution's {chamber_pa[0..3], port_pa} to start from; results are independent of it to the
-// solver tolerance. Never allocates.
+// solver tolerance. `jet_area_m2` (may be null: all of the leak) is the part of each chamber's
+// leak that enters as a jet past the sensor tap; only that part drives the tap recovery. Never
+// allocates.
 FlowSolution SolveFlowNetwork(const PneumaticParams& params,
                               const std::array<double, kNumChambers>& leak_area_m2,
-                              const double* warm_start = nullptr);
+                              const double* warm_start = nullptr,
+                              const std::array<double, kNumChambers>* jet_area_m2 = nullptr);
 
 // Orifice flow for a pressure difference dp (Pa) through area (m^2): signed, m^3/s.
 double OrificeFlow(const PneumaticParams& params, double area_m2, double dp_pa);
