@@ -39,13 +39,14 @@ TEST(PluginConfigTest, EveryKeyOnceAndDefaultsAreTheStructDefaults) {
       EXPECT_TRUE(k.range.Contains(k.get(defaults))) << k.key;
     }
   }
-  EXPECT_EQ(seen.size(), 20u);
+  EXPECT_EQ(seen.size(), 23u);
 }
 
 TEST(PluginConfigTest, ValuesReachTheirMembersInSiUnits) {
   std::string error;
   const auto c = Parse({{"opening_radius_mm", "6"}, {"pump_free_flow_lpm", "18"},
-                        {"lag_ms", "4"}, {"ray_groups", "0 3"}, {"seed", "12"}},
+                        {"lag_ms", "4"}, {"ray_groups", "0 3"}, {"seed", "12"},
+                        {"lip_shear_n_per_mm", "1.5"}, {"lip_tilt_nmm_per_deg", "5"}},
                        &error);
   ASSERT_TRUE(c) << error;
   EXPECT_DOUBLE_EQ(c->geometry.opening_radius_m, 6e-3);
@@ -54,6 +55,8 @@ TEST(PluginConfigTest, ValuesReachTheirMembersInSiUnits) {
   EXPECT_EQ(c->ray_groups[3], 1);
   EXPECT_EQ(c->ray_groups[2], 0);
   EXPECT_EQ(c->sensor.seed, 12u);
+  EXPECT_DOUBLE_EQ(c->lip.shear_stiffness_n_per_m, 1500.0);
+  EXPECT_NEAR(c->lip.tilt_stiffness_nm_per_rad, 5e-3 * 180 / 3.14159265358979323846, 1e-15);
 }
 
 TEST(PluginConfigTest, BadValuesNameKeyValueAndRange) {
