@@ -2,6 +2,8 @@
 
 #include "plugin/chamber_pressure_config.h"
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -130,6 +132,13 @@ ModelPtr LoadModel(const std::string& path, std::string* error) {
     if (!warnings.empty()) *error += " (" + warnings + ")";
     return nullptr;
   }
+  std::string step_warning;
+  if (std::string e = CheckTimestep(m->opt.timestep, &step_warning); !e.empty()) {
+    mj_deleteModel(m);
+    *error = path + ": " + e;
+    return nullptr;
+  }
+  if (!step_warning.empty()) std::fprintf(stderr, "warning: %s: %s\n", path.c_str(), step_warning.c_str());
   // Plugins validate their config when data is made; fail the load here if any refuse.
   std::string data_error;
   DataPtr probe = MakeData(m, &data_error);
@@ -139,6 +148,22 @@ ModelPtr LoadModel(const std::string& path, std::string* error) {
     return nullptr;
   }
   return ModelPtr(m);
+}
+
+std::string CheckTimestep(double timestep_s, std::string* warning) {
+  char buf[256];
+  if (!std::isfinite(timestep_s) || timestep_s <= 0) {
+    std::snprintf(buf, sizeof(buf), "time step %g s must be > 0 (<option timestep=...>; tested "
+                  "stable up to %g ms, docs/stability.md)", timestep_s, kLargestTestedTimestepS * 1e3);
+    return buf;
+  }
+  if (warning && timestep_s > kLargestTestedTimestepS * (1 + 1e-9)) {
+    std::snprintf(buf, sizeof(buf), "time step %g ms is above %g ms, the largest the stability "
+                  "study found unchanged (docs/stability.md); results may be wrong",
+                  timestep_s * 1e3, kLargestTestedTimestepS * 1e3);
+    *warning = buf;
+  }
+  return "";
 }
 
 DataPtr MakeData(const mjModel* m, std::string* error) {

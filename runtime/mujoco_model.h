@@ -26,6 +26,14 @@ using DataPtr = std::unique_ptr<mjData, DataDeleter>;
 // reported the same way instead of being printed.
 ModelPtr LoadModel(const std::string& path, std::string* error);
 
+// The stability study (docs/stability.md): results unchanged up to 8 ms with every integrator,
+// unstable at 16 ms.
+inline constexpr double kLargestTestedTimestepS = 0.008;
+
+// A model's time step: "" when usable; else why not (0, negative or not finite would never
+// advance time). Above kLargestTestedTimestepS *warning (if given) says so and names the limit.
+std::string CheckTimestep(double timestep_s, std::string* warning);
+
 // Makes mjData for a model, capturing plugin init failures into *error.
 DataPtr MakeData(const mjModel* m, std::string* error);
 

@@ -80,6 +80,11 @@ std::unique_ptr<ContourTrial> ContourTrial::Create(const mjModel* m, mjData* d,
     *error = "trial config: " + e;
     return nullptr;
   }
+  // A zero step would never reach the timeout (models changed after LoadModel come here too).
+  if (const std::string e = CheckTimestep(m->opt.timestep, nullptr); !e.empty()) {
+    *error = e;
+    return nullptr;
+  }
   std::unique_ptr<ContourTrial> trial(new ContourTrial(m, d, config, keep_log));
   const ChamberPressureDiagnostics* sensor = FindChamberPressureDiagnostics(m, d);
   if (sensor == nullptr) {

@@ -1,0 +1,65 @@
+// Time-step bounds from the stability study: a zero or negative step is an error (a trial would
+// never reach its timeout), a step above the tested limit loads with a warning naming the limit.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "runtime/mujoco_model.h"
+#include "runtime/trial.h"
+
+namespace ssc {
+namespace {
+
+// The gantry scene with another time step, written beside the original (its includes resolve).
+std::string SceneWithTimestep(const std::string& dt) {
+  std::ifstream in(SourceDir() + "/scenes/disk_benchmark_gantry.xml");
+  std::stringstream buf;
+  buf << in.rdbuf();
+  const std::string xml = std::regex_replace(buf.str(), std::regex(R"(timestep="[^"]*")"),
+                                             "timestep=\"" + dt + "\"");
+  const std::string path = SourceDir() + "/scenes/.timestep_test_" + std::to_string(::getpid()) + ".xml";
+  std::ofstream(path) << xml;
+  return path;
+}
+
+TEST(TimestepBoundsTest, CheckNamesTheLimit) {
+  std::string warning;
+  EXPECT_EQ(CheckTimestep(0.002, &warning), "");
+  EXPECT_EQ(warning, "");
+  EXPECT_EQ(CheckTimestep(kLargestTestedTimestepS, &warning), "");
+  EXPECT_EQ(warning, "");
+  EXPECT_EQ(CheckTimestep(0.010, &warning), "");
+  EXPECT_NE(warning.find("8 ms"), std::string::npos) << warning;
+  for (double bad : {0.0, -0.001, std::nan("")}) {
+    EXPECT_NE(CheckTimestep(bad, nullptr).find("must be > 0"), std::string::npos) << bad;
+  }
+}
+
+TEST(TimestepBoundsTest, ZeroStepSceneFailsToLoadInsteadOfHanging) {
+  const std::string path = SceneWithTimestep("0");
+  std::string error;
+  ModelPtr m = LoadModel(path, &error);
+  std::filesystem::remove(path);
+  EXPECT_FALSE(m);
+  EXPECT_NE(error.find("time step"), std::string::npos) << error;
+  EXPECT_NE(error.find(".timestep_test_"), std::string::npos) << "names the file: " << error;
+}
+
+TEST(TimestepBoundsTest, ATrialRefusesAModelWhoseStepWasSetToZero) {
+  std::string error;
+  ModelPtr m = LoadModel(SourceDir() + "/scenes/disk_benchmark_gantry.xml", &error);
+  ASSERT_TRUE(m) << error;
+  m->opt.timestep = 0;
+  TrialConfig config;
+  const TrialResult r = RunTrial(m.get(), config, false, &error);
+  EXPECT_NE(error.find("time step"), std::string::npos) << error;
+  EXPECT_LT(r.sim_time_s, 1e-9);
+}
+
+}  // namespace
+}  // namespace ssc
