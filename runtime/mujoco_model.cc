@@ -46,6 +46,28 @@ class WarningCapture {
 
 bool FileExists(const std::string& path) { return std::ifstream(path).good(); }
 
+// Takes a compiled model; refuses (deletes it, null + *error prefixed by `label`) a bad time step
+// or a plugin that rejects its config when data is made.
+ModelPtr CheckedModel(mjModel* m, const std::string& label, std::string* error) {
+  std::string step_warning;
+  if (std::string e = CheckTimestep(m->opt.timestep, &step_warning); !e.empty()) {
+    mj_deleteModel(m);
+    *error = label + ": " + e;
+    return nullptr;
+  }
+  if (!step_warning.empty()) {
+    std::fprintf(stderr, "warning: %s: %s\n", label.c_str(), step_warning.c_str());
+  }
+  std::string data_error;
+  DataPtr probe = MakeData(m, &data_error);
+  if (!probe) {
+    mj_deleteModel(m);
+    *error = label + ": " + data_error;
+    return nullptr;
+  }
+  return ModelPtr(m);
+}
+
 }  // namespace
 
 std::string CheckMuJoCoVersion() {
@@ -75,39 +97,34 @@ std::string ResolveScenePath(const std::string& scene) {
   return scene;
 }
 
-std::string ToolModelWithConfig(const std::string& config_xml, std::string* error) {
-  const std::string path = SourceDir() + "/models/ssc_tool.xml";
-  std::ifstream in(path);
-  std::stringstream buf;
-  buf << in.rdbuf();
-  std::string xml = buf.str();
-  const std::string tag = "<instance name=\"ssc_pressure\"/>";
-  const size_t at = xml.find(tag);
-  if (!in || at == std::string::npos) {
-    *error = path + ": cannot read, or no '" + tag + "' in it";
-    return "";
+ModelPtr LoadModelFromTexts(const ModelTexts& texts, const std::string& label,
+                            std::string* error) {
+  mjVFS vfs;
+  mj_defaultVFS(&vfs);
+  for (const auto& [name, text] : texts.files) {  // a repeated name keeps its first text
+    mj_addBufferVFS(&vfs, name.c_str(), text.data(), static_cast<int>(text.size()));
   }
-  xml.replace(at, tag.size(), "<instance name=\"ssc_pressure\">" + config_xml + "</instance>");
-  return xml;
-}
-
-std::string SceneWithToolConfig(const std::string& scene_path, const std::string& dir,
-                                const std::string& config_xml, std::string* error) {
-  namespace fs = std::filesystem;
-  const std::string tool = ToolModelWithConfig(config_xml, error);
-  if (tool.empty()) return "";
-  std::error_code ec;
-  fs::create_directories(fs::path(dir) / "models", ec);
-  fs::create_directories(fs::path(dir) / "scenes", ec);
-  const fs::path scene = fs::path(dir) / "scenes" / fs::path(scene_path).filename();
-  fs::copy_file(scene_path, scene, fs::copy_options::overwrite_existing, ec);
-  std::ofstream out(fs::path(dir) / "models" / "ssc_tool.xml");
-  out << tool;
-  if (ec || !out) {
-    *error = dir + ": cannot write the scene copy";
-    return "";
+  char buffer[2048] = "";
+  std::string warnings;
+  mjModel* m = nullptr;
+  {
+    WarningCapture capture(&warnings);  // (also keeps MuJoCo from writing MUJOCO_LOG.TXT)
+    mjSpec* spec = mj_parseXMLString(texts.main_xml.c_str(), &vfs, buffer, sizeof(buffer));
+    if (spec != nullptr) {
+      m = mj_compile(spec, &vfs);
+      if (m == nullptr) std::snprintf(buffer, sizeof(buffer), "%s", mjs_getError(spec));
+      mj_deleteSpec(spec);
+    }
   }
-  return scene.string();
+  mj_deleteVFS(&vfs);
+  if (m == nullptr) {
+    *error = label + ": " + buffer;
+    if (!warnings.empty() && error->find(warnings) == std::string::npos) {
+      *error += " (" + warnings + ")";
+    }
+    return nullptr;
+  }
+  return CheckedModel(m, label, error);
 }
 
 ModelPtr LoadModel(const std::string& path, std::string* error) {
@@ -132,22 +149,7 @@ ModelPtr LoadModel(const std::string& path, std::string* error) {
     if (!warnings.empty()) *error += " (" + warnings + ")";
     return nullptr;
   }
-  std::string step_warning;
-  if (std::string e = CheckTimestep(m->opt.timestep, &step_warning); !e.empty()) {
-    mj_deleteModel(m);
-    *error = path + ": " + e;
-    return nullptr;
-  }
-  if (!step_warning.empty()) std::fprintf(stderr, "warning: %s: %s\n", path.c_str(), step_warning.c_str());
-  // Plugins validate their config when data is made; fail the load here if any refuse.
-  std::string data_error;
-  DataPtr probe = MakeData(m, &data_error);
-  if (!probe) {
-    mj_deleteModel(m);
-    *error = path + ": " + data_error;
-    return nullptr;
-  }
-  return ModelPtr(m);
+  return CheckedModel(m, path, error);
 }
 
 std::string CheckTimestep(double timestep_s, std::string* warning) {

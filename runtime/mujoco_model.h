@@ -4,6 +4,8 @@
 
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <mujoco/mujoco.h>
 
@@ -44,14 +46,16 @@ std::string ResolveScenePath(const std::string& scene);
 // Repository root (compile-time SSC_SOURCE_DIR, overridable by the SSC_SOURCE_DIR variable).
 std::string SourceDir();
 
-// The text of models/ssc_tool.xml with `config_xml` (e.g. <config key="noise_pa" value="0"/>)
-// inside its pressure-plugin instance; empty (and *error set) when the model cannot be read.
-std::string ToolModelWithConfig(const std::string& config_xml, std::string* error);
+// MJCF texts held in memory: the main file's text, and every file it includes or attaches under
+// the name it is referred to by (e.g. "../models/ssc_tool.xml").
+struct ModelTexts {
+  std::string main_xml;
+  std::vector<std::pair<std::string, std::string>> files;  // name as referred to -> text
+};
 
-// Writes a copy of `scene_path` into dir/scenes/ and the tool model with `config_xml` into
-// dir/models/ (scenes refer to ../models/ssc_tool.xml); returns the new scene's path.
-std::string SceneWithToolConfig(const std::string& scene_path, const std::string& dir,
-                                const std::string& config_xml, std::string* error);
+// Compiles a model from texts in memory (MuJoCo's virtual file system, mj_parseXMLString,
+// mj_compile): no file is read or written. Errors as LoadModel's, prefixed by `label`.
+ModelPtr LoadModelFromTexts(const ModelTexts& texts, const std::string& label, std::string* error);
 
 }  // namespace ssc
 

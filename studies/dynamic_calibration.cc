@@ -6,6 +6,7 @@
 #include "calibration/nelder_mead.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/trial.h"
+#include "studies/tool_variants.h"
 
 namespace ssc {
 
@@ -13,19 +14,20 @@ std::vector<WanderTarget> PublishedWanderTargets() {
   return {{1.5, 1.36, 0.11}, {2.5, -1, 0.21}, {3.5, 1.89, 0.31}};
 }
 
-bool FitWander(const std::string& scene, const std::string& work_dir,
-               const std::vector<WanderTarget>& targets, double step_mm, int seeds,
-               int max_evaluations, double noise0, double lag0, WanderFit* fit,
-               std::string* error) {
+bool FitWander(const std::string& scene, const std::vector<WanderTarget>& targets,
+               double step_mm, int seeds, int max_evaluations, double noise0, double lag0,
+               WanderFit* fit, std::string* error) {
+  const auto variants = ToolModelVariants::Read(scene, error);
+  if (!variants) return false;
   bool failed = false;
   std::vector<WanderTarget> last;
+  auto text = [](double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof(buf), "%.6g", v);
+    return std::string(buf);
+  };
   auto evaluate = [&](double noise, double lag, std::vector<WanderTarget>* model) {
-    char config[256];
-    std::snprintf(config, sizeof(config),
-                  "<config key=\"noise_pa\" value=\"%.6g\"/><config key=\"lag_ms\" value=\"%.6g\"/>",
-                  noise, lag);
-    const std::string path = SceneWithToolConfig(scene, work_dir, config, error);
-    ModelPtr m = path.empty() ? nullptr : LoadModel(path, error);
+    ModelPtr m = variants->Compile({{{"noise_pa", text(noise)}, {"lag_ms", text(lag)}}, 0}, error);
     if (!m) {
       failed = true;
       return 1e300;

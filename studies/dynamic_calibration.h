@@ -26,10 +26,11 @@ struct WanderFit {
   std::vector<WanderTarget> model;  // the twin's sigma_r and s_c at each target beta
 };
 
-// Fits noise_pa and lag_ms from (noise0, lag0). `scene` is a disk scene using
-// ../models/ssc_tool.xml; work files go under work_dir. False + *error on I/O or load failure.
-bool FitWander(const std::string& scene, const std::string& work_dir,
-               const std::vector<WanderTarget>& targets, double step_mm, int seeds,
+// Fits noise_pa and lag_ms from (noise0, lag0). `scene` is a disk scene with the tool; it is
+// read once, and each evaluation compiles its tool variant in memory (studies/tool_variants.h).
+// False + *error on read or load failure.
+bool FitWander(const std::string& scene, const std::vector<WanderTarget>& targets,
+               double step_mm, int seeds,
                int max_evaluations, double noise0, double lag0, WanderFit* fit,
                std::string* error);
 

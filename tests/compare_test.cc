@@ -9,6 +9,7 @@
 #include "compare/log_replay.h"
 #include "runtime/mujoco_model.h"
 #include "geometry/dimensions.h"
+#include "studies/tool_variants.h"
 
 namespace ssc {
 namespace {
@@ -72,13 +73,8 @@ TEST(CompareTest, ReplayExposesARobotWithAStrongerPump) {
   // in the default twin, the twin must read less vacuum than the log wherever the cup seals
   // (ratio of means 0.87, against 1.00 for an unchanged run), and still agree on direction.
   std::string error;
-  const std::string scene = SceneWithToolConfig(
-      SourceDir() + "/scenes/disk_benchmark_gantry.xml",
-      (std::filesystem::temp_directory_path() / ("ssc_strong_pump_" + std::to_string(::getpid())))
-          .string(),
-      "<config key=\"pump_free_flow_lpm\" value=\"18.06\"/>", &error);
-  ASSERT_FALSE(scene.empty()) << error;
-  ModelPtr strong = LoadModel(scene, &error);
+  ModelPtr strong = ToolModelVariant(SourceDir() + "/scenes/disk_benchmark_gantry.xml",
+                                     {{"pump_free_flow_lpm", "18.06"}}, &error);
   ASSERT_TRUE(strong) << error;
   TrialConfig c;
   c.law.step_mm = 7.5;

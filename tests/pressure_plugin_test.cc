@@ -13,6 +13,7 @@
 #include "studies/edge_probe.h"
 #include "runtime/mujoco_model.h"
 #include "geometry/dimensions.h"
+#include "studies/tool_variants.h"
 
 namespace ssc {
 namespace {
@@ -174,17 +175,10 @@ TEST(PressurePluginTest, DeterministicAcrossResetAndCopy) {
   }
 }
 
-// Writes the tool model with one config entry and tries to load it.
+// The tool model with one config entry, compiled in memory: "" or the load error.
 std::string LoadWithConfig(const std::string& key, const std::string& value) {
   std::string error;
-  const std::string xml =
-      ToolModelWithConfig("<config key=\"" + key + "\" value=\"" + value + "\"/>", &error);
-  if (xml.empty()) return error;
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("ssc_bad_config_" + std::to_string(::getpid()) + ".xml");
-  std::ofstream(path) << xml;
-  ModelPtr model = LoadModel(path.string(), &error);
-  std::filesystem::remove(path);
+  ModelPtr model = ToolModelVariant(SourceDir() + "/models/ssc_tool.xml", {{key, value}}, &error);
   return model ? "" : error;
 }
 
@@ -213,7 +207,7 @@ TEST(PressurePluginTest, BadConfigFailsTheLoadNamingKeyValueAndRange) {
     ASSERT_FALSE(error.empty()) << c.key << "=" << c.value << " loaded";
     EXPECT_NE(error.find(c.key), std::string::npos) << error;
     EXPECT_NE(error.find(c.expect), std::string::npos) << error;
-    EXPECT_NE(error.find("ssc_bad_config_"), std::string::npos) << "names the file: " << error;
+    EXPECT_NE(error.find("ssc_tool.xml"), std::string::npos) << "names the file: " << error;
   }
 }
 

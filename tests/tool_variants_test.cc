@@ -14,16 +14,12 @@ namespace {
 
 TEST(ToolVariantsTest, LipSegmentCountChangesKeepTheTotalStiffnessAndTheRing) {
   std::string error;
-  const std::string base = ToolModelWithConfig("", &error);
+  const auto tool = ToolModelVariants::Read(SourceDir() + "/models/ssc_tool.xml", &error);
+  ASSERT_TRUE(tool) << error;
+  const std::string base = tool->ToolXml({}, &error);
   ASSERT_FALSE(base.empty()) << error;
   for (int n : {8, 32}) {
-    const std::string xml = ToolWithLipSegments(base, n, &error);
-    ASSERT_FALSE(xml.empty()) << error;
-    const auto path = std::filesystem::temp_directory_path() /
-                      ("ssc_tool_" + std::to_string(n) + "_" + std::to_string(::getpid()) + ".xml");
-    std::ofstream(path) << xml;
-    ModelPtr m = LoadModel(path.string(), &error);
-    std::filesystem::remove(path);
+    ModelPtr m = tool->Compile({{}, n}, &error);
     ASSERT_TRUE(m) << error;
     DataPtr d = MakeData(m.get(), &error);
     const ChamberPressureDiagnostics* sensor = FindChamberPressureDiagnostics(m.get(), d.get());
@@ -39,6 +35,46 @@ TEST(ToolVariantsTest, LipSegmentCountChangesKeepTheTotalStiffnessAndTheRing) {
   }
   EXPECT_TRUE(ToolWithLipSegments(base, 10, &error).empty());
   EXPECT_NE(error.find("multiple of 4"), std::string::npos);
+}
+
+// An optimiser evaluation touches no disk: the scene's files are read once, then removed, and
+// every variant still compiles, each with its own config.
+TEST(ToolVariantsTest, VariantsCompileInMemoryWithTheirConfig) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("ssc_variants_" + std::to_string(::getpid()));
+  fs::create_directories(dir / "scenes");
+  fs::create_directories(dir / "models");
+  fs::copy_file(SourceDir() + "/scenes/disk_benchmark.xml", dir / "scenes" / "disk_benchmark.xml");
+  fs::copy_file(SourceDir() + "/models/ur10.xml", dir / "models" / "ur10.xml");
+  fs::copy_file(SourceDir() + "/models/ssc_tool.xml", dir / "models" / "ssc_tool.xml");
+  std::string error;
+  const auto variants = ToolModelVariants::Read((dir / "scenes" / "disk_benchmark.xml").string(),
+                                                &error);
+  ModelPtr from_file = LoadModel((dir / "scenes" / "disk_benchmark.xml").string(), &error);
+  fs::remove_all(dir);
+  ASSERT_TRUE(variants) << error;
+  ASSERT_TRUE(from_file) << error;
+  for (const char* noise : {"0", "3.5", "12"}) {
+    ModelPtr m = variants->Compile({{{"noise_pa", noise}, {"lag_ms", "7"}}, 0}, &error);
+    ASSERT_TRUE(m) << error;
+    ASSERT_EQ(m->nplugin, 1);
+    EXPECT_STREQ(mj_getPluginConfig(m.get(), 0, "noise_pa"), noise);
+    EXPECT_STREQ(mj_getPluginConfig(m.get(), 0, "lag_ms"), "7");
+    // The whole scene (arm, tool, disk), as loaded from its files.
+    EXPECT_EQ(m->nbody, from_file->nbody);
+    EXPECT_EQ(m->nu, from_file->nu);
+    EXPECT_EQ(m->ngeom, from_file->ngeom);
+  }
+  // A value the plugin refuses fails the compile with the plugin's message.
+  EXPECT_FALSE(variants->Compile({{{"noise_pa", "-1"}}, 0}, &error));
+  EXPECT_NE(error.find("noise_pa"), std::string::npos) << error;
+  // A scene without the pressure plugin is refused when read.
+  error.clear();
+  const fs::path bare = fs::temp_directory_path() / ("ssc_bare_" + std::to_string(::getpid()));
+  std::ofstream(bare.string()) << "<mujoco><worldbody/></mujoco>";
+  EXPECT_FALSE(ToolModelVariants::Read(bare.string(), &error));
+  fs::remove(bare);
+  EXPECT_NE(error.find("ssc.chamber_pressure"), std::string::npos) << error;
 }
 
 }  // namespace

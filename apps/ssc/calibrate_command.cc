@@ -14,6 +14,7 @@
 #include "apps/ssc/trial_options.h"
 #include "controller/pure/robot_effects.h"
 #include "runtime/mujoco_model.h"
+#include "studies/tool_variants.h"
 
 namespace ssc {
 
@@ -141,15 +142,15 @@ int RunCalibrateCommand(int argc, char** argv) {
   }
   js << "}}\n";
   // The tool model with the fitted config.
-  std::string config;
-  char line[160];
+  PluginConfig config;
+  char value[32];
   for (const FitParameter& q : fit.parameters) {
-    std::snprintf(line, sizeof(line), "\n        <config key=\"%s\" value=\"%.6g\"/>", q.key.c_str(),
-                  q.value);
-    config += line;
+    std::snprintf(value, sizeof(value), "%.6g", q.value);
+    config[q.key] = value;
   }
   std::string error;
-  const std::string xml = ToolModelWithConfig(config + "\n      ", &error);
+  const auto tool = ToolModelVariants::Read(SourceDir() + "/models/ssc_tool.xml", &error);
+  const std::string xml = tool ? tool->ToolXml({config, 0}, &error) : "";
   if (xml.empty()) {
     std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
     return 1;
@@ -161,9 +162,8 @@ int RunCalibrateCommand(int argc, char** argv) {
     const double step = wander_step;
     WanderFit w;
     const std::vector<WanderTarget> targets = PublishedWanderTargets();
-    if (!FitWander(SourceDir() + "/scenes/disk_benchmark_gantry.xml", (out / "wander").string(),
-                   targets, step, static_cast<int>(seeds), static_cast<int>(evals), 6.0, 20.0, &w,
-                   &error)) {
+    if (!FitWander(SourceDir() + "/scenes/disk_benchmark_gantry.xml", targets, step,
+                   static_cast<int>(seeds), static_cast<int>(evals), 6.0, 20.0, &w, &error)) {
       std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
       return 1;
     }
@@ -176,11 +176,11 @@ int RunCalibrateCommand(int argc, char** argv) {
                   w.model[i].s_c, targets[i].s_c);
     }
     // The calibrated tool model with the sensor chain's fit too.
-    std::snprintf(line, sizeof(line),
-                  "\n        <config key=\"noise_pa\" value=\"%.4g\"/>"
-                  "\n        <config key=\"lag_ms\" value=\"%.4g\"/>", w.noise_pa, w.lag_ms);
-    const std::string with_wander = ToolModelWithConfig(config + line + "\n      ", &error);
-    std::ofstream(out / "ssc_tool_calibrated.xml") << with_wander;
+    std::snprintf(value, sizeof(value), "%.4g", w.noise_pa);
+    config["noise_pa"] = value;
+    std::snprintf(value, sizeof(value), "%.4g", w.lag_ms);
+    config["lag_ms"] = value;
+    std::ofstream(out / "ssc_tool_calibrated.xml") << tool->ToolXml({config, 0}, &error);
     std::ofstream(out / "params.json", std::ios::app)
         << "{\"wander\": {\"noise_pa\": " << w.noise_pa << ", \"lag_ms\": " << w.lag_ms
         << ", \"cost\": " << w.cost << "}}\n";

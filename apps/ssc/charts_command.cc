@@ -6,34 +6,22 @@
 //        sensor rate, time step, integrator, lip segments) -> wall time per simulated second vs
 //        pressure error against a high-fidelity reference replay (16 rays per chamber, 32 lip
 //        segments, 0.25 ms, RK4).
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <map>
-#include <sstream>
 #include <thread>
 
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
-#include "compare/log_replay.h"
 #include "runtime/mujoco_model.h"
 #include "studies/sweep.h"
-#include "studies/tool_variants.h"
-#include "geometry/dimensions.h"
+#include "studies/fidelity_table.h"
 
 namespace ssc {
-namespace {
 
 namespace fs = std::filesystem;
-
-std::string Key(const char* k, const std::string& v) {
-  return std::string("<config key=\"") + k + "\" value=\"" + v + "\"/>";
-}
-
-}  // namespace
 
 int RunChartsCommand(int argc, char** argv) {
   cli::Command cmd("charts",
@@ -76,124 +64,19 @@ int RunChartsCommand(int argc, char** argv) {
   TrialConfig c;
   c.law.step_mm = 5;
   const TrialResult trial = RunTrial(gantry.get(), c, true, &error);
-  ProcessedLog path;
-  LoadError load_error;
-  ProcessOptions po;
-  po.moving_average = 1;
-  if (!ProcessRobotLog(RobotLogFromTrial(trial, kToolCentreOffsetM, 1, 0), po, &path, &load_error)) {
-    std::fprintf(stderr, "ssc charts: %s\n", load_error.ToString().c_str());
+  std::vector<FidelityRow> rows;
+  const bool ok = RunFidelityTable(
+      c, trial, SourceDir() + "/scenes/disk_replay.xml", SourceDir() + "/scenes/disk_benchmark.xml",
+      [](const FidelityRow& r) {
+        std::printf("  %-44s wall/sim %.4f  error %.4f log10, %.1f Pa\n", r.setting.c_str(),
+                    r.wall_per_sim_s, r.rms_log10, r.rms_pa);
+      },
+      &rows, &error);
+  if (!ok) {
+    std::fprintf(stderr, "ssc charts: %s\n", error.c_str());
     return 1;
   }
-  struct Setting {
-    std::string name, config;
-    double dt;
-    int integrator;
-    bool reference, is_default;
-    int lip_segments = 16;
-  };
-  const std::string quiet = Key("noise_pa", "0");  // compare the physics, not the noise
-  std::vector<Setting> settings = {
-      {"reference: 16 rays, 32 lip segments, 0.25 ms, RK4", quiet + Key("rays_per_chamber", "16"),
-       0.00025, mjINT_RK4, true, false, 32},
-      {"default: 4 rays, 160 Hz, 2 ms, implicitfast", quiet, 0.002, mjINT_IMPLICITFAST, false, true}};
-  for (int rays : {1, 2, 8, 16}) {
-    settings.push_back({std::to_string(rays) + " rays", quiet + Key("rays_per_chamber", std::to_string(rays)),
-                        0.002, mjINT_IMPLICITFAST, false, false});
-  }
-  for (const char* hz : {"40", "80", "320"}) {
-    settings.push_back({std::string(hz) + " Hz sensor", quiet + Key("sample_rate_hz", hz), 0.002,
-                        mjINT_IMPLICITFAST, false, false});
-  }
-  for (double dt : {0.0005, 0.001, 0.004, 0.008}) {
-    char name[32];
-    std::snprintf(name, sizeof(name), "%.1f ms step", dt * 1e3);
-    settings.push_back({name, quiet, dt, mjINT_IMPLICITFAST, false, false});
-  }
-  for (int lips : {8, 32, 64}) {
-    settings.push_back({std::to_string(lips) + " lip segments", quiet, 0.002, mjINT_IMPLICITFAST,
-                        false, false, lips});
-  }
-  settings.push_back({"Euler", quiet, 0.002, mjINT_EULER, false, false});
-  settings.push_back({"RK4", quiet, 0.002, mjINT_RK4, false, false});
-  std::ofstream csv(out / "simulator.csv");
-  csv << "setting,timestep_ms,wall_per_sim_s,rms_log10_vs_reference,rms_pa_vs_reference,"
-         "is_default\n";
-  std::vector<std::array<double, 4>> reference;
-  for (const Setting& s : settings) {
-    const std::string dir = (out / "scenes" / std::to_string(&s - settings.data())).string();
-    std::string scene = SceneWithToolConfig(SourceDir() + "/scenes/disk_replay.xml", dir, s.config,
-                                            &error);
-    if (!scene.empty() && s.lip_segments != 16) {
-      const std::string tool = ToolWithLipSegments(ToolModelWithConfig(s.config, &error),
-                                                   s.lip_segments, &error);
-      if (tool.empty()) {
-        scene.clear();
-      } else {
-        std::ofstream(fs::path(dir) / "models" / "ssc_tool.xml") << tool;
-      }
-    }
-    ModelPtr m = scene.empty() ? nullptr : LoadModel(scene, &error);
-    if (!m) {
-      std::fprintf(stderr, "ssc charts: %s\n", error.c_str());
-      return 1;
-    }
-    m->opt.timestep = s.dt;
-    m->opt.integrator = s.integrator;
-    ReplayComparison r;
-    const auto t0 = std::chrono::steady_clock::now();
-    if (!ReplayLog(m.get(), path, kToolCentreOffsetM, &r, &error)) {
-      std::fprintf(stderr, "ssc charts: %s\n", error.c_str());
-      return 1;
-    }
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const double sim = path.t_s.back() - path.t_s.front();
-    if (s.reference) reference = r.sim_pa;
-    double e_log = 0, e_pa = 0;
-    for (size_t i = 0; i < r.sim_pa.size() && i < reference.size(); ++i) {
-      for (int k = 0; k < 4; ++k) {
-        e_log += std::pow(std::log10(std::max(1.0, r.sim_pa[i][k])) -
-                              std::log10(std::max(1.0, reference[i][k])), 2);
-        e_pa += std::pow(r.sim_pa[i][k] - reference[i][k], 2);
-      }
-    }
-    const double n = 4.0 * static_cast<double>(r.sim_pa.size());
-    std::printf("  %-44s wall/sim %.4f  error %.4f log10, %.1f Pa\n", s.name.c_str(), wall / sim,
-                std::sqrt(e_log / n), std::sqrt(e_pa / n));
-    csv << '"' << s.name << "\"," << s.dt * 1e3 << ',' << wall / sim << ',' << std::sqrt(e_log / n)
-        << ',' << std::sqrt(e_pa / n) << ',' << (s.is_default ? 1 : 0) << '\n';
-  }
-  // Full arm against the light gantry: the same trial on both; the arm run is the reference
-  // (pressures compared at equal times), cost is wall time per simulated second.
-  {
-    ModelPtr arm = LoadModel(SourceDir() + "/scenes/disk_benchmark.xml", &error);
-    if (!arm) {
-      std::fprintf(stderr, "ssc charts: %s\n", error.c_str());
-      return 1;
-    }
-    const TrialResult a = RunTrial(arm.get(), c, true, &error);
-    const TrialResult g = trial;  // the gantry run above, same config and seed
-    std::map<long, std::array<double, 4>> arm_rows;
-    for (const TrialLogRow& r : a.log) arm_rows[std::lround(r.t_s * 1e4)] = r.p_pa;
-    double e_log = 0;
-    int n = 0;
-    for (const TrialLogRow& r : g.log) {
-      auto it = arm_rows.find(std::lround(r.t_s * 1e4));
-      if (it == arm_rows.end()) continue;
-      for (int k = 0; k < 4; ++k) {
-        e_log += std::pow(std::log10(std::max(1.0, r.p_pa[k])) -
-                              std::log10(std::max(1.0, it->second[k])), 2);
-      }
-      n += 4;
-    }
-    const double err = n ? std::sqrt(e_log / n) : 0;
-    std::printf("  %-44s wall/sim %.4f  (reference of this pair)\n", "arm scene (UR-10)",
-                a.wall_time_s / a.sim_time_s);
-    std::printf("  %-44s wall/sim %.4f  error %.4f log10 vs the arm run\n", "gantry scene",
-                g.wall_time_s / g.sim_time_s, err);
-    csv << "\"arm scene (UR-10)\",2," << a.wall_time_s / a.sim_time_s << ",0.0001,0,0\n";
-    csv << "\"gantry scene vs arm\",2," << g.wall_time_s / g.sim_time_s << ',' << err << ",0,0\n";
-  }
-  csv.close();
+  std::ofstream(out / "simulator.csv") << FidelityCsv(rows);
   const std::string png = (out / "speed_accuracy.png").string();
   if (RunPlotScript("plot_speed_accuracy.py",
                     {(out / "cup.csv").string(), (out / "simulator.csv").string(), png})) {
