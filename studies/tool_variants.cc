@@ -134,6 +134,10 @@ std::string ToolModelVariants::ToolXml(const ToolVariant& variant, std::string* 
   if (!xml.empty() && variant.lip_segments > 0) {
     xml = ToolWithLipSegments(xml, variant.lip_segments, error);
   }
+  if (xml.empty()) {
+    const std::string file = tool_file_ < 0 ? label_ : texts_.files[tool_file_].first;
+    *error = file + ": " + *error;
+  }
   return xml;
 }
 
