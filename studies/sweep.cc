@@ -11,7 +11,9 @@
 #include <tuple>
 
 #include "runtime/mujoco_model.h"
+#include "common/strict_number.h"
 #include "studies/job_runner.h"
+#include "studies/sweep_io.h"
 #include "studies/trial_io.h"
 
 namespace ssc {
@@ -31,30 +33,33 @@ std::uint64_t Mix(std::uint64_t x) {
   return x ^ (x >> 31);
 }
 
-// Reads the keys of rows already in the CSV (resume). Rows that do not parse are ignored.
-std::set<Key> FinishedRows(const std::string& path, bool* has_header) {
-  std::set<Key> done;
-  *has_header = false;
-  std::ifstream f(path);
-  std::string line;
-  while (std::getline(f, line)) {
-    if (line.rfind("scene,", 0) == 0) {
-      *has_header = true;
-      continue;
-    }
-    std::stringstream ss(line);
-    std::string cell;
-    std::vector<std::string> cells;
-    while (std::getline(ss, cell, ',') && cells.size() < 7) cells.push_back(cell);
-    if (cells.size() < 7 || cells[6].empty()) continue;
-    try {
-      done.insert(MakeKey(std::stod(cells[1]), std::stod(cells[2]), std::stod(cells[3]),
-                          std::stoi(cells[4])));
-    } catch (...) {
-      continue;  // a torn last line from an interrupted run: that trial runs again
-    }
-  }
-  return done;
+// The options that define the rows: resuming with other ones would mix their rows silently.
+SweepManifest MakeManifest(const mjModel* m, const SweepSpec& spec) {
+  const TrialConfig& c = spec.base;
+  auto num = [](double v) { return FormatNumber(v); };
+  std::vector<unsigned char> buffer(static_cast<size_t>(mj_sizeModel(m)));
+  mj_saveModel(m, nullptr, buffer.data(), static_cast<int>(buffer.size()));
+  char hash[32];
+  std::snprintf(hash, sizeof(hash), "%016llx",
+                static_cast<unsigned long long>(Fnv1a64(buffer.data(), buffer.size())));
+  return {{"csv_columns", SweepCsvHeader()},
+          {"scene", spec.scene_name},
+          {"model_hash", hash},
+          {"seed", std::to_string(spec.seed)},
+          {"timeout_s", num(c.timeout_s)},
+          {"control_period_s", num(c.control_period_s)},
+          {"smoothing_s", num(c.servo.smoothing_s)},
+          {"approach_force_n", num(c.approach_force_n)},
+          {"start_x_m", num(c.target.start[0])},
+          {"start_y_m", num(c.target.start[1])},
+          {"p_noise_pa", num(c.law.p_noise_pa)},
+          {"p_grasp_pa", num(c.law.p_grasp_pa)},
+          {"object_on", c.law.side == FollowSide::kObjectOnRight ? "right" : "left"},
+          {"dead_band", c.law.dead_band ? "on" : "off"},
+          {"off_edge_pa", num(c.thresholds.off_edge_pa)},
+          {"grasp_pa", num(c.thresholds.grasp_pa)},
+          {"goal_sweep_deg", num(c.target.goal.sweep_deg)},
+          {"goal_band_m", num(c.target.goal.band_m)}};
 }
 
 // MuJoCo calls mju_user_error on fatal errors (the default exits the process); a sweep turns
@@ -141,16 +146,23 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
   }
   const bool writer = JobRunnerRank() == 0;
   std::set<Key> done;
-  std::ofstream out;
+  SweepRowWriter out;
   if (writer) {
-    bool has_header = false;
-    done = FinishedRows(spec.out_csv, &has_header);
-    out.open(spec.out_csv, std::ios::app);
-    if (!out) {
-      *error = spec.out_csv + ": cannot open for appending";
+    SweepCsvContents existing;
+    if (!LoadSweepCsvForResume(spec.out_csv, SweepCsvHeader(), &existing, error) ||
+        !CheckOrWriteSweepManifest(spec.out_csv, !existing.rows.empty(), MakeManifest(m, spec),
+                                   error) ||
+        !out.Open(spec.out_csv, error)) {
       return false;
     }
-    if (!has_header) out << SweepCsvHeader() << '\n' << std::flush;
+    if (existing.dropped > 0) {
+      std::fprintf(stderr, "sweep: dropped %d torn or malformed line(s) from %s; those trials "
+                   "run again\n", existing.dropped, spec.out_csv.c_str());
+    }
+    for (const SweepRowKey& k : existing.rows) {
+      done.insert(MakeKey(k.pref_pa, k.beta, k.step_mm, k.repeat));
+    }
+    if (!existing.has_header && !out.Append(SweepCsvHeader(), error)) return false;
   }
 
   JobSet set;
@@ -172,8 +184,9 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
   const auto t0 = std::chrono::steady_clock::now();
   JobRunnerOptions options;
   options.threads = spec.threads;
+  std::string write_error;
   const JobRunStats stats = RunJobs(set, options, [&](std::size_t, const std::string& row) {
-    out << row << '\n' << std::flush;
+    if (!out.Append(row, &write_error)) return;
     ++finished;
     if (progress) {
       SweepProgress p;
@@ -194,6 +207,10 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
   summary->balance_max_over_mean = stats.BalanceMaxOverMean();
   summary->longest_trial_s = stats.longest_job_s;
   summary->interrupted = stats.interrupted;
+  if (!write_error.empty()) {
+    *error = write_error;
+    return false;
+  }
   return true;
 }
 

@@ -1,0 +1,83 @@
+// Sweep files, resumable and safe against interruption: the CSV rows (each written whole or not
+// at all) and the manifest beside the CSV (the options that define the rows). Self-contained
+// (std + POSIX + nlohmann-json, no MuJoCo), so the sweep, the job runner's writer rank and the
+// fuzz target (studies/fuzz/sweep_resume_fuzz.cc) share it.
+//
+// Resume rules: a line counts as a finished trial only when it ends in '\n', has exactly the
+// header's number of fields (quoted fields respected) and its key fields (pref_pa, beta,
+// step_mm, repeat, seed) parse strictly. Anything else (a torn tail from a killed run, a torn
+// row that a later append glued onto) is dropped, the file is rewritten without it, and those
+// trials run again.
+#ifndef SSC_STUDIES_SWEEP_IO_H_
+#define SSC_STUDIES_SWEEP_IO_H_
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ssc {
+
+struct SweepRowKey {
+  double pref_pa = 0, beta = 0, step_mm = 0;
+  int repeat = 0;
+  std::uint64_t seed = 0;
+};
+
+struct SweepCsvContents {
+  bool has_header = false;
+  std::vector<SweepRowKey> rows;   // the whole rows, in file order
+  std::vector<std::string> lines;  // their text (without '\n'), same order
+  int dropped = 0;                 // torn or malformed lines
+  bool ends_torn = false;          // the last line has no '\n'
+};
+
+// Parses a sweep CSV's text; `header` is the expected first line (without '\n').
+SweepCsvContents ParseSweepCsv(std::string_view text, std::string_view header);
+
+// Reads `path` (absent = empty) for resuming. When any line was dropped, rewrites the file
+// (temp file + rename) with the header and the whole rows only, so later appends start on a
+// fresh line. False + *error when the file cannot be read or rewritten, or its header differs.
+bool LoadSweepCsvForResume(const std::string& path, const std::string& header,
+                           SweepCsvContents* contents, std::string* error);
+
+// Appends rows to a sweep CSV, each with one write(2) on an O_APPEND descriptor and newlines
+// inside a row replaced by spaces (a row never spans lines).
+class SweepRowWriter {
+ public:
+  SweepRowWriter() = default;
+  ~SweepRowWriter();
+  SweepRowWriter(const SweepRowWriter&) = delete;
+  SweepRowWriter& operator=(const SweepRowWriter&) = delete;
+  bool Open(const std::string& path, std::string* error);
+  bool Append(std::string_view row, std::string* error);
+
+ private:
+  int fd_ = -1;
+  std::string path_;
+};
+
+// The options that define a sweep's rows (scene, seed, timeout, thresholds, model hash, ...),
+// as name -> value text. Stored as JSON beside the CSV (sweep.csv -> sweep.json).
+using SweepManifest = std::map<std::string, std::string>;
+
+std::string SweepManifestPath(const std::string& csv_path);
+std::string SweepManifestJson(const SweepManifest& manifest);
+// False + *error on malformed JSON or a value that is not a string.
+bool ParseSweepManifest(std::string_view json, SweepManifest* manifest, std::string* error);
+// "" when equal; else one line naming each difference ("seed: 1 in the file, 2 now").
+std::string CompareSweepManifests(const SweepManifest& recorded, const SweepManifest& now);
+
+// Checks `now` against the manifest beside `csv_path`, or writes it when there is none and the
+// CSV holds no rows yet. False + *error (naming the differences) when resuming would mix rows
+// made with other options.
+bool CheckOrWriteSweepManifest(const std::string& csv_path, bool csv_has_rows,
+                               const SweepManifest& now, std::string* error);
+
+// 64-bit FNV-1a, for the model hash.
+std::uint64_t Fnv1a64(const void* data, std::size_t size);
+
+}  // namespace ssc
+
+#endif  // SSC_STUDIES_SWEEP_IO_H_

@@ -1,0 +1,131 @@
+// Sweep files: rows whole or not at all on resume, and the manifest that refuses to mix rows
+// made with other options.
+#include "studies/sweep_io.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "studies/trial_io.h"
+
+namespace ssc {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kRow1 =
+    "gantry,100,2,7.5,0,11,success,209.7,32.6,-2.4,0.8,0.7,29.5,7.1,0.3,0.7,2.4,359.8,51,31.0,"
+    "\"swept 359.8 deg, done\"";
+const std::string kRow2 =
+    "gantry,100,2,7.5,1,12,failure_II,20.1,30.0,-5.0,1.0,0.1,3.0,6.0,0.2,1.0,3.0,40.0,9,8.0,\"x\"";
+const std::string kRow3 =
+    "gantry,150,2,7.5,0,13,success,209.7,32.6,-2.4,0.8,0.7,29.5,7.1,0.3,0.7,2.4,359.8,51,31.0,\"y\"";
+
+class SweepIoTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("ssc_sweep_io_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+    csv_ = (dir_ / "sweep.csv").string();
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  void Write(const std::string& text) { std::ofstream(csv_, std::ios::binary) << text; }
+  std::string Read() {
+    std::ifstream in(csv_, std::ios::binary);
+    std::stringstream b;
+    b << in.rdbuf();
+    return b.str();
+  }
+  fs::path dir_;
+  std::string csv_;
+  const std::string header_ = SweepCsvHeader();
+};
+
+TEST_F(SweepIoTest, TheHeaderFieldCountMatchesTheRows) {
+  const SweepCsvContents c = ParseSweepCsv(header_ + "\n" + kRow1 + "\n", header_);
+  EXPECT_TRUE(c.has_header);
+  ASSERT_EQ(c.rows.size(), 1u);
+  EXPECT_EQ(c.rows[0].seed, 11u);
+  EXPECT_EQ(c.dropped, 0);
+}
+
+TEST_F(SweepIoTest, ATornTailIsDroppedEvenWhenItHoldsTheOutcome) {
+  // Cut inside the metrics: the outcome field is there, the row is not whole.
+  Write(header_ + "\n" + kRow1 + "\n" + kRow2.substr(0, kRow2.find(",20.1") + 4));
+  SweepCsvContents c;
+  std::string error;
+  ASSERT_TRUE(LoadSweepCsvForResume(csv_, header_, &c, &error)) << error;
+  EXPECT_EQ(c.rows.size(), 1u);
+  EXPECT_EQ(c.dropped, 1);
+  EXPECT_EQ(Read(), header_ + "\n" + kRow1 + "\n") << "file rewritten without the torn tail";
+  // Appending now starts on a fresh line.
+  SweepRowWriter w;
+  ASSERT_TRUE(w.Open(csv_, &error)) << error;
+  ASSERT_TRUE(w.Append(kRow2, &error)) << error;
+  EXPECT_EQ(ParseSweepCsv(Read(), header_).rows.size(), 2u);
+}
+
+TEST_F(SweepIoTest, ARowTornEarlierDoesNotGlueOntoTheNext) {
+  // An old writer left a torn row and appended the next one onto it.
+  Write(header_ + "\n" + kRow1.substr(0, 30) + kRow2 + "\n" + kRow3 + "\n");
+  SweepCsvContents c;
+  std::string error;
+  ASSERT_TRUE(LoadSweepCsvForResume(csv_, header_, &c, &error)) << error;
+  ASSERT_EQ(c.rows.size(), 1u) << "the glued line counts as no trial";
+  EXPECT_DOUBLE_EQ(c.rows[0].pref_pa, 150);
+  EXPECT_EQ(c.dropped, 1);
+  EXPECT_EQ(Read(), header_ + "\n" + kRow3 + "\n");
+}
+
+TEST_F(SweepIoTest, MalformedKeysAndForeignFilesAreNotRows) {
+  std::string bad = kRow1;
+  bad.replace(bad.find(",100,"), 5, ",0x64,");
+  EXPECT_EQ(ParseSweepCsv(header_ + "\n" + bad + "\n", header_).rows.size(), 0u);
+  Write("t_s,x_m\n1,2\n");
+  SweepCsvContents c;
+  std::string error;
+  EXPECT_FALSE(LoadSweepCsvForResume(csv_, header_, &c, &error));
+  EXPECT_NE(error.find("header"), std::string::npos) << error;
+  EXPECT_EQ(Read(), "t_s,x_m\n1,2\n") << "a foreign file is left alone";
+}
+
+TEST_F(SweepIoTest, RowsNeverSpanLines) {
+  SweepRowWriter w;
+  std::string error;
+  ASSERT_TRUE(w.Open(csv_, &error));
+  ASSERT_TRUE(w.Append(header_, &error));
+  std::string row = kRow1;
+  row.replace(row.find("done"), 4, "do\nne");
+  ASSERT_TRUE(w.Append(row, &error));
+  const SweepCsvContents c = ParseSweepCsv(Read(), header_);
+  EXPECT_EQ(c.rows.size(), 1u);
+  EXPECT_EQ(c.dropped, 0);
+}
+
+TEST_F(SweepIoTest, ResumingWithOtherOptionsIsRefusedNamingTheDifference) {
+  const SweepManifest first = {{"seed", "1"}, {"scene", "gantry"}, {"timeout_s", "120"}};
+  std::string error;
+  ASSERT_TRUE(CheckOrWriteSweepManifest(csv_, false, first, &error)) << error;
+  EXPECT_TRUE(fs::exists(dir_ / "sweep.json"));
+  EXPECT_TRUE(CheckOrWriteSweepManifest(csv_, true, first, &error)) << error;
+  SweepManifest other = first;
+  other["seed"] = "2";
+  other["timeout_s"] = "60";
+  EXPECT_FALSE(CheckOrWriteSweepManifest(csv_, true, other, &error));
+  EXPECT_NE(error.find("seed: 1 in the file, 2 now"), std::string::npos) << error;
+  EXPECT_NE(error.find("timeout_s: 120 in the file, 60 now"), std::string::npos) << error;
+  // Rows without a manifest: nobody can tell what made them.
+  fs::remove(dir_ / "sweep.json");
+  EXPECT_FALSE(CheckOrWriteSweepManifest(csv_, true, first, &error));
+  EXPECT_NE(error.find("no "), std::string::npos) << error;
+  // A damaged manifest is an error, not a fresh start.
+  std::ofstream(dir_ / "sweep.json") << "{\"seed\": ";
+  EXPECT_FALSE(CheckOrWriteSweepManifest(csv_, true, first, &error));
+}
+
+}  // namespace
+}  // namespace ssc
