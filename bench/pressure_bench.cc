@@ -127,6 +127,7 @@ struct Scene {
   double timer_us[mjNTIMER] = {};
   double control_us = 0;
   long trial_steps = 0;
+  double solver_iterations = 0, contacts = 0;  // summed over timed trial steps
   double first_follow_s = 0;
 
   ~Scene() {
@@ -218,7 +219,13 @@ int main(int argc, char** argv) {
       mjcb_control = TimedControl;
       g_control_us = 0;
       steps = 0;
-      while (steps < block && s->trial->Step()) ++steps;
+      while (steps < block && s->trial->Step()) {
+        ++steps;
+        if (r >= 0) {
+          s->solver_iterations += d->solver_niter[0];
+          s->contacts += d->ncon;
+        }
+      }
       mjcb_control = g_inner_control;
       mjcb_time = nullptr;
       if (r >= 0 && steps > 0) {
@@ -267,8 +274,8 @@ int main(int argc, char** argv) {
               "round.\n",
               ref.name.c_str());
   std::printf("\nwhere a trial step goes (MuJoCo timers, share of the step):\n");
-  std::printf("%-26s %7s %7s %7s %7s %7s %7s %7s %7s\n", "scene", "step us", "collide",
-              "constr", "integr", "kin+M", "sensor*", "control", "other");
+  std::printf("%-26s %7s %7s %7s %7s %7s %7s %7s %7s %6s %6s\n", "scene", "step us", "collide",
+              "constr", "integr", "kin+M", "sensor*", "control", "other", "ncon", "iters");
   for (const auto& s : scenes) {
     const double* t = s->timer_us;
     const double step = t[mjTIMER_STEP];
@@ -284,12 +291,15 @@ int main(int argc, char** argv) {
                            t[mjTIMER_ACTUATION] - t[mjTIMER_CONSTRAINT];
     const double sensor = std::max(0.0, outside - control);
     const double other = step - collide - constr - integr - kin - sensor - control;
-    std::printf("%-26s %7.1f %7.3f %7.3f %7.3f %7.3f %7.3f %7.3f %7.3f\n", s->name.c_str(),
-                step / static_cast<double>(s->trial_steps), collide / step, constr / step,
-                integr / step, kin / step, sensor / step, control / step, other / step);
+    const double n = static_cast<double>(s->trial_steps);
+    std::printf("%-26s %7.1f %7.3f %7.3f %7.3f %7.3f %7.3f %7.3f %7.3f %6.1f %6.1f\n",
+                s->name.c_str(), step / n, collide / step, constr / step, integr / step,
+                kin / step, sensor / step, control / step, other / step, s->contacts / n,
+                s->solver_iterations / n);
   }
   std::printf("  collide: broad+narrow phase; constr: make, project, solve; integr: the "
               "integrator; kin+M: kinematics, inertia;\n  sensor*: the rest of mj_forward "
-              "(sensors; the pressure plugin dominates); other: velocity, actuation, checks\n");
+              "(sensors; the pressure plugin dominates); other: velocity, actuation, checks;\n  ncon: "
+              "contacts per step; iters: constraint solver iterations per step\n");
   return 0;
 }
