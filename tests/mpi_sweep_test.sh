@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # ssc sweep under `mpirun -np 2 --oversubscribe`: rank 0 writes the same CSV (byte for byte) as a
 # threaded run of the same grid and seed, and a re-run resumes the rows a lost run left out.
-# Usage: mpi_sweep_test.sh SSC MPIEXEC MPI_FOUND. Exit 77 (CTest: skipped) without MPI.
+# Also the runner alone with results on every rank (2 ranks x 2 threads).
+# Usage: mpi_sweep_test.sh SSC MPIEXEC MPI_FOUND RUNNER_CHECK. Exit 77 (CTest: skipped) without MPI.
 set -euo pipefail
-SSC="$1"; MPIEXEC="$2"; MPI_FOUND="$3"
+SSC="$1"; MPIEXEC="$2"; MPI_FOUND="$3"; RUNNER_CHECK="$4"
 if ! [[ "$MPI_FOUND" =~ ^(TRUE|ON|1|YES)$ ]] || [ ! -x "$MPIEXEC" ]; then
   echo "SKIP: built without MPI (install libopenmpi-dev openmpi-bin and reconfigure)"
   exit 77
@@ -13,6 +14,7 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
 DIR="$(mktemp -d)"
 trap 'rm -rf "$DIR"' EXIT
+"$MPIEXEC" -np 2 --oversubscribe "$RUNNER_CHECK" || { echo "FAIL: results on all ranks"; exit 1; }
 GRID=(--pref 70,150 --beta 1,3 --step 5,7.5 --repeats 1 --seed 11 --timeout 6
       --no-plot --no-progress)
 
