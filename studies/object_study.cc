@@ -1,0 +1,146 @@
+#include "studies/object_study.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "objects/object_mjcf.h"
+#include "runtime/mujoco_model.h"
+#include "studies/job_runner.h"
+#include "studies/object_trials.h"
+
+namespace ssc {
+namespace fs = std::filesystem;
+
+bool ObjectsByNames(const std::string& names, std::vector<ObjectSpec>* objects,
+                    std::string* error) {
+  if (names == "all") {
+    *objects = AllObjects();
+    return true;
+  }
+  size_t start = 0;
+  for (;;) {
+    const size_t comma = names.find(',', start);
+    const std::string name =
+        names.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    ObjectSpec s = ObjectByName(name);
+    if (s.name.empty()) {
+      *error = "unknown object '" + name + "' in '" + names +
+               "' (names: disk_d02..disk_d14, disk_r35, hole_d02..hole_d14, corner_aNNN "
+               "(1-359), volute, semicircle_strip, semisquare_strip, fillet)";
+      return false;
+    }
+    for (const ObjectSpec& earlier : *objects) {
+      if (earlier.name == s.name) {
+        *error = "'" + name + "' is listed twice";
+        return false;
+      }
+    }
+    objects->push_back(s);
+    if (comma == std::string::npos) return true;
+    start = comma + 1;
+  }
+}
+
+bool RunObjectStudy(const ObjectStudySpec& spec,
+                    const std::function<void(const std::string&)>& progress,
+                    ObjectStudySummary* summary, std::string* error) {
+  const fs::path out = spec.out_dir;
+  const std::string scene_dir = (out / "scenes").string();
+  for (const ObjectSpec& s : spec.objects) {
+    if (!WriteObjectFiles(s, scene_dir, SourceDir(), error)) return false;
+  }
+  // Contours (for plots): one CSV per object, points in world metres.
+  summary->paths_dir = (out / "paths").string();
+  fs::create_directories(summary->paths_dir);
+  for (const ObjectSpec& s : spec.objects) {
+    std::ofstream c(fs::path(summary->paths_dir) / (s.name + "_contour.csv"));
+    c << "x_m,y_m,closed\n";
+    for (const Point2& q : s.outline) c << q[0] << ',' << q[1] << ',' << s.closed() << '\n';
+  }
+  if (spec.write_only) return true;
+
+  struct Job {
+    size_t object;
+    std::uint64_t seed;
+  };
+  std::vector<Job> jobs;
+  for (size_t i = 0; i < spec.objects.size(); ++i) {
+    for (int k = 0; k < spec.seeds; ++k) jobs.push_back({i, spec.seed + k});
+  }
+  const fs::path fillet_profile = out / "fillet_profile.csv";
+  JobSet set;
+  set.count = jobs.size();
+  set.cost = [&](size_t j) {  // the follow timeout grows with the edge to follow
+    return ObjectTrialConfig(spec.objects[jobs[j].object], spec.law, 1).timeout_s;
+  };
+  // One job: its table row, after a line for the progress report.
+  set.run = [&](size_t j) {
+    const ObjectSpec& object = spec.objects[jobs[j].object];
+    const ObjectFiles files = ObjectFileNames(object.name);
+    const std::string scene =
+        (fs::path(scene_dir) / (spec.arm_scenes ? files.arm_scene : files.gantry_scene)).string();
+    std::string load_error;
+    ModelPtr model = LoadModel(scene, &load_error);
+    ObjectTrialRow row;
+    if (!model) {
+      row.object = object.name;
+      row.kind = ObjectKindName(object.kind);
+      row.seed = jobs[j].seed;
+      row.result.outcome = Outcome::kUnstable;
+      row.result.detail = load_error;
+    } else {
+      row = RunObjectTrial(model.get(), object, spec.law, jobs[j].seed, true);
+      // The cup-centre path (follow phase), for the plots; the log itself is not kept.
+      std::ofstream path(fs::path(summary->paths_dir) /
+                         (object.name + "_s" + std::to_string(jobs[j].seed) + ".csv"));
+      path << "x_m,y_m\n";
+      for (const TrialLogRow& l : row.result.log) {
+        if (l.phase == TrialPhase::kFollow) path << l.tool_m[0] << ',' << l.tool_m[1] << '\n';
+      }
+      if (object.kind == ObjectKind::kFillet && jobs[j].seed == spec.seed) {
+        std::ofstream(fillet_profile) << FilletProfileCsv(row);
+      }
+    }
+    char line[256];
+    std::snprintf(line, sizeof(line), "  %-18s seed %-3llu %-11s end %.1f (%s) %.1f s wall",
+                  object.name.c_str(), static_cast<unsigned long long>(jobs[j].seed),
+                  OutcomeName(row.result.outcome),
+                  object.closed() ? row.end_swept_deg : row.end_arc_mm,
+                  object.closed() ? "deg swept" : "mm along the edge", row.result.wall_time_s);
+    if (object.kind == ObjectKind::kFillet && jobs[j].seed == spec.seed && model) {
+      char fillet[256];
+      std::snprintf(fillet, sizeof(fillet),
+                    "fillet (seed %llu): %s at %.1f mm along the edge, fillet radius %.2f mm",
+                    static_cast<unsigned long long>(row.seed), OutcomeName(row.result.outcome),
+                    row.end_arc_mm, row.end_fillet_radius_mm);
+      return std::string(line) + '\n' + ObjectTableRow(row) + '\n' + fillet;
+    }
+    return std::string(line) + '\n' + ObjectTableRow(row);
+  };
+  std::vector<std::string> table_rows(jobs.size());
+  JobRunnerOptions options;
+  options.threads = spec.threads;
+  RunJobs(set, options, [&](size_t j, const std::string& result) {
+    const size_t a = result.find('\n'), b = result.find('\n', a + 1);
+    table_rows[j] = result.substr(a + 1, b == std::string::npos ? b : b - a - 1);
+    if (b != std::string::npos) {
+      summary->fillet_line = result.substr(b + 1);
+      summary->fillet_profile_csv = fillet_profile.string();
+    }
+    if (progress) progress(result.substr(0, a));
+  });
+  if (JobRunnerRank() != 0) return true;
+  summary->trials = static_cast<int>(jobs.size());
+  summary->table_csv = (out / "objects.csv").string();
+  std::ofstream table(summary->table_csv);
+  table << ObjectTableHeader() << '\n';
+  for (const std::string& r : table_rows) table << r << '\n';
+  if (!table) {
+    *error = summary->table_csv + ": write failed";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace ssc
