@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <nlohmann/json.hpp>
+
 #include "calibration/nelder_mead.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/trial.h"
@@ -63,6 +65,22 @@ bool FitWander(const std::string& scene, const std::vector<WanderTarget>& target
   fit->evaluations = r.evaluations;
   fit->cost = evaluate(fit->noise_pa, fit->lag_ms, &fit->model);
   return !failed;
+}
+
+std::string CalibrationParamsJson(const PneumaticFit& fit, const WanderFit* wander) {
+  nlohmann::ordered_json j;
+  j["cost"] = fit.cost;
+  j["parameters"] = nlohmann::ordered_json::object();
+  for (const FitParameter& q : fit.parameters) j["parameters"][q.key] = q.value;
+  j["targets"] = nlohmann::ordered_json::object();
+  for (const FitTarget& t : fit.targets) {
+    j["targets"][t.name] = {{"published", t.target}, {"model", t.model}};
+  }
+  if (wander) {
+    j["wander"] = {{"noise_pa", wander->noise_pa}, {"lag_ms", wander->lag_ms},
+                   {"cost", wander->cost}};
+  }
+  return j.dump(2) + "\n";
 }
 
 }  // namespace ssc

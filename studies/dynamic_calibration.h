@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "calibration/pneumatic_fit.h"
+
 namespace ssc {
 
 struct WanderTarget {
@@ -33,6 +35,10 @@ bool FitWander(const std::string& scene, const std::vector<WanderTarget>& target
                double step_mm, int seeds,
                int max_evaluations, double noise0, double lag0, WanderFit* fit,
                std::string* error);
+
+// params.json of ssc calibrate: the static fit (cost, parameters, targets published vs model)
+// and, when given, the wander fit (noise_pa, lag_ms, cost). One JSON object.
+std::string CalibrationParamsJson(const PneumaticFit& fit, const WanderFit* wander);
 
 }  // namespace ssc
 

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 namespace ssc {
 namespace {
 
@@ -13,21 +15,6 @@ std::string Num(double v, int precision = 6) {
   char buf[64];
   std::snprintf(buf, sizeof(buf), "%.*g", precision, v);
   return buf;
-}
-
-std::string JsonEscape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      out += ' ';
-    } else {
-      out += c;
-    }
-  }
-  return out;
 }
 
 // CSV cells never contain commas or quotes from us except the free-text detail.
@@ -70,35 +57,47 @@ bool WriteTrialSummaryJson(const std::string& path, const std::string& scene,
     return false;
   }
   const DiskTrialMetrics& m = r.metrics;
-  f << "{\n"
-    << "  \"scene\": \"" << JsonEscape(scene) << "\",\n"
-    << "  \"mujoco_version\": \"" << mj_versionString() << "\",\n"
-    << "  \"parameters\": {\"pref_pa\": " << Num(c.law.p_ref_pa) << ", \"beta\": "
-    << Num(c.law.beta) << ", \"step_mm\": " << Num(c.law.step_mm) << ", \"p_noise_pa\": "
-    << Num(c.law.p_noise_pa) << ", \"p_grasp_pa\": " << Num(c.law.p_grasp_pa)
-    << ", \"dead_band\": " << (c.law.dead_band ? "true" : "false")
-    << ", \"object_on\": \"" << (c.law.side == FollowSide::kObjectOnLeft ? "left" : "right")
-    << "\", \"control_period_s\": " << Num(c.control_period_s)
-    << ", \"servo_smoothing_s\": " << Num(c.servo.smoothing_s)
-    << ", \"approach_force_n\": " << Num(c.approach_force_n)
-    << ", \"start_x_mm\": " << Num(c.target.start[0] * 1e3)
-    << ", \"start_y_mm\": " << Num(c.target.start[1] * 1e3)
-    << ", \"timeout_s\": " << Num(c.timeout_s) << "},\n"
-    << "  \"seed\": " << c.seed << ",\n"
-    << "  \"outcome\": \"" << OutcomeName(r.outcome) << "\",\n"
-    << "  \"detail\": \"" << JsonEscape(r.detail) << "\",\n"
-    << "  \"metrics\": {\"s_mm\": " << Num(m.s_mm) << ", \"r_mean_mm\": " << Num(m.r_mean_mm)
-    << ", \"dr_mm\": " << Num(m.dr_mm) << ", \"sigma_r_mm\": " << Num(m.sigma_r_mm)
-    << ", \"s_c\": " << Num(m.s_c) << ", \"duration_s\": " << Num(m.duration_s)
-    << ", \"speed_mm_s\": " << Num(m.speed_mm_s) << ", \"speed_body_d_s\": "
-    << Num(m.speed_body_d_s) << ", \"contour_mean_mm\": " << Num(m.contour_mean_mm)
-    << ", \"contour_max_mm\": " << Num(m.contour_max_mm) << ", \"swept_deg\": "
-    << Num(r.swept_deg) << ", \"end_arc_mm\": " << Num(r.end_arc_mm)
-    << ", \"iterations\": " << r.iterations << "},\n"
-    << "  \"sim_time_s\": " << Num(r.sim_time_s) << ",\n"
-    << "  \"wall_time_s\": " << Num(r.wall_time_s) << ",\n"
-    << "  \"hold_height_mm\": " << Num(r.hold_height_m * 1e3) << "\n"
-    << "}\n";
+  // Numbers at 6 significant digits, as in the CSV files; non-finite values become null.
+  auto num = [](double v) -> nlohmann::ordered_json {
+    if (!std::isfinite(v)) return nullptr;
+    return std::stod(Num(v));
+  };
+  nlohmann::ordered_json j;
+  j["scene"] = scene;
+  j["mujoco_version"] = mj_versionString();
+  j["parameters"] = {{"pref_pa", num(c.law.p_ref_pa)},
+                     {"beta", num(c.law.beta)},
+                     {"step_mm", num(c.law.step_mm)},
+                     {"p_noise_pa", num(c.law.p_noise_pa)},
+                     {"p_grasp_pa", num(c.law.p_grasp_pa)},
+                     {"dead_band", c.law.dead_band},
+                     {"object_on", c.law.side == FollowSide::kObjectOnLeft ? "left" : "right"},
+                     {"control_period_s", num(c.control_period_s)},
+                     {"servo_smoothing_s", num(c.servo.smoothing_s)},
+                     {"approach_force_n", num(c.approach_force_n)},
+                     {"start_x_mm", num(c.target.start[0] * 1e3)},
+                     {"start_y_mm", num(c.target.start[1] * 1e3)},
+                     {"timeout_s", num(c.timeout_s)}};
+  j["seed"] = c.seed;
+  j["outcome"] = OutcomeName(r.outcome);
+  j["detail"] = r.detail;
+  j["metrics"] = {{"s_mm", num(m.s_mm)},
+                  {"r_mean_mm", num(m.r_mean_mm)},
+                  {"dr_mm", num(m.dr_mm)},
+                  {"sigma_r_mm", num(m.sigma_r_mm)},
+                  {"s_c", num(m.s_c)},
+                  {"duration_s", num(m.duration_s)},
+                  {"speed_mm_s", num(m.speed_mm_s)},
+                  {"speed_body_d_s", num(m.speed_body_d_s)},
+                  {"contour_mean_mm", num(m.contour_mean_mm)},
+                  {"contour_max_mm", num(m.contour_max_mm)},
+                  {"swept_deg", num(r.swept_deg)},
+                  {"end_arc_mm", num(r.end_arc_mm)},
+                  {"iterations", r.iterations}};
+  j["sim_time_s"] = num(r.sim_time_s);
+  j["wall_time_s"] = num(r.wall_time_s);
+  j["hold_height_mm"] = num(r.hold_height_m * 1e3);
+  f << j.dump(2) << '\n';
   if (!f) {
     *error = path + ": write failed";
     return false;

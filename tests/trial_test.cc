@@ -14,6 +14,9 @@
 #include "runtime/mujoco_model.h"
 #include "studies/sweep.h"
 #include "runtime/trial.h"
+#include "studies/trial_io.h"
+
+#include <nlohmann/json.hpp>
 
 namespace ssc {
 namespace {
@@ -149,6 +152,30 @@ std::vector<std::string> SortedRows(const std::string& path) {
   while (std::getline(f, line)) rows.push_back(line);
   std::sort(rows.begin(), rows.end());
   return rows;
+}
+
+// The summary is JSON a parser reads back, whatever the free text holds.
+TEST(TrialIoTest, SummaryJsonEscapesTextAndRoundTrips) {
+  TrialConfig c;
+  TrialResult r;
+  r.outcome = Outcome::kLostEdge;
+  r.detail = "quote \" backslash \\ newline \n tab \t";
+  r.swept_deg = 123.456;
+  r.metrics.s_mm = std::nan("");
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("ssc_summary_" + std::to_string(::getpid()) + ".json");
+  std::string error;
+  ASSERT_TRUE(WriteTrialSummaryJson(path.string(), "a \"scene\"", c, r, &error)) << error;
+  std::ifstream in(path);
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  std::filesystem::remove(path);
+  ASSERT_FALSE(j.is_discarded());
+  EXPECT_EQ(j["scene"], "a \"scene\"");
+  EXPECT_EQ(j["detail"], r.detail);
+  EXPECT_EQ(j["outcome"], "lost_edge");
+  EXPECT_DOUBLE_EQ(j["metrics"]["swept_deg"].get<double>(), 123.456);
+  EXPECT_TRUE(j["metrics"]["s_mm"].is_null());  // not finite: null, still valid JSON
+  EXPECT_DOUBLE_EQ(j["parameters"]["pref_pa"].get<double>(), c.law.p_ref_pa);
 }
 
 TEST(SweepTest, ParallelSweepGivesTheSameRowsAsSerialAndResumes) {

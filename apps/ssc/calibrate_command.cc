@@ -130,17 +130,7 @@ int RunCalibrateCommand(int argc, char** argv) {
   std::printf("cost %.4g after %d evaluations\n", fit.cost, fit.evaluations);
 
   const std::filesystem::path out = out_dir;
-  std::ofstream js(out / "params.json");
-  js << "{\"cost\": " << fit.cost << ", \"parameters\": {";
-  for (size_t i = 0; i < fit.parameters.size(); ++i) {
-    js << (i ? ", " : "") << '"' << fit.parameters[i].key << "\": " << fit.parameters[i].value;
-  }
-  js << "}, \"targets\": {";
-  for (size_t i = 0; i < fit.targets.size(); ++i) {
-    js << (i ? ", " : "") << '"' << fit.targets[i].name << "\": {\"published\": "
-       << fit.targets[i].target << ", \"model\": " << fit.targets[i].model << "}";
-  }
-  js << "}}\n";
+  std::ofstream(out / "params.json") << CalibrationParamsJson(fit, nullptr);
   // The tool model with the fitted config.
   PluginConfig config;
   char value[32];
@@ -181,9 +171,7 @@ int RunCalibrateCommand(int argc, char** argv) {
     std::snprintf(value, sizeof(value), "%.4g", w.lag_ms);
     config["lag_ms"] = value;
     std::ofstream(out / "ssc_tool_calibrated.xml") << tool->ToolXml({config, 0}, &error);
-    std::ofstream(out / "params.json", std::ios::app)
-        << "{\"wander\": {\"noise_pa\": " << w.noise_pa << ", \"lag_ms\": " << w.lag_ms
-        << ", \"cost\": " << w.cost << "}}\n";
+    std::ofstream(out / "params.json") << CalibrationParamsJson(fit, &w);
     std::printf("updated %s with noise_pa and lag_ms\n", (out / "ssc_tool_calibrated.xml").c_str());
   }
   return 0;
