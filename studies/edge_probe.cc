@@ -1,6 +1,10 @@
 #include "studies/edge_probe.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 
 #include "controller/pure/contour_law.h"
 
@@ -81,6 +85,69 @@ ProbeReading EdgeProbe3d::Read(double x_m, double y_m, double yaw_rad, double su
   // Object on the left seen from above (world z up): travel = g turned 90 deg clockwise.
   r.travel_world_rad = std::atan2(-g_world[0], g_world[1]);
   return r;
+}
+
+namespace {
+
+void WriteHeader(std::ofstream& f) {
+  f << "offset_mm,angle_deg,x_mm,y_mm,p1_pa,p2_pa,p3_pa,p4_pa,pbar_pa,dpx_pa,dpy_pa,diff_pa,"
+       "g_world_deg,travel_world_deg,static_p1_pa,static_p2_pa,static_p3_pa,static_p4_pa,"
+       "static_pbar_pa,sealed1_mm2,sealed2_mm2,sealed3_mm2,sealed4_mm2,leak1_mm2,leak2_mm2,"
+       "leak3_mm2,leak4_mm2,lip_contacts\n";
+}
+
+void WriteRow(std::ofstream& f, double offset_mm, double angle_deg, const ProbeReading& r) {
+  char line[1024];
+  const double deg = 180.0 / M_PI;
+  std::snprintf(line, sizeof(line),
+                "%.4f,%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,"
+                "%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%d\n",
+                offset_mm, angle_deg, r.x_m * 1e3, r.y_m * 1e3, r.filtered_pa[0],
+                r.filtered_pa[1], r.filtered_pa[2], r.filtered_pa[3], r.pbar_pa, r.dpx_pa,
+                r.dpy_pa, std::hypot(r.dpx_pa, r.dpy_pa), r.g_world_rad * deg,
+                r.travel_world_rad * deg, r.static_pa[0], r.static_pa[1], r.static_pa[2],
+                r.static_pa[3], r.static_pbar_pa, r.sealed_area_mm2[0], r.sealed_area_mm2[1],
+                r.sealed_area_mm2[2], r.sealed_area_mm2[3], r.leak_area_mm2[0],
+                r.leak_area_mm2[1], r.leak_area_mm2[2], r.leak_area_mm2[3], r.lip_contacts);
+  f << line;
+}
+
+}  // namespace
+
+bool RunProbeStudy(EdgeProbe3d* probe, const ProbeStudySpec& spec,
+                   const std::function<void(double offset_mm, const ProbeReading&)>& edge_row,
+                   ProbeStudyResult* result, std::string* error) {
+  const std::filesystem::path out = spec.out_dir;
+  result->edge_csv = (out / "edge.csv").string();
+  result->disk_csv = (out / "disk.csv").string();
+  // Straight edge along world y at x = 0, plate at x < 0 with its top at z = 10 mm.
+  const double surface_z = 0.010, compression = spec.compression_mm * 1e-3;
+  std::ofstream edge(result->edge_csv);
+  WriteHeader(edge);
+  for (double off = spec.from_mm; off <= spec.to_mm + 1e-9; off += spec.step_mm) {
+    const ProbeReading r = probe->Read(-off * 1e-3, 0.0, 0.0, surface_z, compression, spec.settle_s);
+    WriteRow(edge, off, 0.0, r);
+    if (edge_row) edge_row(off, r);
+  }
+  // Around the disk (centre (0.15, 0), radius 35 mm) at a fixed inset.
+  std::ofstream disk(result->disk_csv);
+  WriteHeader(disk);
+  const double cx = 0.15, radius = 0.035;
+  for (double a = 0; a < 360 - 1e-9; a += spec.disk_step_deg) {
+    const double th = a * M_PI / 180;
+    const double r_m = radius - spec.disk_inset_mm * 1e-3;
+    const ProbeReading r = probe->Read(cx + r_m * std::cos(th), r_m * std::sin(th), 0.0,
+                                       surface_z, compression, spec.settle_s);
+    WriteRow(disk, spec.disk_inset_mm, a, r);
+    // Counter-clockwise tangent at angle th is th + 90 deg.
+    const double err = std::remainder(r.travel_world_rad - (th + M_PI / 2), 2 * M_PI) * 180 / M_PI;
+    result->worst_direction_deg = std::max(result->worst_direction_deg, std::fabs(err));
+  }
+  if (!edge || !disk) {
+    *error = spec.out_dir + ": cannot write edge.csv / disk.csv";
+    return false;
+  }
+  return true;
 }
 
 }  // namespace ssc

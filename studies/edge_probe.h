@@ -5,6 +5,7 @@
 #define SSC_STUDIES_EDGE_PROBE_H_
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -52,6 +53,27 @@ class EdgeProbe3d {
   int sensor_adr_ = -1;
   double tool_length_m_ = kToolCentreOffsetM;  // measured from the model at Create
 };
+
+// ssc probe as a library function: the cup placed across a straight edge (plate at world x < 0,
+// top at z = 10 mm) from from_mm to to_mm inside it, then round the 35 mm disk (centre
+// (0.15, 0) m) at a fixed inset; OUT/edge.csv and OUT/disk.csv, one row per placement.
+struct ProbeStudySpec {
+  double from_mm = -6, to_mm = 7, step_mm = 0.25;  // cup centre inside the edge
+  double compression_mm = 1.0;                     // lip plane below the surface top
+  double settle_s = 0.1;
+  double disk_inset_mm = 2.5, disk_step_deg = 15;
+  std::string out_dir;
+};
+
+struct ProbeStudyResult {
+  double worst_direction_deg = 0;  // round the disk: travel direction vs the CCW tangent
+  std::string edge_csv, disk_csv;
+};
+
+// `edge_row` (optional) sees each straight-edge placement. False + *error on a write failure.
+bool RunProbeStudy(EdgeProbe3d* probe, const ProbeStudySpec& spec,
+                   const std::function<void(double offset_mm, const ProbeReading&)>& edge_row,
+                   ProbeStudyResult* result, std::string* error);
 
 }  // namespace ssc
 

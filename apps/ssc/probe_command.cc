@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
@@ -11,32 +10,6 @@
 #include "studies/edge_probe.h"
 
 namespace ssc {
-namespace {
-
-void WriteHeader(std::ofstream& f) {
-  f << "offset_mm,angle_deg,x_mm,y_mm,p1_pa,p2_pa,p3_pa,p4_pa,pbar_pa,dpx_pa,dpy_pa,diff_pa,"
-       "g_world_deg,travel_world_deg,static_p1_pa,static_p2_pa,static_p3_pa,static_p4_pa,"
-       "static_pbar_pa,sealed1_mm2,sealed2_mm2,sealed3_mm2,sealed4_mm2,leak1_mm2,leak2_mm2,"
-       "leak3_mm2,leak4_mm2,lip_contacts\n";
-}
-
-void WriteRow(std::ofstream& f, double offset_mm, double angle_deg, const ProbeReading& r) {
-  char line[1024];
-  const double deg = 180.0 / M_PI;
-  std::snprintf(line, sizeof(line),
-                "%.4f,%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,"
-                "%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%d\n",
-                offset_mm, angle_deg, r.x_m * 1e3, r.y_m * 1e3, r.filtered_pa[0],
-                r.filtered_pa[1], r.filtered_pa[2], r.filtered_pa[3], r.pbar_pa, r.dpx_pa,
-                r.dpy_pa, std::hypot(r.dpx_pa, r.dpy_pa), r.g_world_rad * deg,
-                r.travel_world_rad * deg, r.static_pa[0], r.static_pa[1], r.static_pa[2],
-                r.static_pa[3], r.static_pbar_pa, r.sealed_area_mm2[0], r.sealed_area_mm2[1],
-                r.sealed_area_mm2[2], r.sealed_area_mm2[3], r.leak_area_mm2[0],
-                r.leak_area_mm2[1], r.leak_area_mm2[2], r.leak_area_mm2[3], r.lip_contacts);
-  f << line;
-}
-
-}  // namespace
 
 int RunProbe(int argc, char** argv) {
   cli::Command cmd("probe",
@@ -75,45 +48,32 @@ int RunProbe(int argc, char** argv) {
     std::fprintf(stderr, "ssc probe: %s\n", error.c_str());
     return 1;
   }
-  const std::filesystem::path out = out_dir;
-
-  // Straight edge along world y at x = 0, plate at x < 0 with its top at z = 10 mm.
-  const double surface_z = 0.010;
-  std::ofstream edge(out / "edge.csv");
-  WriteHeader(edge);
+  ProbeStudySpec spec;
+  spec.from_mm = from;
+  spec.to_mm = to;
+  spec.step_mm = step;
+  spec.compression_mm = compression;
+  spec.settle_s = settle;
+  spec.disk_inset_mm = inset;
+  spec.disk_step_deg = disk_step;
+  spec.out_dir = out_dir;
   std::printf("straight edge (cup centre inside the edge by offset):\n");
   std::printf("  offset_mm    pbar_pa   |dP|_pa  travel_deg  (travel 90 = along the edge, north)\n");
-  for (double off = from; off <= to + 1e-9; off += step) {
-    const ProbeReading r = probe->Read(-off * 1e-3, 0.0, 0.0, surface_z, compression * 1e-3, settle);
-    WriteRow(edge, off, 0.0, r);
+  ProbeStudyResult result;
+  const bool ok = RunProbeStudy(probe.get(), spec, [](double off, const ProbeReading& r) {
     std::printf("  %8.2f %10.2f %9.2f %10.1f\n", off, r.pbar_pa, std::hypot(r.dpx_pa, r.dpy_pa),
                 r.travel_world_rad * 180 / M_PI);
+  }, &result, &error);
+  if (!ok) {
+    std::fprintf(stderr, "ssc probe: %s\n", error.c_str());
+    return 1;
   }
-  edge.close();
-
-  // Around the disk (centre (0.15, 0), radius 35 mm) at a fixed inset.
-  std::ofstream disk(out / "disk.csv");
-  WriteHeader(disk);
-  const double cx = 0.15, radius = 0.035;
-  double worst_deg = 0;
-  for (double a = 0; a < 360 - 1e-9; a += disk_step) {
-    const double th = a * M_PI / 180;
-    const double r_m = radius - inset * 1e-3;
-    const ProbeReading r = probe->Read(cx + r_m * std::cos(th), r_m * std::sin(th), 0.0,
-                                       surface_z, compression * 1e-3, settle);
-    WriteRow(disk, inset, a, r);
-    // Counter-clockwise tangent at angle th is th + 90 deg.
-    double err = std::remainder(r.travel_world_rad - (th + M_PI / 2), 2 * M_PI) * 180 / M_PI;
-    worst_deg = std::max(worst_deg, std::fabs(err));
-  }
-  disk.close();
   std::printf("disk (radius 35 mm, inset %.2f mm): worst direction error vs the CCW tangent "
-              "%.1f deg\n", inset, worst_deg);
-  std::printf("wrote %s and %s\n", (out / "edge.csv").c_str(), (out / "disk.csv").c_str());
+              "%.1f deg\n", inset, result.worst_direction_deg);
+  std::printf("wrote %s and %s\n", result.edge_csv.c_str(), result.disk_csv.c_str());
   if (!no_plot) {
-    const std::string png = (out / "probe.png").string();
-    if (RunPlotScript("plot_probe.py", {(out / "edge.csv").string(), (out / "disk.csv").string(),
-                                        png})) {
+    const std::string png = (std::filesystem::path(out_dir) / "probe.png").string();
+    if (RunPlotScript("plot_probe.py", {result.edge_csv, result.disk_csv, png})) {
       std::printf("wrote %s\n", png.c_str());
     }
   }
