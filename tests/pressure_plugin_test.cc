@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -246,6 +247,66 @@ TEST(PressurePluginTest, MissingSiteOrLipIsReported) {
   // A site that does not exist is MuJoCo's compiler error; it must still fail the load.
   const std::string no_site = LoadEdited("objname=\"ssc_tool_site\"/>", "objname=\"no_such_site\"/>");
   EXPECT_NE(no_site.find("no_such_site"), std::string::npos) << no_site;
+}
+
+// The lip carrier on the gantry scene, pressed 1.5 N onto the disk and dragged 12 mm along it at
+// 20 mm/s: returns the carrier's shear along the motion (m) and tilt (rad) at the end.
+std::pair<double, double> ShearAndTiltWhileSliding(const std::string& config_xml) {
+  std::string error;
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("ssc_soft_lip_" + std::to_string(::getpid()));
+  const std::string scene = SceneWithToolConfig(SourceDir() + "/scenes/disk_benchmark_gantry.xml",
+                                                dir.string(), config_xml, &error);
+  ModelPtr m = LoadModel(scene, &error);
+  EXPECT_TRUE(m) << error;
+  DataPtr d = MakeData(m.get(), &error);
+  EXPECT_TRUE(d) << error;
+  std::filesystem::remove_all(dir);
+  if (!m || !d) return {0, 0};
+  mj_resetDataKeyframe(m.get(), d.get(), 0);
+  auto qpos_of = [&](const char* joint) {
+    return d->qpos[m->jnt_qposadr[mj_name2id(m.get(), mjOBJ_JOINT, joint)]];
+  };
+  // The home keyframe holds the lip plane 5 mm above the disk: lower it 6 mm (1 mm of lip
+  // compression, 1.5 N) and let it settle.
+  for (int i = 0; i < 3; ++i) d->ctrl[i] = d->qpos[i];  // gantry x, y, z servos
+  d->ctrl[2] -= 6e-3;
+  while (d->time < 0.8) mj_step(m.get(), d.get());
+  const double dt = m->opt.timestep;
+  for (double t = 0; t < 0.6; t += dt) {
+    d->ctrl[0] += 0.02 * dt;  // world +x = tool -y
+    mj_step(m.get(), d.get());
+  }
+  return {-qpos_of("ssc_flex_shear_y"), qpos_of("ssc_flex_tilt_x")};
+}
+
+TEST(PressurePluginTest, SoftLipShearsAndTiltsUnderFrictionOnlyWhenSwitchedOn) {
+  const auto rigid = ShearAndTiltWhileSliding("");
+  EXPECT_LT(std::fabs(rigid.first), 1e-5);  // locked: today's rigid cup
+  EXPECT_LT(std::fabs(rigid.second), 1e-4);
+  const auto soft = ShearAndTiltWhileSliding(
+      "<config key=\"lip_shear_n_per_mm\" value=\"1\"/>"
+      "<config key=\"lip_tilt_nmm_per_deg\" value=\"5\"/>");
+  // The lip lags the cup (friction ~ mu F_n ~ 1.5 N on 1 N/mm) and tilts a degree or more.
+  EXPECT_LT(soft.first, -0.5e-3);
+  EXPECT_GT(std::fabs(soft.second), 1.0 * M_PI / 180);
+}
+
+TEST(PressurePluginTest, TooStiffALipForTheTimeStepIsAClearError) {
+  std::string error;
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("ssc_stiff_lip_" + std::to_string(::getpid()));
+  const std::string scene = SceneWithToolConfig(
+      SourceDir() + "/scenes/disk_benchmark_gantry.xml", dir.string(),
+      "<config key=\"lip_shear_n_per_mm\" value=\"90\"/>", &error);
+  ModelPtr m = LoadModel(scene, &error);
+  std::filesystem::remove_all(dir);
+  if (m) {
+    DataPtr d = MakeData(m.get(), &error);
+    EXPECT_FALSE(d);
+  }
+  EXPECT_NE(error.find("lip_shear_n_per_mm"), std::string::npos) << error;
+  EXPECT_NE(error.find("time step"), std::string::npos) << error;
 }
 
 }  // namespace
