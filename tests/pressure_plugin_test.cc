@@ -251,18 +251,14 @@ TEST(PressurePluginTest, MissingSiteOrLipIsReported) {
 
 // The lip carrier on the gantry scene, pressed 1.5 N onto the disk and dragged 12 mm along it at
 // 20 mm/s: returns the carrier's shear along the motion (m) and tilt (rad) at the end.
-std::pair<double, double> ShearAndTiltWhileSliding(const std::string& config_xml) {
+std::pair<double, double> ShearAndTiltWhileSliding(const PluginConfig& config) {
   std::string error;
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("ssc_soft_lip_" + std::to_string(::getpid()));
-  const std::string scene = SceneWithToolConfig(SourceDir() + "/scenes/disk_benchmark_gantry.xml",
-                                                dir.string(), config_xml, &error);
-  ModelPtr m = LoadModel(scene, &error);
+  ModelPtr m = ToolModelVariant(SourceDir() + "/scenes/disk_benchmark_gantry.xml", config, &error);
   EXPECT_TRUE(m) << error;
+  if (!m) return {0, 0};
   DataPtr d = MakeData(m.get(), &error);
   EXPECT_TRUE(d) << error;
-  std::filesystem::remove_all(dir);
-  if (!m || !d) return {0, 0};
+  if (!d) return {0, 0};
   mj_resetDataKeyframe(m.get(), d.get(), 0);
   auto qpos_of = [&](const char* joint) {
     return d->qpos[m->jnt_qposadr[mj_name2id(m.get(), mjOBJ_JOINT, joint)]];
@@ -281,12 +277,11 @@ std::pair<double, double> ShearAndTiltWhileSliding(const std::string& config_xml
 }
 
 TEST(PressurePluginTest, SoftLipShearsAndTiltsUnderFrictionOnlyWhenSwitchedOn) {
-  const auto rigid = ShearAndTiltWhileSliding("");
+  const auto rigid = ShearAndTiltWhileSliding({});
   EXPECT_LT(std::fabs(rigid.first), 1e-5);  // locked: today's rigid cup
   EXPECT_LT(std::fabs(rigid.second), 1e-4);
-  const auto soft = ShearAndTiltWhileSliding(
-      "<config key=\"lip_shear_n_per_mm\" value=\"1\"/>"
-      "<config key=\"lip_tilt_nmm_per_deg\" value=\"5\"/>");
+  const auto soft =
+      ShearAndTiltWhileSliding({{"lip_shear_n_per_mm", "1"}, {"lip_tilt_nmm_per_deg", "5"}});
   // The lip lags the cup (friction ~ mu F_n ~ 1.5 N on 1 N/mm) and tilts a degree or more.
   EXPECT_LT(soft.first, -0.5e-3);
   EXPECT_GT(std::fabs(soft.second), 1.0 * M_PI / 180);
@@ -294,13 +289,8 @@ TEST(PressurePluginTest, SoftLipShearsAndTiltsUnderFrictionOnlyWhenSwitchedOn) {
 
 TEST(PressurePluginTest, TooStiffALipForTheTimeStepIsAClearError) {
   std::string error;
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("ssc_stiff_lip_" + std::to_string(::getpid()));
-  const std::string scene = SceneWithToolConfig(
-      SourceDir() + "/scenes/disk_benchmark_gantry.xml", dir.string(),
-      "<config key=\"lip_shear_n_per_mm\" value=\"90\"/>", &error);
-  ModelPtr m = LoadModel(scene, &error);
-  std::filesystem::remove_all(dir);
+  ModelPtr m = ToolModelVariant(SourceDir() + "/scenes/disk_benchmark_gantry.xml",
+                                {{"lip_shear_n_per_mm", "90"}}, &error);
   if (m) {
     DataPtr d = MakeData(m.get(), &error);
     EXPECT_FALSE(d);
