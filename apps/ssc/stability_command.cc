@@ -4,12 +4,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "runtime/mujoco_model.h"
-#include "runtime/trial.h"
+#include "studies/stability_study.h"
 
 namespace ssc {
 
@@ -29,6 +28,8 @@ int RunStabilityCommand(int argc, char** argv) {
   cmd.Number("dr-tol", &dr_tol, "tolerance on the mean radius", "mm", NumberRange::Closed(0, 100));
   cmd.Number("s-tol", &s_tol, "relative tolerance on the path length", "",
              NumberRange::Closed(0, 10));
+  long threads = 2;
+  cmd.Integer("threads", &threads, "worker threads", NumberRange::Closed(1, 256));
   cmd.OutputDir("out", &out_dir, "output directory");
   if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
   std::string error;
@@ -37,54 +38,35 @@ int RunStabilityCommand(int argc, char** argv) {
     std::fprintf(stderr, "ssc stability: %s\n", error.c_str());
     return 1;
   }
-  TrialConfig config;
-  config.law.step_mm = dl;
-  auto run = [&](int integrator, double dt) {
-    mjModel* m = mj_copyModel(nullptr, base.get());
-    m->opt.integrator = integrator;
-    m->opt.timestep = dt;
-    std::string e;
-    TrialResult r = RunTrial(m, config, false, &e);
-    mj_deleteModel(m);
-    return r;
-  };
-  const TrialResult ref = run(mjINT_RK4, 0.0005);
+  StabilitySpec spec;
+  spec.config.law.step_mm = dl;
+  spec.steps_ms = steps_ms;
+  spec.dr_tol_mm = dr_tol;
+  spec.s_tol = s_tol;
+  spec.threads = static_cast<int>(threads);
+  const StabilityResult result = RunStabilityStudy(base.get(), spec);
+  const StabilityRow& ref = result.reference;
   std::printf("reference (RK4, 0.5 ms): %s, r_mean %.2f mm, s %.1f mm\n", OutcomeName(ref.outcome),
-              ref.metrics.r_mean_mm, ref.metrics.s_mm);
-  const std::filesystem::path out = out_dir;
-  std::ofstream csv(out / "stability.csv");
-  if (!csv) {
-    std::fprintf(stderr, "ssc stability: cannot write %s\n", (out / "stability.csv").c_str());
-    return 1;
-  }
-  csv << "integrator,timestep_ms,outcome,r_mean_mm,s_mm,wall_s,stable,unchanged\n";
-  const struct {
-    int id;
-    const char* name;
-  } integrators[] = {{mjINT_EULER, "Euler"},
-                     {mjINT_RK4, "RK4"},
-                     {mjINT_IMPLICIT, "implicit"},
-                     {mjINT_IMPLICITFAST, "implicitfast"}};
+              ref.r_mean_mm, ref.s_mm);
   std::printf("%-13s %8s %-11s %9s %8s %7s  stable unchanged\n", "integrator", "dt (ms)",
               "outcome", "r_mean", "s (mm)", "wall s");
-  for (const auto& in : integrators) {
-    double largest_ok = 0;
-    for (double ms : steps_ms) {
-      const TrialResult r = run(in.id, ms * 1e-3);
-      const bool stable = r.outcome != Outcome::kUnstable;
-      const bool unchanged = stable && r.outcome == ref.outcome &&
-                             std::fabs(r.metrics.r_mean_mm - ref.metrics.r_mean_mm) <= dr_tol &&
-                             std::fabs(r.metrics.s_mm - ref.metrics.s_mm) <= s_tol * ref.metrics.s_mm;
-      if (unchanged) largest_ok = std::max(largest_ok, ms);
-      std::printf("%-13s %8.2f %-11s %9.2f %8.1f %7.2f  %-6s %s\n", in.name, ms, OutcomeName(r.outcome),
-                  r.metrics.r_mean_mm, r.metrics.s_mm, r.wall_time_s, stable ? "yes" : "NO",
-                  unchanged ? "yes" : "no");
-      csv << in.name << ',' << ms << ',' << OutcomeName(r.outcome) << ',' << r.metrics.r_mean_mm << ','
-          << r.metrics.s_mm << ',' << r.wall_time_s << ',' << stable << ',' << unchanged << '\n';
+  for (const auto& [name, largest_ms] : result.largest_unchanged_ms) {
+    for (const StabilityRow& r : result.rows) {
+      if (r.integrator != name) continue;
+      std::printf("%-13s %8.2f %-11s %9.2f %8.1f %7.2f  %-6s %s\n", r.integrator.c_str(),
+                  r.timestep_ms, OutcomeName(r.outcome), r.r_mean_mm, r.s_mm, r.wall_s,
+                  r.stable ? "yes" : "NO", r.unchanged ? "yes" : "no");
     }
-    std::printf("%s: largest time step with unchanged results: %.2f ms\n", in.name, largest_ok);
+    std::printf("%s: largest time step with unchanged results: %.2f ms\n", name.c_str(),
+                largest_ms);
   }
-  std::printf("wrote %s\n", (out / "stability.csv").c_str());
+  const std::filesystem::path csv = std::filesystem::path(out_dir) / "stability.csv";
+  std::ofstream(csv) << StabilityCsv(result);
+  if (!std::ifstream(csv)) {
+    std::fprintf(stderr, "ssc stability: cannot write %s\n", csv.c_str());
+    return 1;
+  }
+  std::printf("wrote %s\n", csv.c_str());
   return 0;
 }
 

@@ -1,0 +1,43 @@
+// ssc stability as a library function: the same disk trial with every integrator over a range
+// of time steps, against a 0.5 ms RK4 reference; per integrator, the largest step at which the
+// trial stays stable and its outcome, mean radius and path length stay within tolerance.
+// Trials run on the job runner (studies/job_runner.h).
+#ifndef SSC_STUDIES_STABILITY_STUDY_H_
+#define SSC_STUDIES_STABILITY_STUDY_H_
+
+#include <string>
+#include <vector>
+
+#include "runtime/trial.h"
+
+namespace ssc {
+
+struct StabilitySpec {
+  TrialConfig config;                              // the trial (e.g. dL 5 mm)
+  std::vector<double> steps_ms = {0.5, 1, 2, 4, 8, 16};
+  double dr_tol_mm = 0.3, s_tol = 0.05;            // mean radius (mm), path length (relative)
+  int threads = 1;
+};
+
+struct StabilityRow {
+  std::string integrator;
+  double timestep_ms = 0;
+  Outcome outcome = Outcome::kRunning;
+  double r_mean_mm = 0, s_mm = 0, wall_s = 0;
+  bool stable = false, unchanged = false;
+};
+
+struct StabilityResult {
+  StabilityRow reference;                 // RK4, 0.5 ms
+  std::vector<StabilityRow> rows;         // integrator by integrator, steps in the given order
+  std::vector<std::pair<std::string, double>> largest_unchanged_ms;  // per integrator
+};
+
+StabilityResult RunStabilityStudy(const mjModel* model, const StabilitySpec& spec);
+
+// integrator,timestep_ms,outcome,r_mean_mm,s_mm,wall_s,stable,unchanged
+std::string StabilityCsv(const StabilityResult& result);
+
+}  // namespace ssc
+
+#endif  // SSC_STUDIES_STABILITY_STUDY_H_
