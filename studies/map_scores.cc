@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "controller/pure/trial_outcome.h"
+
 namespace ssc {
 
 const char* MapClassName(MapClass c) {
@@ -74,13 +76,14 @@ bool ScoreMap(const std::vector<MapCell>& cells, const std::vector<CellTrials>& 
     CellScore c;
     c.cell = cells[i];
     for (std::size_t r = 0; r < out.size(); ++r) {
-      const bool ok = out[r] == "success";
+      const bool ok = out[r] == OutcomeName(Outcome::kSuccess);
       if (r < 3 && ok) ++c.successes_of_3;
       c.successes += ok ? 1 : 0;
-      if (out[r] == "failure_I") ++c.failure_off_edge;
-      if (out[r] == "failure_II") ++c.failure_grasp;
-      if (out[r] == "timeout") ++c.timeout;
-      if (out[r] == "unstable") ++c.unstable;
+      if (out[r] == OutcomeName(Outcome::kFailureOffEdge)) ++c.failure_off_edge;
+      if (out[r] == OutcomeName(Outcome::kFailureGrasp)) ++c.failure_grasp;
+      if (out[r] == OutcomeName(Outcome::kTimeout)) ++c.timeout;
+      if (out[r] == OutcomeName(Outcome::kUnstable)) ++c.unstable;
+      if (out[r] == OutcomeName(Outcome::kLostEdge)) ++c.lost_edge;
     }
     c.trials = static_cast<int>(out.size());
     c.twin_class = ClassOfSuccesses(c.successes_of_3);
@@ -90,10 +93,12 @@ bool ScoreMap(const std::vector<MapCell>& cells, const std::vector<CellTrials>& 
     c.expected_agreement = ClassProbability(c.cell.published, c.p_success);
     c.opposite = (c.cell.published == MapClass::kThreeOfThree && c.p_success <= 1.0 / 3.0 + 1e-12) ||
                  (c.cell.published == MapClass::kAtMostOne && c.p_success >= 0.9 - 1e-12);
-    const std::array<std::pair<int, const char*>, 4> modes = {{{c.failure_off_edge, "failure_I"},
-                                                               {c.failure_grasp, "failure_II"},
-                                                               {c.timeout, "timeout"},
-                                                               {c.unstable, "unstable"}}};
+    const std::array<std::pair<int, const char*>, 5> modes = {
+        {{c.failure_off_edge, OutcomeName(Outcome::kFailureOffEdge)},
+         {c.failure_grasp, OutcomeName(Outcome::kFailureGrasp)},
+         {c.timeout, OutcomeName(Outcome::kTimeout)},
+         {c.unstable, OutcomeName(Outcome::kUnstable)},
+         {c.lost_edge, OutcomeName(Outcome::kLostEdge)}}};
     int most = 0;
     for (const auto& [count, name] : modes) {
       if (count > most) {

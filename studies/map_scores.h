@@ -49,8 +49,9 @@ struct CellScore {
   std::array<double, 2> p_interval{};
   double expected_agreement = 0;  // P(3 twin trials land in the published class)
   bool opposite = false;
-  int failure_off_edge = 0, failure_grasp = 0, timeout = 0, unstable = 0;
-  // The most common failure ("failure_I", "failure_II", "timeout", "unstable"; "" if none).
+  int failure_off_edge = 0, failure_grasp = 0, timeout = 0, unstable = 0, lost_edge = 0;
+  // The most common failure (its OutcomeName: "failure_I", "failure_II", "timeout",
+  // "unstable", "lost_edge"; "" if none).
   std::string main_failure;
 };
 

@@ -82,7 +82,7 @@ bool EvaluateDynamic(const mjModel* m, const DynamicFitSpec& spec, const TrialCo
       if (cells[i].step_mm != 5.0 || cells[i].beta != t.beta || cells[i].pref_pa != t.pref_pa)
         continue;
       for (const MapTrial& r : results[i]) {
-        if (r.outcome != "success") continue;
+        if (r.outcome != OutcomeName(Outcome::kSuccess)) continue;
         sum += t.metric == MetricTarget::kDr ? r.dr_mm
                                             : (t.metric == MetricTarget::kSigmaR ? r.sigma_r_mm : r.s_c);
         ++n;
