@@ -199,7 +199,7 @@ TEST(FlowNetworkTest, SealedCupOnAPlateReadsTheClosedFormOfItsLipRoughness) {
   }
 }
 
-// ---- The defaults give the readings documented in docs/pneumatics.md ----
+// ---- The defaults give the readings documented in docs/testing.md ----
 //
 // The closed forms above hold for any parameters; this pins the documented defaults. Each
 // tolerance is half a unit of the documented last digit (the network is exact to 1e-9), and each

@@ -126,6 +126,20 @@ TEST(TrialTest, StartingFarOffTheEdgeLosesIt) {
   EXPECT_EQ(r.outcome, Outcome::kLostEdge) << r.detail;
 }
 
+TEST(TrialTest, ApproachStopsAtTheStartUpForce) {
+  // The approach ends when the tared F/T reads the start-up force: the 16 lip springs (93.75 N/m
+  // each, 1500 N/m together) are then compressed by F / 1500 N/m, so the lip plane is held that
+  // far below the disk's top (z = 10 mm). The servo's lag past the trigger adds a little:
+  // measured 0.71 mm at 1.0 N and 1.06 mm at 1.5 N against 0.67 and 1.00 mm; band 0.1 mm.
+  for (double force_n : {1.0, 1.5}) {
+    TrialConfig c;
+    c.approach_force_n = force_n;
+    c.timeout_s = 0.2;  // the follow phase is not under test
+    const TrialResult r = Trial(100, 2.0, 2.5, 1, c);
+    EXPECT_NEAR(0.010 - r.hold_height_m, force_n / 1500.0, 1e-4) << force_n << " N";
+  }
+}
+
 TEST(TrialTest, SameSeedSameTrajectory) {
   const TrialResult a = Trial(100, 2.0, 5.0, 7), b = Trial(100, 2.0, 5.0, 7);
   const TrialResult c = Trial(100, 2.0, 5.0, 8);
