@@ -145,6 +145,24 @@ Eigen::Vector3d TcpFromTool0(const Eigen::Isometry3d& X_frame_tool0, double tcp_
   return X_frame_tool0 * Eigen::Vector3d(0, 0, tcp_offset_m);
 }
 
+Eigen::Vector3d Tool0FromTcp(const Eigen::Vector3d& tcp, const Eigen::Quaterniond& q_frame_tool0,
+                             double tcp_offset_m) {
+  return tcp - q_frame_tool0.normalized() * Eigen::Vector3d(0, 0, tcp_offset_m);
+}
+
+void TransformProcessedLog(const Eigen::Isometry3d& X_new_old, ProcessedLog* log) {
+  const Eigen::Quaterniond q_new_old(X_new_old.rotation());
+  for (size_t i = 0; i < log->tcp_m.size(); ++i) {
+    const Eigen::Vector3d p =
+        X_new_old * Eigen::Vector3d(log->tcp_m[i][0], log->tcp_m[i][1], log->tcp_m[i][2]);
+    log->tcp_m[i] = {p.x(), p.y(), p.z()};
+  }
+  for (auto& q : log->quat) {
+    const Eigen::Quaterniond r = q_new_old * Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
+    q = {r.w(), r.x(), r.y(), r.z()};
+  }
+}
+
 Eigen::Isometry3d IsometryFromRowMajor(const std::array<double, 16>& m) {
   Eigen::Matrix3d r;
   r << m[0], m[1], m[2], m[4], m[5], m[6], m[8], m[9], m[10];

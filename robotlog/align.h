@@ -58,6 +58,13 @@ Eigen::Isometry3d PoseFromRow(const std::vector<double>& row);
 // Tool centre point: `tcp_offset_m` along tool0's z axis (the F/T transducer plus the cup:
 // 146 mm on the real robot), in the frame X_frame_tool0 is given in.
 Eigen::Vector3d TcpFromTool0(const Eigen::Isometry3d& X_frame_tool0, double tcp_offset_m);
+// The inverse: tool0's position from the tool centre point and tool0's orientation (w, x, y, z).
+Eigen::Vector3d Tool0FromTcp(const Eigen::Vector3d& tcp, const Eigen::Quaterniond& q_frame_tool0,
+                             double tcp_offset_m);
+
+// Moves a processed log into another frame: X_new_old applied to the TCP and to tool0's
+// orientation (times, pressures, F/T and PWM unchanged).
+void TransformProcessedLog(const Eigen::Isometry3d& X_new_old, ProcessedLog* log);
 
 // The transform hook for the robot base -> scene frame when it comes as a 4x4 homogeneous
 // matrix (row-major). The rotation block is orthonormalised.

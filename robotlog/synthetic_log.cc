@@ -85,7 +85,7 @@ RobotLog MakeRobotLog(const std::vector<TwinSample>& run_in, const LogPerturbati
   }
   for (double t : p.t_s) {
     const std::array<double, 4> vac = VacuumAt(run, t);
-    std::vector<double> row = {1};
+    std::vector<double> row = {4};  // ch: the number of chambers
     for (int c = 0; c < 4; ++c) {
       row.push_back(o.ambient_pa + o.sensor_offset_pa[c] - o.pressure_scale * vac[c] -
                     o.noise_pa * gauss(rng));
@@ -103,8 +103,7 @@ RobotLog MakeRobotLog(const std::vector<TwinSample>& run_in, const LogPerturbati
     if (!end && o.drop_fraction > 0 && unit(rng) < o.drop_fraction) continue;
     const Eigen::Quaterniond q_scene(s.quat[0], s.quat[1], s.quat[2], s.quat[3]);
     const Eigen::Vector3d tcp(s.tcp_m[0], s.tcp_m[1], s.tcp_m[2]);
-    const Eigen::Vector3d tool0_scene =
-        tcp - q_scene.normalized() * Eigen::Vector3d(0, 0, o.tcp_offset_m);
+    const Eigen::Vector3d tool0_scene = Tool0FromTcp(tcp, q_scene, o.tcp_offset_m);
     const Eigen::Vector3d tool0 = X_base_scene * tool0_scene;
     const Eigen::Quaterniond q = q_base_scene * q_scene;
     log.tool_pose.t_s.push_back(s.t_s + o.pose_delay_s);

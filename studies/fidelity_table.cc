@@ -6,7 +6,8 @@
 #include <map>
 #include <sstream>
 
-#include "compare/log_replay.h"
+#include "compare/replay.h"
+#include "compare/twin_log.h"
 #include "geometry/dimensions.h"
 
 namespace ssc {
@@ -67,7 +68,9 @@ bool RunFidelityTable(const TrialConfig& trial_config, const TrialResult& trial,
   LoadError load_error;
   ProcessOptions po;
   po.moving_average = 1;
-  if (!ProcessRobotLog(RobotLogFromTrial(trial, kToolCentreOffsetM, 1, 0), po, &path,
+  LogPerturbation as_recorded;
+  as_recorded.in_air_s = 0;  // the trial's approach starts in air
+  if (!ProcessRobotLog(MakeRobotLog(TwinRunFromTrial(trial, trial_config), as_recorded), po, &path,
                        &load_error)) {
     *error = load_error.ToString();
     return false;

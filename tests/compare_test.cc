@@ -1,4 +1,6 @@
-// The twin against a robot log made from a twin run: the replay must recover what was changed.
+// The twin against robot logs written exactly as the lab records them (tests/lab_log_generator):
+// every form must open unchanged, land the disk where the lab had it, and replay must recover
+// what was changed; a replay that misses every object is an error, never a report.
 #include <cmath>
 #include <filesystem>
 
@@ -6,17 +8,21 @@
 
 #include <gtest/gtest.h>
 
-#include "compare/log_replay.h"
+#include "compare/comparison.h"
+#include "lab_log_generator.h"
 #include "runtime/mujoco_model.h"
-#include "geometry/dimensions.h"
 #include "studies/tool_variants.h"
 
 namespace ssc {
 namespace {
 
+namespace fs = std::filesystem;
+
 struct Fixture {
-  ModelPtr gantry, replay;
+  ModelPtr gantry;
+  TrialConfig config;
   TrialResult trial;
+  SceneObject disk;
 };
 
 const Fixture& Shared() {
@@ -24,91 +30,183 @@ const Fixture& Shared() {
     Fixture x;
     std::string error;
     x.gantry = LoadModel(SourceDir() + "/scenes/disk_benchmark_gantry.xml", &error);
-    x.replay = LoadModel(SourceDir() + "/scenes/disk_replay.xml", &error);
-    TrialConfig c;
-    c.law.step_mm = 7.5;
-    x.trial = RunTrial(x.gantry.get(), c, true, &error);
+    x.config.law.step_mm = 7.5;
+    x.trial = RunTrial(x.gantry.get(), x.config, true, &error);
+    x.disk = FindSceneObjects(x.gantry.get()).front();
     return x;
   }();
   return f;
 }
 
-ReplayComparison Replay(double scale, double offset_pa) {
+std::string TempDir(const std::string& tag) {
+  const fs::path p = fs::temp_directory_path() /
+                     ("ssc_compare_" + tag + "_" + std::to_string(::getpid()));
+  fs::remove_all(p);
+  fs::create_directories(p);
+  return p.string();
+}
+
+testing::LabForms Generate(const std::string& tag, const LabSetup& setup,
+                           const LogPerturbation& perturbation) {
   const Fixture& f = Shared();
-  const RobotLog robot = RobotLogFromTrial(f.trial, kToolCentreOffsetM, scale, offset_pa);
-  ProcessOptions o;
-  o.moving_average = 1;  // the twin's log already carries the host-filtered values
-  ProcessedLog log;
-  LoadError e;
-  EXPECT_TRUE(ProcessRobotLog(robot, o, &log, &e)) << e.ToString();
-  ReplayComparison c;
+  testing::LabForms forms;
   std::string error;
-  EXPECT_TRUE(ReplayLog(f.replay.get(), log, kToolCentreOffsetM, &c, &error)) << error;
-  return c;
+  EXPECT_TRUE(testing::WriteLabForms(f.trial, f.config, f.disk, setup, perturbation,
+                                     TempDir(tag), &forms, &error))
+      << error;
+  return forms;
 }
 
-TEST(CompareTest, ReplayOfAnUnchangedRunAgrees) {
+CompareResult Compare(const std::string& log, const std::string& out, bool closed_loop = false,
+                      CompareOptions o = CompareOptions()) {
+  o.log_path = log;
+  o.out_dir = out;
+  o.processing.moving_average = 1;  // the twin's pressures already carry the host's filter
+  o.closed_loop = closed_loop;
+  CompareResult r;
+  std::string error;
+  EXPECT_TRUE(RunComparison(o, &r, &error)) << log << ": " << error;
+  return r;
+}
+
+TEST(CompareTest, EveryLabFormOpensUnchangedAndReplaysTheRun) {
   ASSERT_EQ(Shared().trial.outcome, Outcome::kSuccess);
-  const ReplayComparison c = Replay(1.0, 0.0);
-  for (int k = 0; k < 4; ++k) {
-    EXPECT_GT(c.correlation[k], 0.95) << k;
-    EXPECT_NEAR(c.mean_ratio[k], 1.0, 0.05) << k;
+  const testing::LabForms forms = Generate("plain", LabSetup(), LogPerturbation());
+  for (const std::string& log :
+       {forms.newer_dir, forms.newer_file, forms.older_dir, forms.mat_path}) {
+    const CompareResult r = Compare(log, TempDir("out_plain"));
+    // The disk found where the lab's script had it, from the log alone.
+    EXPECT_TRUE(r.setup.object.known) << log;
+    EXPECT_NEAR(r.setup.object.x_m, kLabDiskCentreX, 0.5e-3) << log;
+    EXPECT_NEAR(r.setup.object.y_m, kLabDiskCentreY, 0.5e-3) << log;
+    EXPECT_LT(r.setup.reach.closest_m, 1e-3) << log;
+    for (int k = 0; k < 4; ++k) {
+      EXPECT_GT(r.replay.correlation[k], 0.95) << log << " chamber " << k;
+      EXPECT_NEAR(r.replay.mean_ratio[k], 1.0, 0.05) << log << " chamber " << k;
+    }
+    EXPECT_LT(r.replay.direction_median_deg, 5.0) << log;
+    EXPECT_GT(r.replay.direction_samples, 100) << log;
   }
-  EXPECT_LT(std::fabs(c.pbar_bias_pa), 20.0);
-  EXPECT_LT(c.direction_median_deg, 5.0);
-  EXPECT_GT(c.direction_samples, 100);
+  // The .mat adds the script's arguments and its history: the twin's controller at the same
+  // poses agrees with the logged iterations.
+  const CompareResult r = Compare(forms.mat_path, TempDir("out_mat"));
+  ASSERT_TRUE(r.history.ran) << r.history_warning;
+  EXPECT_EQ(r.history.iterations, static_cast<int>(forms.log.args.history.size()));
+  EXPECT_NEAR(r.history.time_offset_s, 1.0, 0.02);  // the 1 s in-air lead
+  EXPECT_LT(r.history.match_rms_mm, 0.1);
+  EXPECT_LT(r.history.r_p_median_deg, 5.0);
+  EXPECT_LT(r.history.r_p_final_median_deg, 5.0);
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(r.history.p_mean_ratio[k], 1.0, 0.05) << k;
+  EXPECT_LT(r.history.f_normal_rms_n, 0.5);
 }
 
-TEST(CompareTest, ReplayRecoversAKnownScaleAndOffset) {
-  // The "robot" reads 30 % more vacuum: the twin's mean is 1/1.3 of the log's.
-  const ReplayComparison scaled = Replay(1.3, 0.0);
-  for (int k = 0; k < 4; ++k) EXPECT_NEAR(scaled.mean_ratio[k], 1 / 1.3, 0.05) << k;
-  // A constant 40 Pa sensor bias is removed by the in-air offset, as on the robot host.
-  const ReplayComparison offset = Replay(1.0, 40.0);
-  EXPECT_NEAR(offset.pbar_bias_pa, Replay(1.0, 0.0).pbar_bias_pa, 3.0);
+TEST(CompareTest, KnownPerturbationsAreRecoveredFromEachForm) {
+  // The "robot": 30 % more sensitive sensors with offsets and noise, sampled at 166 Hz, a pose
+  // 5 ms late, the disk 8 cm away from where the lab had it and 3 mm higher, the history's
+  // clock started 2.5 s later.
+  LabSetup setup;
+  setup.disk_x_m = -0.55;
+  setup.disk_y_m = 0.12;
+  setup.disk_top_z_m = 0.008;
+  setup.history_time_offset_s = 2.5;
+  LogPerturbation p;
+  p.pressure_scale = 1.3;
+  p.sensor_offset_pa = {30, -40, 50, 10};
+  p.noise_pa = 3;
+  p.pressure_rate_hz = 166;
+  p.pose_delay_s = 0.005;
+  p.seed = 11;
+  const testing::LabForms forms = Generate("perturbed", setup, p);
+  for (const std::string& log : {forms.newer_dir, forms.older_dir, forms.mat_path}) {
+    const CompareResult r = Compare(log, TempDir("out_perturbed"));
+    EXPECT_NEAR(r.setup.object.x_m, -0.55, 1e-3) << log;
+    EXPECT_NEAR(r.setup.object.y_m, 0.12, 1e-3) << log;
+    EXPECT_NEAR(r.setup.object.top_z_m, 0.008, 1e-3) << log;
+    // The gain shows as the ratio of means; the offsets are removed by the in-air offset.
+    for (int k = 0; k < 4; ++k) {
+      EXPECT_NEAR(r.replay.mean_ratio[k], 1 / 1.3, 0.05) << log << " chamber " << k;
+    }
+    EXPECT_LT(r.replay.direction_median_deg, 10.0) << log;
+  }
+  const CompareResult r = Compare(forms.mat_path, TempDir("out_perturbed_mat"));
+  ASSERT_TRUE(r.history.ran) << r.history_warning;
+  EXPECT_NEAR(r.history.time_offset_s, 1.0 - 2.5, 0.02);
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(r.history.p_mean_ratio[k], 1 / 1.3, 0.05) << k;
+}
+
+TEST(CompareTest, AReplayThatMissesEveryObjectIsAnError) {
+  const testing::LabForms forms = Generate("miss", LabSetup(), LogPerturbation());
+  // The object said to be where the UR Base frame would put it: the path lands 1.2 m away.
+  CompareOptions o;
+  o.log_path = forms.newer_dir;
+  o.out_dir = TempDir("out_miss");
+  o.object_pose = {0.63, -0.097, 0.005};
+  CompareResult r;
+  std::string error;
+  EXPECT_FALSE(RunComparison(o, &r, &error));
+  EXPECT_NE(error.find("never comes within reach"), std::string::npos) << error;
+  EXPECT_NE(error.find("closest approach"), std::string::npos) << error;
+  EXPECT_NE(error.find("to 'disk'"), std::string::npos) << error;
+  EXPECT_NE(error.find("log poses in base_link, object pose from --object-pose"),
+            std::string::npos)
+      << error;
+  EXPECT_FALSE(fs::exists(fs::path(o.out_dir) / "report.json"));  // no report of 0 Pa
+  // The same pose given right: replay runs.
+  o.object_pose = {kLabDiskCentreX, kLabDiskCentreY, 0.005};
+  EXPECT_TRUE(RunComparison(o, &r, &error)) << error;
+  EXPECT_GT(r.replay.correlation[0], 0.9);
+}
+
+TEST(CompareTest, ClosedLoopTakesItsParametersFromTheMatAlone) {
+  // A run at dL = 5 mm, P_ref 150 Pa; the command line's defaults (7.5 mm, 100 Pa) must not be
+  // used: the file's d_lat (metres) and Pref are.
+  const Fixture& f = Shared();
+  TrialConfig c;
+  c.law.step_mm = 5;
+  c.law.p_ref_pa = 150;
+  std::string error;
+  const TrialResult run = RunTrial(f.gantry.get(), c, true, &error);
+  ASSERT_EQ(run.outcome, Outcome::kSuccess) << run.detail;
+  testing::LabForms forms;
+  ASSERT_TRUE(testing::WriteLabForms(run, c, f.disk, LabSetup(), LogPerturbation(),
+                                     TempDir("loop"), &forms, &error))
+      << error;
+  CompareOptions o;
+  o.loop_config.seed = 9;  // another noise realisation of the same controller
+  const CompareResult r = Compare(forms.mat_path, TempDir("out_loop"), true, o);
+  ASSERT_TRUE(r.closed.ran);
+  EXPECT_NE(r.closed.parameters.find("P_ref, beta, dL (d_lat)"), std::string::npos)
+      << r.closed.parameters;
+  EXPECT_EQ(r.closed.twin_outcome, "success");
+  EXPECT_NEAR(r.closed.twin.dr_mm, r.closed.log.dr_mm, 0.5);
+  // At 7.5 mm the twin would take about 2/3 of the time.
+  EXPECT_NEAR(r.closed.twin.duration_s, r.closed.log.duration_s, 0.15 * r.closed.log.duration_s);
+  EXPECT_LT(r.closed.path_distance_mean_mm, 1.5);
+  ASSERT_TRUE(r.history.ran);
+  EXPECT_LT(r.history.r_p_median_deg, 5.0);
 }
 
 TEST(CompareTest, ReplayExposesARobotWithAStrongerPump) {
-  // The "robot": the twin with a 40 % stronger pump, logged with 8 Pa of extra noise. Replayed
-  // in the default twin, the twin must read less vacuum than the log wherever the cup seals
-  // (ratio of means 0.87, against 1.00 for an unchanged run), and still agree on direction.
+  // The "robot": the twin with a 40 % stronger pump, logged with 8 Pa of noise. Replayed in the
+  // default twin, the twin reads less vacuum than the log wherever the cup seals (ratio of
+  // means below 0.92, against 1.00 +- 0.05 unchanged) and still agrees on direction.
   std::string error;
   ModelPtr strong = ToolModelVariant(SourceDir() + "/scenes/disk_benchmark_gantry.xml",
                                      {{"pump_free_flow_lpm", "18.06"}}, &error);
   ASSERT_TRUE(strong) << error;
-  TrialConfig c;
-  c.law.step_mm = 7.5;
-  const TrialResult robot_run = RunTrial(strong.get(), c, true, &error);
-  ProcessOptions o;
-  o.moving_average = 1;
-  ProcessedLog log;
-  LoadError e;
-  ASSERT_TRUE(ProcessRobotLog(RobotLogFromTrial(robot_run, kToolCentreOffsetM, 1.0, 0.0, 101325.0, 8.0, 5), o,
-                              &log, &e)) << e.ToString();
-  ReplayComparison cmp;
-  ASSERT_TRUE(ReplayLog(Shared().replay.get(), log, kToolCentreOffsetM, &cmp, &error)) << error;
-  for (int k = 0; k < 4; ++k) EXPECT_LT(cmp.mean_ratio[k], 0.92) << k;  // unchanged: 1 +- 0.05
-  EXPECT_LT(cmp.pbar_bias_pa, -20.0);
-  EXPECT_LT(cmp.direction_median_deg, 10.0);
-}
-
-TEST(CompareTest, ClosedLoopFromTheLogsStartMatchesTheSameController) {
   const Fixture& f = Shared();
-  const RobotLog robot = RobotLogFromTrial(f.trial, kToolCentreOffsetM, 1.0, 0.0);
-  ProcessOptions o;
-  o.moving_average = 1;
-  ProcessedLog log;
-  LoadError e;
-  ASSERT_TRUE(ProcessRobotLog(robot, o, &log, &e));
-  TrialConfig c;
-  c.law.step_mm = 7.5;
-  c.seed = 9;  // another noise realisation of the same controller
-  ClosedLoopComparison closed;
-  std::string error;
-  ASSERT_TRUE(CompareClosedLoop(f.gantry.get(), log, c, &closed, &error)) << error;
-  EXPECT_EQ(closed.twin_outcome, "success");
-  EXPECT_NEAR(closed.twin.dr_mm, closed.log.dr_mm, 0.5);
-  EXPECT_LT(closed.path_distance_mean_mm, 1.5);
+  const TrialResult robot_run = RunTrial(strong.get(), f.config, true, &error);
+  LogPerturbation p;
+  p.noise_pa = 8;
+  p.seed = 5;
+  testing::LabForms forms;
+  ASSERT_TRUE(testing::WriteLabForms(robot_run, f.config, f.disk, LabSetup(), p,
+                                     TempDir("strong_forms"), &forms, &error))
+      << error;
+  const CompareResult r = Compare(forms.mat_path, TempDir("out_strong"));
+  for (int k = 0; k < 4; ++k) EXPECT_LT(r.replay.mean_ratio[k], 0.92) << k;
+  EXPECT_LT(r.replay.pbar_bias_pa, -20.0);
+  EXPECT_LT(r.replay.direction_median_deg, 10.0);
 }
 
 }  // namespace

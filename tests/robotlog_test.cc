@@ -139,7 +139,7 @@ TEST(RobotLogTest, TopicCsvFilesAreWrittenAsTheLabLoggerWritesThem) {
             "ROStimestamp,/SensorPacket.ch,/SensorPacket.data[0],/SensorPacket.data[1],"
             "/SensorPacket.data[2],/SensorPacket.data[3]");
   // ns stamp, int ch, then the float32 tuple's text: ", " inside, "," outside.
-  EXPECT_EQ(Line(p, 2), "1726180212003000000,1,101325.0, 101325.0, 101325.0, 101325.0");
+  EXPECT_EQ(Line(p, 2), "1726180212003000000,4,101325.0, 101325.0, 101325.0, 101325.0");
   const std::string pose = ReadText(dir / ("newer/dataLog_" + stamp + "__endEffectorPose.csv"));
   EXPECT_EQ(Line(pose, 1),
             "ROStimestamp,/endEffectorPose.pose.orientation.w,/endEffectorPose.pose.orientation.x,"
@@ -165,7 +165,7 @@ TEST(RobotLogTest, TopicCsvFilesAreWrittenAsTheLabLoggerWritesThem) {
   EXPECT_EQ(text::PyFloat(123.0), "123.0");
 }
 
-void ExpectSameAsWritten(const RobotLog& log, const RobotLog& back, LoggerVersion version) {
+void ExpectSameAsWritten(const RobotLog& log, const RobotLog& back) {
   EXPECT_EQ(back.t0_ns, log.t0_ns);
   ASSERT_EQ(back.pressure_abs.size(), log.pressure_abs.size());
   for (size_t i = 0; i < log.pressure_abs.size(); ++i) {
@@ -174,7 +174,7 @@ void ExpectSameAsWritten(const RobotLog& log, const RobotLog& back, LoggerVersio
       EXPECT_EQ(back.pressure_abs.rows[i][c],
                 static_cast<double>(static_cast<float>(log.pressure_abs.rows[i][c])));
     }
-    EXPECT_EQ(back.pressure_abs.rows[i][0], version == LoggerVersion::kOlder ? 4 : 1);
+    EXPECT_EQ(back.pressure_abs.rows[i][0], 4);
   }
   ExpectSameStream(log.tool_pose, back.tool_pose, "pose");
   ExpectSameStream(log.ft, back.ft, "ft");
@@ -195,11 +195,11 @@ TEST(RobotLogTest, TopicCsvRecordingReadsFromItsFolderOrAnyOfItsFiles) {
     RobotLog back;
     LoadError e;
     ASSERT_TRUE(LoadTopicCsvRecording(folder, &back, &e)) << e.ToString();
-    ExpectSameAsWritten(log, back, version);
+    ExpectSameAsWritten(log, back);
     EXPECT_EQ(back.pressure_abs.lines.front(), 2);  // after the header
     for (const std::string& file : files) {
       ASSERT_TRUE(LoadTopicCsvRecording(file, &back, &e)) << file << ": " << e.ToString();
-      ExpectSameAsWritten(log, back, version);
+      ExpectSameAsWritten(log, back);
     }
     TopicTable table;
     ASSERT_TRUE(ReadTopicCsv(files[0], &table, &e)) << e.ToString();

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Install everything the project needs on a fresh Debian/Ubuntu machine and build it.
 #   - Debian packages: compiler, CMake, Eigen, GLFW, tinyxml2, GoogleTest, Xvfb + Mesa (for
-#     off-screen screenshots), matio (robot .mat logs), CLI11 (command line), python3-venv, Open MPI (studies under
+#     off-screen screenshots), matio (robot .mat logs), nlohmann-json (reports), CLI11 (command line), python3-venv, Open MPI (studies under
 #     mpirun; optional at build time).
 #   - .venv/ with the MuJoCo wheel pinned in requirements.txt (plus matplotlib for plots).
 #   - CMake configure + build into build/ (executables in build/bin/).
@@ -13,7 +13,7 @@ ROOT="$(pwd)"
 APT_PACKAGES=(build-essential cmake pkg-config python3 python3-venv python3-pip
   nlohmann-json3-dev libnlopt-dev libnlopt-cxx-dev
   libeigen3-dev libglfw3-dev libtinyxml2-dev libgtest-dev libgmock-dev libmatio-dev
-  libstb-dev libcli11-dev xvfb xauth libgl1-mesa-dri libglx-mesa0 libgl1-mesa-dev
+  libstb-dev libcli11-dev nlohmann-json3-dev xvfb xauth libgl1-mesa-dri libglx-mesa0 libgl1-mesa-dev
   libopenmpi-dev openmpi-bin)
 
 missing=()

@@ -1,12 +1,12 @@
-// ssc compare: the twin against a robot log (replay of the logged tool path).
+// ssc compare: the twin against a robot log (compare/comparison.h does the work).
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
-#include "compare/log_replay.h"
-#include "runtime/mujoco_model.h"
+#include "compare/comparison.h"
 
 namespace ssc {
 
@@ -15,75 +15,83 @@ int RunCompareCommand(int argc, char** argv) {
       "compare",
       "ssc compare LOG [options]: replays the logged tool path in the twin and compares the\n"
       "chamber pressures with the logged ones (RMS in Pa and log10, correlation, mean-pressure\n"
-      "error, direction error of the controller's g). LOG: a directory of the robot's per-topic\n"
-      "CSVs (pressure.csv, tool_pose.csv, ft.csv, pwm.csv), the merged .mat file, or a plain CSV\n"
-      "(docs/robot_logs.md). Writes OUT/report.md, report.json, series.csv and compare.png.");
-  std::string log_path, scene_name = "disk_replay", loop_scene = "disk_benchmark_gantry",
-                        out_dir = "out/compare";
-  ProcessOptions options;
+      "error, direction error of the controller's g), and the lab controller's iterations\n"
+      "(edgeFollowing_history) with the twin's at the same poses. LOG, unchanged as the lab\n"
+      "records it: a recording folder of dataLog_<stamp>_<topic>.csv files or any one of them\n"
+      "(either logger version), a DataLog_*.mat, or a plain CSV (docs/robot_logs.md).\n"
+      "Writes OUT/report.md, report.json, series.csv, history.csv and compare.png.");
+  CompareOptions o;
   long average = 7;
-  double tcp_mm = 146;
-  bool closed_loop = false, no_plot = false;
-  TrialConfig tc;
-  cmd.Positional("LOG", &log_path, "the robot log (directory, .mat or plain CSV)", true);
-  cmd.Text("scene", &scene_name, "replay scene with a mocap body 'probe' holding the tool");
-  cmd.OutputDir("out", &out_dir, "output directory");
-  options.offset_window_s = 1.0;
-  cmd.Number("offset-window", &options.offset_window_s,
+  double tcp_mm = kToolCentreOffsetM * 1e3;
+  std::string frame = "base_link";
+  bool no_plot = false;
+  cmd.Positional("LOG", &o.log_path, "the robot log (folder, one of its files, .mat, plain CSV)",
+                 true);
+  cmd.Text("scene", &o.scene, "replay scene with a mocap body 'probe' holding the tool");
+  cmd.OutputDir("out", &o.out_dir, "output directory");
+  cmd.Number("offset-window", &o.processing.offset_window_s,
              "in-air offset: mean absolute pressure over the first ... of the log", "s",
              NumberRange::Positive(60));
   cmd.Integer("average", &average, "host moving-average window applied to the log, samples",
               NumberRange::Closed(1, 1000));
   cmd.Number("tcp-offset", &tcp_mm, "tool centre point along the tool0 z axis", "mm",
              NumberRange::Closed(0, 1000));
-  cmd.Flag("closed-loop", &closed_loop, "also run the twin's controller from the log's start pose");
-  cmd.Text("loop-scene", &loop_scene, "disk scene for the closed loop");
-  cmd.Number("pref", &tc.law.p_ref_pa, "closed loop: the log's P_ref", "Pa",
+  cmd.Choice("log-frame", &frame,
+             "frame of the lab log's poses: ROS base_link (the lab's tf) or the UR base (RTDE)",
+             {"base_link", "base"});
+  cmd.NumberList("object-pose", &o.object_pose,
+                 "the object in the log's frame: centre x,y and top z (m) [,yaw (deg)]; "
+                 "default: from the log (disk benchmark)",
+                 "m / deg", NumberRange::Closed(-360, 360), true);
+  cmd.Flag("closed-loop", &o.closed_loop,
+           "also run the twin's controller from the log's start (P_ref, beta, dL, force band "
+           "from a .mat's script arguments)");
+  cmd.Text("loop-scene", &o.loop_scene, "disk scene for the closed loop and the lip depth");
+  TrialConfig& tc = o.loop_config;
+  cmd.Number("pref", &tc.law.p_ref_pa, "closed loop: P_ref when the file has none", "Pa",
              NumberRange::Positive(1e6).OpenHigh());
-  cmd.Number("beta", &tc.law.beta, "closed loop: the log's beta", "", NumberRange::Closed(0, 100));
-  cmd.Number("step", &tc.law.step_mm, "closed loop: the log's step", "mm",
+  cmd.Number("beta", &tc.law.beta, "closed loop: beta when the file has none", "",
+             NumberRange::Closed(0, 100));
+  cmd.Number("step", &tc.law.step_mm, "closed loop: the step dL when the file has none", "mm",
              NumberRange::Positive(100));
+  cmd.Flag("override-law", &o.override_law,
+           "closed loop: use --pref, --beta, --step even when the file records them");
   cmd.Seed("seed", &tc.seed, "closed loop: noise seed");
   cmd.Flag("no-plot", &no_plot, "skip the PNG plot");
   cmd.Check([&tc]() { return tc.Validate(); });
-  if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
-  options.moving_average = static_cast<int>(average);
-  options.tcp_offset_m = tcp_mm * 1e-3;
-  ProcessedLog log;
-  LoadError load_error;
-  if (!LoadAnyLog(log_path, options, &log, &load_error)) {
-    std::fprintf(stderr, "ssc compare: %s\n", load_error.ToString().c_str());
-    return 1;
-  }
-  std::string error;
-  ModelPtr model = LoadModel(ResolveScenePath(scene_name), &error);
-  if (!model) {
-    std::fprintf(stderr, "ssc compare: %s\n", error.c_str());
-    return 1;
-  }
-  ReplayComparison c;
-  if (!ReplayLog(model.get(), log, options.tcp_offset_m, &c, &error)) {
-    std::fprintf(stderr, "ssc compare: %s\n", error.c_str());
-    return 1;
-  }
-  ClosedLoopComparison closed;
-  if (closed_loop) {
-    ModelPtr loop = LoadModel(ResolveScenePath(loop_scene), &error);
-    if (!loop || !CompareClosedLoop(loop.get(), log, tc, &closed, &error)) {
-      std::fprintf(stderr, "ssc compare: closed loop: %s\n", error.c_str());
-      return 1;
+  cmd.Check([&o]() -> std::string {
+    if (o.object_pose.empty()) return "";
+    if (o.object_pose.size() != 3 && o.object_pose.size() != 4) {
+      return "--object-pose takes x,y,z or x,y,z,yaw (got " +
+             std::to_string(o.object_pose.size()) + " numbers)";
     }
-    std::printf("closed loop: twin %s; dr %.2f vs %.2f mm (log), sigma_r %.2f vs %.2f mm, "
-                "s_c %.3f vs %.3f, duration %.1f vs %.1f s; path distance mean %.2f, max %.2f mm\n",
-                closed.twin_outcome.c_str(), closed.twin.dr_mm, closed.log.dr_mm,
-                closed.twin.sigma_r_mm, closed.log.sigma_r_mm, closed.twin.s_c, closed.log.s_c,
-                closed.twin.duration_s, closed.log.duration_s, closed.path_distance_mean_mm,
-                closed.path_distance_max_mm);
-  }
-  if (!WriteComparisonReport(out_dir, log_path, c, &closed, &error)) {
+    for (int k = 0; k < 3; ++k) {
+      if (std::fabs(o.object_pose[k]) > 5) {
+        return "--object-pose: x, y, z are metres within 5 m of the robot base (got " +
+               std::to_string(o.object_pose[k]) + ": millimetres?)";
+      }
+    }
+    return "";
+  });
+  if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
+  o.processing.moving_average = static_cast<int>(average);
+  o.processing.tcp_offset_m = tcp_mm * 1e-3;
+  ParseLogFrame(frame, &o.frame);
+
+  CompareResult r;
+  std::string error;
+  if (!RunComparison(o, &r, &error)) {
     std::fprintf(stderr, "ssc compare: %s\n", error.c_str());
     return 1;
   }
+  const ComparisonSetup& s = r.setup;
+  std::printf("%s, frame %s; scene object '%s', closest approach %.1f mm\n", s.format.c_str(),
+              s.log_frame.c_str(), s.scene_object.name.c_str(), s.reach.closest_m * 1e3);
+  if (s.object.known) {
+    std::printf("object in the log frame: (%.4f, %.4f) m, top %.4f m, from %s\n", s.object.x_m,
+                s.object.y_m, s.object.top_z_m, s.object.source.c_str());
+  }
+  const ReplayComparison& c = r.replay;
   for (int k = 0; k < 4; ++k) {
     std::printf("chamber %d: RMS %.1f Pa (%.3f in log10), correlation %.3f, mean ratio %.3f\n",
                 k + 1, c.rms_pa[k], c.rms_log10[k], c.correlation[k], c.mean_ratio[k]);
@@ -91,11 +99,32 @@ int RunCompareCommand(int argc, char** argv) {
   std::printf("mean P: RMS %.1f Pa, bias %.1f Pa; direction error RMS %.1f deg (median %.1f, "
               "%d samples)\n", c.pbar_rms_pa, c.pbar_bias_pa, c.direction_rms_deg,
               c.direction_median_deg, c.direction_samples);
-  const std::filesystem::path out = out_dir;
+  if (r.history.ran) {
+    const HistoryComparison& h = r.history;
+    std::printf("history: %d iterations (log time = history + %.3f s, %.2f mm); r_p median "
+                "%.1f deg, r_p_final %.1f deg, F_normal RMS %.2f N, P1 RMS %.1f Pa\n",
+                h.iterations, h.time_offset_s, h.match_rms_mm, h.r_p_median_deg,
+                h.r_p_final_median_deg, h.f_normal_rms_n, h.p_rms_pa[0]);
+  } else if (!r.history_warning.empty()) {
+    std::fprintf(stderr, "ssc compare: warning: history not compared: %s\n",
+                 r.history_warning.c_str());
+  }
+  if (r.closed.ran) {
+    const ClosedLoopComparison& cl = r.closed;
+    std::printf("closed loop (%s): twin %s; dr %.2f vs %.2f mm (log), sigma_r %.2f vs %.2f mm, "
+                "s_c %.3f vs %.3f, duration %.1f vs %.1f s; path distance mean %.2f, max %.2f "
+                "mm\n",
+                cl.parameters.c_str(), cl.twin_outcome.c_str(), cl.twin.dr_mm, cl.log.dr_mm,
+                cl.twin.sigma_r_mm, cl.log.sigma_r_mm, cl.twin.s_c, cl.log.s_c,
+                cl.twin.duration_s, cl.log.duration_s, cl.path_distance_mean_mm,
+                cl.path_distance_max_mm);
+  }
+  const std::filesystem::path out = o.out_dir;
   std::printf("wrote %s\n", (out / "report.md").c_str());
   if (!no_plot) {
     const std::string png = (out / "compare.png").string();
-    if (RunPlotScript("plot_compare.py", {(out / "series.csv").string(), png})) {
+    if (RunPlotScript("plot_compare.py",
+                      {(out / "series.csv").string(), png, (out / "report.json").string()})) {
       std::printf("wrote %s\n", png.c_str());
     }
   }

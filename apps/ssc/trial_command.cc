@@ -7,7 +7,7 @@
 #include "apps/ssc/plotting.h"
 #include "apps/ssc/trial_options.h"
 #include "runtime/mujoco_model.h"
-#include "compare/log_replay.h"
+#include "compare/twin_log.h"
 #include "studies/trial_io.h"
 #include "geometry/dimensions.h"
 
@@ -27,8 +27,8 @@ int RunTrialCommand(int argc, char** argv) {
   cmd.Seed("seed", &config.seed, "sensor noise seed");
   cmd.OutputDir("out", &out_dir, "output directory (trial.csv, summary.json, trajectory.png)");
   cmd.OutputDir("robot-log", &robot_log_dir,
-                "also write the run as a robot-format log into this directory (per-topic CSVs "
-                "+ log.mat), for ssc compare");
+                "also write the run as the lab records it into this directory (per-topic "
+                "dataLog_*.csv + DataLog_*.mat, base_link frame), for ssc compare");
   cmd.Number("stop-at", &stop_at,
              "stop after this many simulated seconds and print the tool position", "s",
              NumberRange::Positive(3600), false);
@@ -80,14 +80,13 @@ int RunTrialCommand(int argc, char** argv) {
   }
   std::printf("wrote %s and %s\n", (out / "trial.csv").c_str(), (out / "summary.json").c_str());
   if (!robot_log_dir.empty()) {
-    const RobotLog log = RobotLogFromTrial(r, kToolCentreOffsetM, 1.0, 0.0);
-    const std::string& dir = robot_log_dir;
-    if (!WriteTopicCsvRecording(dir, log, LoggerVersion::kNewer, nullptr, &error) ||
-        !WriteRobotLogMat((std::filesystem::path(dir) / "log.mat").string(), log, &error)) {
+    std::vector<std::string> files;
+    if (!WriteLabRecordingFromTrial(model.get(), r, config, robot_log_dir, &files, &error)) {
       std::fprintf(stderr, "ssc trial: %s\n", error.c_str());
       return 1;
     }
-    std::printf("wrote the robot-format log into %s\n", dir.c_str());
+    std::printf("wrote the run as a lab recording (%zu files) into %s\n", files.size(),
+                robot_log_dir.c_str());
   }
   if (!no_plot) {
     const std::string png = (out / "trajectory.png").string();

@@ -1,0 +1,137 @@
+#include "compare/comparison.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "runtime/mujoco_model.h"
+
+namespace ssc {
+namespace {
+
+std::string Mm(double m) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.1f mm", m * 1e3);
+  return buf;
+}
+
+std::string Point(const std::array<double, 3>& p) {
+  char buf[96];
+  std::snprintf(buf, sizeof(buf), "(%.4f, %.4f, %.4f) m", p[0], p[1], p[2]);
+  return buf;
+}
+
+}  // namespace
+
+bool RunComparison(const CompareOptions& o, CompareResult* r, std::string* error) {
+  *r = CompareResult();
+  LoadedLog loaded;
+  LoadError load_error;
+  if (!LoadLog(o.log_path, o.processing, &loaded, &load_error)) {
+    *error = load_error.ToString();
+    return false;
+  }
+  ModelPtr model = LoadModel(ResolveScenePath(o.scene), error);
+  if (!model) return false;
+  const std::vector<SceneObject> objects = FindSceneObjects(model.get());
+  if (objects.empty()) {
+    *error = o.scene + ": the replay scene has no object the cup could touch";
+    return false;
+  }
+  ComparisonSetup& s = r->setup;
+  s.log_path = o.log_path;
+  s.format = LogFormatName(loaded.format);
+  const bool lab = loaded.format != LogFormat::kPlain;
+  s.log_frame = lab ? LogFrameName(o.frame) : "scene";
+  const LabRunArgs& args = loaded.raw.args;
+  std::string params;
+  const TrialConfig from_file = ConfigFromArgs(args, o.loop_config, &params);
+  TrialConfig loop_config = from_file;
+  if (o.override_law) {
+    loop_config.law = o.loop_config.law;
+    params = "the command line's P_ref, beta, dL; " + params;
+  }
+
+  ModelPtr loop;
+  if (lab && o.object_pose.empty()) {
+    // The object from the log; its top needs the twin's lip depth at the logged force.
+    loop = LoadModel(ResolveScenePath(o.loop_scene), error);
+    if (!loop || !TwinContactDepth(loop.get(), loop_config.approach_force_n, &s.contact_depth_m,
+                                   error)) {
+      *error = "lip depth at the approach force: " + *error;
+      return false;
+    }
+    s.object = DiskPoseFromLog(loaded, s.contact_depth_m);
+  } else if (lab) {
+    s.object.known = true;
+    s.object.x_m = o.object_pose[0];
+    s.object.y_m = o.object_pose[1];
+    s.object.top_z_m = o.object_pose[2];
+    s.object.yaw_rad = o.object_pose.size() > 3 ? o.object_pose[3] * M_PI / 180 : 0.0;
+    s.object.source = "--object-pose";
+  }
+  ProcessedLog scene_log = loaded.log;
+  if (lab) {
+    ObjectPose where = s.object;
+    if (!where.known) {  // which object: the nearest to the log's first tool position
+      where.x_m = scene_log.tcp_m.front()[0];
+      where.y_m = scene_log.tcp_m.front()[1];
+    }
+    s.scene_object = *NearestSceneObject(objects, o.frame, where);
+    s.X_scene_log = SceneFromLog(o.frame, s.object, s.scene_object);
+    TransformProcessedLog(s.X_scene_log, &scene_log);
+  } else {
+    s.scene_object = objects.front();
+  }
+  s.reach = ClosestApproach(model.get(), objects, scene_log);
+  if (!(s.reach.closest_m <= kCupReachM)) {
+    *error = o.log_path + ": the cup never comes within reach (" + Mm(kCupReachM) +
+             ") of any object of " + o.scene + ": closest approach " + Mm(s.reach.closest_m) +
+             " to '" + s.reach.object + "' at t = " + std::to_string(s.reach.t_s) +
+             " s, tool centre at " + Point(s.reach.tcp_m) + " in the scene frame. Frames: ";
+    if (!lab) {
+      *error += "a plain CSV is taken as already in the scene frame; move it there.";
+    } else {
+      *error += std::string("log poses in ") + LogFrameName(o.frame) +
+                (s.object.known ? ", object pose from " + s.object.source
+                                : ", no object pose (the base frame at the scene origin)") +
+                ". Give the object's pose in the log's frame with --object-pose x,y,z[,yaw], "
+                "or the frame with --log-frame base_link|base.";
+    }
+    return false;
+  }
+  if (!ReplayLog(model.get(), scene_log, o.processing.tcp_offset_m, &r->replay, error)) {
+    return false;
+  }
+  if (!args.history.empty()) {
+    std::string why;
+    if (!CompareHistory(args, loaded.log, r->replay, loop_config.law, &r->history, &why)) {
+      r->history_warning = why;
+    }
+  }
+  if (o.closed_loop) {
+    if (!loop) loop = LoadModel(ResolveScenePath(o.loop_scene), error);
+    if (!loop) return false;
+    const std::vector<SceneObject> loop_objects = FindSceneObjects(loop.get());
+    if (loop_objects.empty()) {
+      *error = o.loop_scene + ": no disk for the closed loop";
+      return false;
+    }
+    ObjectPose at;  // the loop scene's disk nearest to the replay's object
+    at.x_m = s.scene_object.x_m;
+    at.y_m = s.scene_object.y_m;
+    const SceneObject& disk = *NearestSceneObject(loop_objects, LogFrame::kUrBase, at);
+    loop_config.target.surface_top_z_m = disk.top_z_m;
+    const double start_t = r->history.ran ? args.history.front().t_s + r->history.time_offset_s
+                                          : -1.0;
+    if (!CompareClosedLoop(loop.get(), scene_log, disk, start_t, loop_config, &r->closed,
+                           error)) {
+      *error = "closed loop: " + *error;
+      return false;
+    }
+    r->closed.parameters = params;
+  }
+  return WriteComparisonReport(o.out_dir, s, r->replay, &r->history,
+                               o.closed_loop ? &r->closed : nullptr, error);
+}
+
+}  // namespace ssc

@@ -1,0 +1,137 @@
+#include "compare/replay.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include <Eigen/Geometry>
+
+#include "controller/pure/contour_law.h"
+#include "plugin/chamber_pressure_sensor.h"
+#include "robotlog/align.h"
+
+namespace ssc {
+namespace {
+
+double Log10Floor(double p) { return std::log10(std::max(1.0, p)); }
+
+}  // namespace
+
+double Correlation(const std::vector<double>& a, const std::vector<double>& b) {
+  const double n = static_cast<double>(a.size());
+  if (a.size() < 2) return 0;
+  const double ma = std::accumulate(a.begin(), a.end(), 0.0) / n;
+  const double mb = std::accumulate(b.begin(), b.end(), 0.0) / n;
+  double sab = 0, saa = 0, sbb = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    sab += (a[i] - ma) * (b[i] - mb);
+    saa += (a[i] - ma) * (a[i] - ma);
+    sbb += (b[i] - mb) * (b[i] - mb);
+  }
+  return (saa > 0 && sbb > 0) ? sab / std::sqrt(saa * sbb) : 0;
+}
+
+bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
+               ReplayComparison* out, std::string* error) {
+  *out = ReplayComparison();
+  const int body = mj_name2id(m, mjOBJ_BODY, "probe");
+  if (body < 0 || m->body_mocapid[body] < 0) {
+    *error = "the replay scene needs a mocap body named 'probe' holding the tool (e.g. "
+             "scenes/disk_replay.xml)";
+    return false;
+  }
+  if (log.t_s.size() < 2) {
+    *error = "the log has fewer than two samples";
+    return false;
+  }
+  const int mocap = m->body_mocapid[body];
+  mjData* d = mj_makeData(m);
+  const ChamberPressureDiagnostics* sensor = FindChamberPressureDiagnostics(m, d);
+  if (sensor == nullptr) {
+    mj_deleteData(d);
+    *error = "the replay scene has no ssc.chamber_pressure sensor";
+    return false;
+  }
+  const int adr = sensor->sensor_adr();
+  auto place = [&](double t) {
+    // Linear interpolation of the pose between log samples.
+    const auto it = std::upper_bound(log.t_s.begin(), log.t_s.end(), t);
+    size_t i = static_cast<size_t>(it - log.t_s.begin());
+    i = std::clamp<size_t>(i, 1, log.t_s.size() - 1);
+    const double u = std::clamp((t - log.t_s[i - 1]) / (log.t_s[i] - log.t_s[i - 1]), 0.0, 1.0);
+    std::array<double, 3> tcp;
+    for (int k = 0; k < 3; ++k) tcp[k] = log.tcp_m[i - 1][k] + u * (log.tcp_m[i][k] - log.tcp_m[i - 1][k]);
+    const std::array<double, 4>& q = log.quat[u < 0.5 ? i - 1 : i];
+    const Eigen::Vector3d tool0 = Tool0FromTcp(Eigen::Vector3d(tcp[0], tcp[1], tcp[2]),
+                                               Eigen::Quaterniond(q[0], q[1], q[2], q[3]),
+                                               tcp_offset_m);
+    for (int k = 0; k < 3; ++k) d->mocap_pos[3 * mocap + k] = tool0[k];
+    for (int k = 0; k < 4; ++k) d->mocap_quat[4 * mocap + k] = q[k];
+  };
+  // The F/T force sensor of the tool (z along the cup axis), tared on the first sample as the
+  // host tares it in air.
+  const int ft = mj_name2id(m, mjOBJ_SENSOR, "ft_force");
+  const int ft_adr = ft >= 0 ? m->sensor_adr[ft] + 2 : -1;
+  d->time = log.t_s.front();
+  place(d->time);
+  mj_forward(m, d);
+  const double ft_tare = ft_adr >= 0 ? d->sensordata[ft_adr] : 0.0;
+  for (size_t k = 0; k < log.t_s.size(); ++k) {
+    while (d->time + 0.5 * m->opt.timestep < log.t_s[k]) {
+      place(d->time);
+      mj_step(m, d);
+    }
+    std::array<double, 4> sim;
+    for (int c = 0; c < 4; ++c) sim[c] = d->sensordata[adr + c];
+    out->t_s.push_back(log.t_s[k]);
+    out->sim_pa.push_back(sim);
+    out->log_pa.push_back(log.p_pa[k]);
+    out->tcp_m.push_back(log.tcp_m[k]);
+    out->sim_ft_normal_n.push_back(ft_adr >= 0 ? d->sensordata[ft_adr] - ft_tare : 0.0);
+  }
+  mj_deleteData(d);
+
+  const size_t n = out->t_s.size();
+  for (int c = 0; c < 4; ++c) {
+    std::vector<double> a(n), b(n);
+    double se = 0, sl = 0;
+    for (size_t i = 0; i < n; ++i) {
+      a[i] = out->sim_pa[i][c];
+      b[i] = out->log_pa[i][c];
+      se += (a[i] - b[i]) * (a[i] - b[i]);
+      sl += std::pow(Log10Floor(a[i]) - Log10Floor(b[i]), 2);
+    }
+    out->rms_pa[c] = std::sqrt(se / static_cast<double>(n));
+    out->rms_log10[c] = std::sqrt(sl / static_cast<double>(n));
+    out->correlation[c] = Correlation(a, b);
+    const double mb = std::accumulate(b.begin(), b.end(), 0.0);
+    out->mean_ratio[c] = std::fabs(mb) > 1e-9 ? std::accumulate(a.begin(), a.end(), 0.0) / mb : 0;
+  }
+  double se = 0, bias = 0;
+  std::vector<double> angles;
+  ContourLawParams law;
+  for (size_t i = 0; i < n; ++i) {
+    const ContourStep s = ComputeContourStep(out->sim_pa[i], law);
+    const ContourStep l = ComputeContourStep(out->log_pa[i], law);
+    se += std::pow(s.p_mean_pa - l.p_mean_pa, 2);
+    bias += s.p_mean_pa - l.p_mean_pa;
+    if (std::hypot(s.g[0], s.g[1]) > law.p_noise_pa && std::hypot(l.g[0], l.g[1]) > law.p_noise_pa) {
+      const double da = std::remainder(std::atan2(s.g[1], s.g[0]) - std::atan2(l.g[1], l.g[0]),
+                                       2 * M_PI);
+      angles.push_back(std::fabs(da) * 180 / M_PI);
+    }
+  }
+  out->pbar_rms_pa = std::sqrt(se / static_cast<double>(n));
+  out->pbar_bias_pa = bias / static_cast<double>(n);
+  out->direction_samples = static_cast<int>(angles.size());
+  if (!angles.empty()) {
+    double s2 = 0;
+    for (double a : angles) s2 += a * a;
+    out->direction_rms_deg = std::sqrt(s2 / static_cast<double>(angles.size()));
+    std::nth_element(angles.begin(), angles.begin() + static_cast<long>(angles.size() / 2), angles.end());
+    out->direction_median_deg = angles[angles.size() / 2];
+  }
+  return true;
+}
+
+}  // namespace ssc

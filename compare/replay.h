@@ -1,0 +1,38 @@
+// Replay: the logged tool path driven through the twin, its pressures and F/T against the log.
+#ifndef SSC_COMPARE_REPLAY_H_
+#define SSC_COMPARE_REPLAY_H_
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <mujoco/mujoco.h>
+
+#include "robotlog/log_types.h"
+
+namespace ssc {
+
+// Per-chamber and summary agreement of simulated and logged pressures.
+struct ReplayComparison {
+  std::array<double, 4> rms_pa{}, rms_log10{}, correlation{}, mean_ratio{};
+  double pbar_rms_pa = 0, pbar_bias_pa = 0;
+  double direction_rms_deg = 0, direction_median_deg = 0;  // g from sim vs from the log
+  int direction_samples = 0;
+  std::vector<double> t_s;
+  std::vector<std::array<double, 4>> sim_pa, log_pa;
+  std::vector<std::array<double, 3>> tcp_m;
+  std::vector<double> sim_ft_normal_n;  // the twin's tared F/T compression (+ = pressed), N
+};
+
+// Drives the replay scene's mocap body (named "probe", holding tool0) along the logged tool
+// centre point (scene frame) and orientation, stepping the simulation through the log's time
+// span, and samples the plugin output and the F/T force at the log's time stamps.
+bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
+               ReplayComparison* out, std::string* error);
+
+// Pearson correlation (0 when either side is constant or shorter than 2).
+double Correlation(const std::vector<double>& a, const std::vector<double>& b);
+
+}  // namespace ssc
+
+#endif  // SSC_COMPARE_REPLAY_H_
