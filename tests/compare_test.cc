@@ -96,7 +96,8 @@ TEST(CompareTest, EveryLabFormOpensUnchangedAndReplaysTheRun) {
   EXPECT_LT(r.history.match_rms_mm, 0.1);
   EXPECT_LT(r.history.r_p_median_deg, 5.0);
   EXPECT_LT(r.history.r_p_final_median_deg, 5.0);
-  for (int k = 0; k < 4; ++k) EXPECT_NEAR(r.history.p_mean_ratio[k], 1.0, 0.05) << k;
+  // The mocap replay reads the iterations' instants within about 10 % of the gantry trial.
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(r.history.p_mean_ratio[k], 1.0, 0.1) << k;
   EXPECT_LT(r.history.f_normal_rms_n, 0.5);
 }
 
@@ -128,10 +129,15 @@ TEST(CompareTest, KnownPerturbationsAreRecoveredFromEachForm) {
     }
     EXPECT_LT(r.replay.direction_median_deg, 10.0) << log;
   }
+  // The history's pressures carry the same gain: against the unchanged run's history, 1.3.
   const CompareResult r = Compare(forms.mat_path, TempDir("out_perturbed_mat"));
+  const CompareResult unchanged =
+      Compare(Generate("unchanged", LabSetup(), LogPerturbation()).mat_path, TempDir("out_u"));
   ASSERT_TRUE(r.history.ran) << r.history_warning;
   EXPECT_NEAR(r.history.time_offset_s, 1.0 - 2.5, 0.02);
-  for (int k = 0; k < 4; ++k) EXPECT_NEAR(r.history.p_mean_ratio[k], 1 / 1.3, 0.05) << k;
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_NEAR(unchanged.history.p_mean_ratio[k] / r.history.p_mean_ratio[k], 1.3, 0.05) << k;
+  }
 }
 
 TEST(CompareTest, AReplayThatMissesEveryObjectIsAnError) {
