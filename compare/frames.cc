@@ -89,6 +89,8 @@ std::vector<SceneObject> FindSceneObjects(const mjModel* m) {
       top = std::max(top, (R * l).z() + d->geom_xpos[3 * g + 2]);
     }
     o.top_z_m = top;
+    if (m->geom_type[g] == mjGEOM_CYLINDER) o.radius_m = m->geom_size[3 * g];
+    o.half_size_m = {box[3], box[4]};
     objects.push_back(o);
   }
   return objects;

@@ -51,6 +51,8 @@ struct SceneObject {
   std::string name;
   int geom = -1;
   double x_m = 0, y_m = 0, top_z_m = 0;
+  double radius_m = std::numeric_limits<double>::quiet_NaN();  // cylinders (disks)
+  std::array<double, 2> half_size_m{};                         // its x, y extent (bounding box)
 };
 std::vector<SceneObject> FindSceneObjects(const mjModel* m);
 

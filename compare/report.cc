@@ -30,9 +30,13 @@ json SetupJson(const ComparisonSetup& s) {
                  {"scene_object", {{"name", s.scene_object.name},
                                    {"x_m", s.scene_object.x_m},
                                    {"y_m", s.scene_object.y_m},
-                                   {"top_z_m", s.scene_object.top_z_m}}},
+                                   {"top_z_m", s.scene_object.top_z_m},
+                                   {"radius_m", Num(s.scene_object.radius_m)},
+                                   {"half_size_m", {s.scene_object.half_size_m[0],
+                                                    s.scene_object.half_size_m[1]}}}},
                  {"closest_approach_mm", Num(s.reach.closest_m * 1e3)},
                  {"closest_approach_t_s", Num(s.reach.t_s)},
+                 {"closest_approach_tcp_m", {s.reach.tcp_m[0], s.reach.tcp_m[1], s.reach.tcp_m[2]}},
                  {"twin_contact_depth_mm", Num(s.contact_depth_m * 1e3)}};
   if (s.object.known) {
     frames["object_pose"] = {{"x_m", s.object.x_m},       {"y_m", s.object.y_m},

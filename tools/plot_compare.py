@@ -1,9 +1,12 @@
 #!/usr/bin/env python3
-"""Twin against robot log: pressures over time, the path, error histograms.
+"""Twin against robot log: pressures over time, the path over the object, error histograms.
 
-usage: plot_compare.py series.csv out.png   (series.csv written by `ssc compare`)
+usage: plot_compare.py series.csv out.png [report.json]   (all written by `ssc compare`)
+With report.json the path panel draws the scene's object (a disk as its circle, other shapes as
+their bounding box) and marks the tool centre's closest approach.
 """
 import csv
+import json
 import math
 import sys
 
@@ -11,15 +14,38 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.patches import Circle, Rectangle  # noqa: E402
+
+
+def draw_object(ax, report):
+    frames = report.get("frames", {})
+    obj = frames.get("scene_object")
+    if not obj:
+        return
+    x, y = obj["x_m"] * 1e3, obj["y_m"] * 1e3
+    if obj.get("radius_m") is not None:
+        ax.add_patch(Circle((x, y), obj["radius_m"] * 1e3, color="#3a6fc4", alpha=0.25,
+                            label=f"object '{obj['name']}'"))
+    else:
+        hx, hy = (v * 1e3 for v in obj.get("half_size_m", [0, 0]))
+        ax.add_patch(Rectangle((x - hx, y - hy), 2 * hx, 2 * hy, color="#3a6fc4", alpha=0.25,
+                               label=f"object '{obj['name']}' (bounding box)"))
+    tcp = frames.get("closest_approach_tcp_m")
+    if tcp:
+        ax.plot(tcp[0] * 1e3, tcp[1] * 1e3, "rx", label="closest approach")
 
 
 def main():
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (3, 4):
         sys.exit(__doc__)
     with open(sys.argv[1], newline="") as f:
         rows = list(csv.DictReader(f))
     if not rows:
         sys.exit(f"{sys.argv[1]}: no rows")
+    report = {}
+    if len(sys.argv) == 4:
+        with open(sys.argv[3]) as f:
+            report = json.load(f)
     t = [float(r["t_s"]) for r in rows]
     fig = plt.figure(figsize=(13, 7))
     for k in range(4):
@@ -31,10 +57,13 @@ def main():
         if k == 0:
             ax.legend(fontsize=7)
     ax = fig.add_subplot(3, 4, (5, 10))
+    draw_object(ax, report)
     ax.plot([float(r["x_m"]) * 1e3 for r in rows], [float(r["y_m"]) * 1e3 for r in rows], "b-",
-            lw=0.8)
+            lw=0.8, label="logged tool centre")
     ax.set_aspect("equal")
-    ax.set_title("logged tool-centre path (mm)", fontsize=9)
+    frame = report.get("frames", {}).get("log_frame", "?")
+    ax.set_title(f"path in the scene frame (mm); log frame {frame}", fontsize=9)
+    ax.legend(fontsize=7, loc="upper right")
     for k in range(2):
         ax = fig.add_subplot(3, 4, 7 + 4 * k if k == 0 else 12)
         errs = [float(r[f"sim_p{c}_pa"]) - float(r[f"log_p{c}_pa"]) for r in rows
