@@ -192,7 +192,9 @@ std::string FindEmptyConfigValuesIn(const std::filesystem::path& file,
   static const std::regex config_tag(R"(<config\b[^>]*>)");
   static const std::regex empty_value(R"(\bvalue\s*=\s*(["'])\s*\1)");
   static const std::regex key_attr(R"(\bkey\s*=\s*["']([^"']*)["'])");
-  static const std::regex include_tag(R"(<include\b[^>]*\bfile\s*=\s*["']([^"']+)["'])");
+  // Files this one brings in: <include file=...> and <model file=...> (attached sub-models).
+  static const std::regex include_tag(
+      R"(<(?:include|model)\b[^>]*\bfile\s*=\s*["']([^"']+\.xml)["'])");
   for (auto it = std::sregex_iterator(text.begin(), text.end(), config_tag);
        it != std::sregex_iterator(); ++it) {
     const std::string tag = it->str();
@@ -208,7 +210,8 @@ std::string FindEmptyConfigValuesIn(const std::filesystem::path& file,
   for (auto it = std::sregex_iterator(text.begin(), text.end(), include_tag);
        it != std::sregex_iterator(); ++it) {
     const std::filesystem::path name = (*it)[1].str();
-    std::filesystem::path next = main_dir / name;  // MuJoCo resolves includes from the main file
+    // MuJoCo resolves includes from the main file's folder; try the including file's too.
+    std::filesystem::path next = name.is_absolute() ? name : main_dir / name;
     if (!std::filesystem::exists(next)) next = file.parent_path() / name;
     if (std::string e = FindEmptyConfigValuesIn(next, main_dir, depth + 1); !e.empty()) return e;
   }
