@@ -7,6 +7,7 @@
 #include <random>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "runtime/mujoco_model.h"
 #include "studies/map_scores.h"
@@ -78,7 +79,9 @@ TEST(MapScoresTest, ASyntheticMapScoresAsComputedByHand) {
 }
 
 std::string WriteFile(const std::string& name, const std::string& text) {
-  const std::string path = (std::filesystem::temp_directory_path() / name).string();
+  // Per process: test runs from several checkouts may share the temp directory.
+  const std::string path =
+      (std::filesystem::temp_directory_path() / (std::to_string(::getpid()) + "_" + name)).string();
   std::ofstream(path) << text;
   return path;
 }
@@ -132,7 +135,8 @@ TEST(ValidationStudyTest, ATinyMapGetsTheKnownScores) {
   ModelPtr model = LoadModel(SourceDir() + "/scenes/disk_benchmark_gantry.xml", &error);
   ASSERT_TRUE(model) << error;
   const std::string dir =
-      (std::filesystem::temp_directory_path() / "ssc_validation_test").string();
+      (std::filesystem::temp_directory_path() / ("ssc_validation_test_" + std::to_string(::getpid())))
+          .string();
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   ValidateSpec spec;
