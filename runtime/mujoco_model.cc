@@ -1,5 +1,7 @@
 #include "runtime/mujoco_model.h"
 
+#include <dlfcn.h>
+
 #include "plugin/chamber_pressure_config.h"
 
 #include <cmath>
@@ -46,6 +48,23 @@ class WarningCapture {
 
 bool FileExists(const std::string& path) { return std::ifstream(path).good(); }
 
+bool HasResources(const std::filesystem::path& dir) {
+  return FileExists((dir / "models" / "ssc_tool.xml").string());
+}
+
+// The folder of the binary that holds this code (the ssc executable, or the Python module).
+std::filesystem::path ThisBinaryDir() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&HasResources), &info) == 0 || info.dli_fname == nullptr) {
+    return {};
+  }
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::canonical(info.dli_fname, ec);
+  return ec ? std::filesystem::path() : self.parent_path();
+}
+
+std::string g_resource_dir;  // SetResourceDir
+
 // Takes a compiled model; refuses (deletes it, null + *error prefixed by `label`) a bad time step
 // or a plugin that rejects its config when data is made.
 ModelPtr CheckedModel(mjModel* m, const std::string& label, std::string* error) {
@@ -82,16 +101,34 @@ std::string CheckMuJoCoVersion() {
   return "";
 }
 
-std::string SourceDir() {
-  const char* env = std::getenv("SSC_SOURCE_DIR");
-  return (env && env[0]) ? env : SSC_SOURCE_DIR;
+void SetResourceDir(const std::string& dir) { g_resource_dir = dir; }
+
+std::string ResourceDir() {
+  if (!g_resource_dir.empty()) return g_resource_dir;
+  for (const char* var : {"SSC_RESOURCE_DIR", "SSC_SOURCE_DIR"}) {
+    const char* env = std::getenv(var);
+    if (env && env[0]) return env;
+  }
+  static const std::string found = [] {
+    const std::filesystem::path bin = ThisBinaryDir();
+    if (!bin.empty()) {
+      // <prefix>/bin/ssc -> <prefix>/share/ssc; the Python package keeps them beside _core.
+      for (const std::filesystem::path& dir : {bin.parent_path() / "share" / "ssc", bin}) {
+        if (HasResources(dir)) return dir.lexically_normal().string();
+      }
+    }
+    return std::string(SSC_SOURCE_DIR);
+  }();
+  return found;
 }
+
+std::string SourceDir() { return ResourceDir(); }
 
 std::string ResolveScenePath(const std::string& scene) {
   // Absolute: MuJoCo 4.0 mis-resolves a model asset's relative path inside an <include> of a
   // relatively named main file ("scenes/x.xml" + "../models/..." loses the "..").
   if (FileExists(scene)) return std::filesystem::absolute(scene).lexically_normal().string();
-  const std::string dir = SourceDir() + "/scenes/";
+  const std::string dir = ResourceDir() + "/scenes/";
   if (FileExists(dir + scene)) return dir + scene;
   if (FileExists(dir + scene + ".xml")) return dir + scene + ".xml";
   return scene;
@@ -128,6 +165,7 @@ ModelPtr LoadModelFromTexts(const ModelTexts& texts, const std::string& label,
 }
 
 ModelPtr LoadModel(const std::string& path, std::string* error) {
+  InstallMuJoCoMessageHandlers();
   if (!FileExists(path)) {
     *error = path + ": file not found";
     return nullptr;

@@ -9,6 +9,8 @@
 
 #include <mujoco/mujoco.h>
 
+#include "plugin/mujoco_messages.h"
+
 namespace ssc {
 
 // Empty when the linked libmujoco matches the headers compiled against; otherwise a message.
@@ -43,8 +45,15 @@ DataPtr MakeData(const mjModel* m, std::string* error);
 // ".xml").
 std::string ResolveScenePath(const std::string& scene);
 
-// Repository root (compile-time SSC_SOURCE_DIR, overridable by the SSC_SOURCE_DIR variable).
-std::string SourceDir();
+// The folder holding models/ and scenes/: SetResourceDir, else $SSC_RESOURCE_DIR (or $SSC_SOURCE_DIR) when set, else
+// <prefix>/share/ssc beside an installed binary, or the Python package's folder, else the source
+// tree this was built from (SSC_SOURCE_DIR at compile time).
+std::string ResourceDir();
+// Overrides all of the above (a program that knows where its models are; empty: look them up).
+void SetResourceDir(const std::string& dir);
+std::string SourceDir();  // the older name of ResourceDir()
+
+// InstallMuJoCoMessageHandlers (plugin/mujoco_messages.h): LoadModel calls it too.
 
 // MJCF texts held in memory: the main file's text, and every file it includes or attaches under
 // the name it is referred to by (e.g. "../models/ssc_tool.xml").

@@ -141,6 +141,7 @@ void ContourTrial::Reset() {
   path_t_.clear();
   result_ = TrialResult();
   last_step_ = ContourStep{};
+  awaiting_step_ = false;
   if (servo_) {
     std::string ignored;
     active_ = servo_->Init(m_, d_, tool_site_, &ignored);
@@ -318,16 +319,21 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
       ApplyChamberSpread(config_.effects.chambers, EffectsSeed(), t, &chamber_spread_, &p);
       host_p_pa_ = p;
       last_step_ = ComputeContourStep(p, config_.law);
-      // Tool frame -> world with the tool site's rotation (orientation is held).
-      const mjtNum* R = d_->site_xmat + 9 * tool_site_;
-      last_step_world_ = {R[0] * last_step_.step_m[0] + R[1] * last_step_.step_m[1],
-                          R[3] * last_step_.step_m[0] + R[4] * last_step_.step_m[1]};
-      // Measured pose + step, height held; with a pose delay, the pose read after the plot.
-      if (config_.effects.loop.pose_delay_s > 0) {
-        step_pending_ = true;
-        step_apply_s_ = t + config_.effects.loop.pose_delay_s;
+      if (external_policy_) {  // the caller's step arrives through ApplyStep
+        awaiting_step_ = true;
+        iteration_tool_ = tool;
       } else {
-        servo_->SetTarget({tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], hold_z_});
+        // Tool frame -> world with the tool site's rotation (orientation is held).
+        const mjtNum* R = d_->site_xmat + 9 * tool_site_;
+        last_step_world_ = {R[0] * last_step_.step_m[0] + R[1] * last_step_.step_m[1],
+                            R[3] * last_step_.step_m[0] + R[4] * last_step_.step_m[1]};
+        // Measured pose + step, height held; with a pose delay, the pose read after the plot.
+        if (config_.effects.loop.pose_delay_s > 0) {
+          step_pending_ = true;
+          step_apply_s_ = t + config_.effects.loop.pose_delay_s;
+        } else {
+          servo_->SetTarget({tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], hold_z_});
+        }
       }
       Log(true);
       const SampleCheck check = ClassifySample(config_.thresholds, p, FtNormalForce(),
@@ -361,6 +367,23 @@ bool ContourTrial::Step() {
     }
   }
   return phase_ != TrialPhase::kDone;
+}
+
+bool ContourTrial::RunToNextIteration(double max_sim_s) {
+  const int iterations = result_.iterations;
+  while (result_.iterations == iterations && d_->time < max_sim_s && Step()) {
+  }
+  return phase_ != TrialPhase::kDone;
+}
+
+void ContourTrial::ApplyStep(const std::array<double, 2>& step_m) {
+  if (!awaiting_step_) return;
+  awaiting_step_ = false;
+  last_step_.step_m = step_m;
+  const mjtNum* R = d_->site_xmat + 9 * tool_site_;
+  last_step_world_ = {R[0] * step_m[0] + R[1] * step_m[1], R[3] * step_m[0] + R[4] * step_m[1]};
+  servo_->SetTarget({iteration_tool_[0] + last_step_world_[0],
+                     iteration_tool_[1] + last_step_world_[1], hold_z_});
 }
 
 TrialResult ContourTrial::Run(double max_sim_s) {

@@ -126,6 +126,21 @@ class ContourTrial : public ControlCallback {
   // What the controller read at the last iteration: the plugin's output through the lip tilt
   // and the chamber spread (equal to it with the effects off), Pa.
   const std::array<double, 4>& HostPressures() const { return host_p_pa_; }
+  // Progress while following: the signed swept angle (swept-angle goals, deg) and the tracked
+  // arc position along the edge (m; with an edge).
+  double swept_deg() const { return goal_.swept_deg(); }
+  double tracked_arc_m() const { return goal_.arc_m(); }
+  const GoalTracker& goal() const { return goal_; }
+  // Another policy than the contour law (the Gymnasium environment). When on, each following
+  // control iteration reads the sensor and waits: RunToNextIteration returns, the caller
+  // decides from HostPressures() and calls ApplyStep, and the servo takes that step
+  // (from the next physics step on) instead of the law's.
+  void SetExternalPolicy(bool on) { external_policy_ = on; }
+  // Steps until the next control iteration has read the sensor (external policy) or run (the
+  // law), or the trial ends, or max_sim_s; false when the trial ended.
+  bool RunToNextIteration(double max_sim_s = 1e9);
+  // The planar step for the iteration that is waiting (tool frame, m); the height is held.
+  void ApplyStep(const std::array<double, 2>& step_m);
 
  private:
   ContourTrial(const mjModel* m, mjData* d, const TrialConfig& config, bool keep_log);
@@ -165,6 +180,8 @@ class ContourTrial : public ControlCallback {
   std::array<double, 4> host_p_pa_{};
   TrialResult result_;
   std::unique_ptr<ScopedControl> registration_;
+  bool external_policy_ = false, awaiting_step_ = false;
+  Vec3 iteration_tool_{};              // measured tool position at the waiting iteration
 };
 
 // Loads nothing: runs one trial on an existing model with its own mjData.

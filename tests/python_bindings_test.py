@@ -48,6 +48,22 @@ class PythonBindingsTest(unittest.TestCase):
         p = self.pressures("disk_benchmark.xml", 100)
         self.assertTrue(all(abs(x) < 1e6 for x in p), p)
 
+    def test_loading_our_scene_writes_no_log_file(self):
+        # MuJoCo's default handlers append to MUJOCO_LOG.TXT in the working directory; the plugin
+        # installs printing ones where the host has none, and our scenes' known attach warning
+        # is dropped.
+        import subprocess, tempfile
+        scene = os.path.abspath(os.path.join(ROOT, "scenes", "disk_benchmark.xml"))
+        script = ("import mujoco; mujoco.mj_loadPluginLibrary(%r); "
+                  "m = mujoco.MjModel.from_xml_path(%r); print('nbody', m.nbody)" % (PLUGIN, scene))
+        with tempfile.TemporaryDirectory() as cwd:
+            r = subprocess.run([sys.executable, "-c", script], cwd=cwd, capture_output=True,
+                               text=True, timeout=120)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn("nbody", r.stdout)
+            self.assertEqual(os.listdir(cwd), [])
+            self.assertNotIn("Attaching a spec", r.stdout + r.stderr)
+
     def test_bad_config_raises_with_the_key(self):
         xml = open(os.path.join(ROOT, "models", "ssc_tool.xml")).read().replace(
             '<instance name="ssc_pressure"/>',

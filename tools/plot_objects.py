@@ -37,7 +37,7 @@ def main():
     names = list(first)
     cols = min(7, len(names))
     nrows = math.ceil(len(names) / cols)
-    fig, axes = plt.subplots(nrows, cols, figsize=(2.6 * cols, 2.6 * nrows), squeeze=False)
+    fig, axes = plt.subplots(nrows, cols, figsize=(2.8 * cols, 2.9 * nrows), squeeze=False)
     for ax in axes.flat:
         ax.axis("off")
     for ax, name in zip(axes.flat, names):
@@ -67,12 +67,17 @@ def main():
         ax.set_xlim(mx - span, mx + span)
         ax.set_ylim(my - span, my + span)
         ax.set_aspect("equal")
-        ax.set_xticks([])
-        ax.set_yticks([])
-        ax.set_title(f"{name}\n{r['outcome']}", fontsize=7)
+        # Axes in world mm (the workspace centre W is at 650, 0) and a 10 mm scale bar.
+        ax.tick_params(labelsize=6, length=2, pad=1)
+        ax.locator_params(nbins=4)
+        bx, by = mx - span + 0.08 * 2 * span, my - span + 0.08 * 2 * span
+        ax.plot([bx, bx + 10], [by, by], "k-", lw=2.5, solid_capstyle="butt")
+        ax.text(bx + 5, by + 0.03 * 2 * span, "10 mm", ha="center", va="bottom", fontsize=6)
+        ax.set_title(f"{name}: {r['outcome']}", fontsize=8)
     fig.suptitle("cup-centre paths over the test objects (P_ref 100 Pa, beta 2, dL 0.5 mm); "
-                 "circles: 11 mm opening and 23 mm body at the start", fontsize=9)
-    fig.tight_layout()
+                 "axes: world x, y (mm); circles: 11 mm opening and 23 mm body at the start",
+                 fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1, 0.975))  # room for the title above the first row
     fig.savefig(out, dpi=90)
 
     profile = os.path.join(os.path.dirname(table), "fillet_profile.csv")

@@ -23,7 +23,8 @@ def main():
     groups = defaultdict(list)
     for r in cup:
         groups[(float(r["pref_pa"]), float(r["beta"]))].append(r)
-    fig, ax = plt.subplots(1, 3, figsize=(16, 4.8))
+    fig, ax = plt.subplots(1, 3, figsize=(19, 5.2),
+                           gridspec_kw={"width_ratios": [1, 1, 1.05], "right": 0.82})
     points = []
     for (pref, beta), rows in sorted(groups.items()):
         steps = sorted({float(r["step_mm"]) for r in rows})
@@ -55,23 +56,32 @@ def main():
         a.set_ylabel(ylabel)
         a.set_title(title)
         a.grid(True, alpha=0.3)
-        a.legend(fontsize=6)
+        a.legend(fontsize=7.5)
+    # Simulator settings: many sit on nearly the same point, so each label goes into a column
+    # right of the axes, in the order of its point's error, joined to the point by a thin line.
     a = ax[2]
+    pts = []
     for r in sim:
-        x, y = float(r["wall_per_sim_s"]), float(r["rms_log10_vs_reference"])
+        x, y = float(r["wall_per_sim_s"]), max(float(r["rms_log10_vs_reference"]), 1e-4)
         is_default = r["is_default"] == "1"
-        a.plot(x, max(y, 1e-4), "s" if is_default else "o", ms=10 if is_default else 6,
-               color="red" if is_default else "C0")
-        a.annotate(r["setting"], (x, max(y, 1e-4)), fontsize=6, xytext=(3, 3),
-                   textcoords="offset points")
+        a.plot(x, y, "s" if is_default else "o", ms=10 if is_default else 6,
+               color="red" if is_default else "C0", zorder=3)
+        pts.append((y, x, r["setting"], is_default))
+    pts.sort(key=lambda p: -p[0])
+    for i, (y, x, name, is_default) in enumerate(pts):
+        label_y = 1.0 - (i + 0.5) / len(pts)
+        a.annotate(name, xy=(x, y), xycoords="data", xytext=(1.04, label_y),
+                   textcoords="axes fraction", fontsize=7.5, va="center",
+                   color="red" if is_default else "black",
+                   arrowprops=dict(arrowstyle="-", lw=0.4, color="0.6", shrinkA=0, shrinkB=3))
     a.set_xscale("log")
     a.set_yscale("log")
     a.set_xlabel("wall time per simulated second (s)")
     a.set_ylabel("pressure error vs reference (RMS log10)")
     a.set_title("simulator: cost vs fidelity (red: default)")
     a.grid(True, which="both", alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(sys.argv[3], dpi=100)
+    fig.tight_layout(rect=(0, 0, 0.83, 1))
+    fig.savefig(sys.argv[3], dpi=100, bbox_inches="tight")
 
 
 if __name__ == "__main__":

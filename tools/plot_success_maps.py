@@ -26,7 +26,11 @@ def main():
     steps = sorted({k[0] for k in cells})
     prefs = sorted({k[1] for k in cells})
     betas = sorted({k[2] for k in cells})
-    fig, axes = plt.subplots(1, len(steps), figsize=(4.5 * len(steps), 4.2), squeeze=False)
+    # One panel per step length; beta labelled once, on the left (the panels share it). Cell
+    # text is sized to the cell and white on dark cells so it reads at README width.
+    fig, axes = plt.subplots(1, len(steps), figsize=(4.6 * len(steps) + 1.2, 5.2), squeeze=False,
+                             sharey=True, gridspec_kw={"wspace": 0.08})
+    cell_pt = min(12.0, 260.0 / max(len(prefs), len(betas)))
     for ax, step in zip(axes[0], steps):
         grid = [[float("nan")] * len(prefs) for _ in betas]
         for (s, p, b), outcomes in cells.items():
@@ -44,19 +48,21 @@ def main():
             mark = "" if ok == n else max(modes, key=modes.get)
             if outcomes.count("unstable"):
                 mark = "U"
-            ax.text(prefs.index(p), betas.index(b), f"{ok}/{n}\n{mark}", ha="center",
-                    va="center", fontsize=6)
+            rate = ok / n
+            colour = "white" if rate < 0.25 or rate > 0.8 else "black"
+            ax.text(prefs.index(p), betas.index(b), f"{ok}/{n}" + (f" {mark}" if mark else ""),
+                    ha="center", va="center", fontsize=cell_pt, color=colour)
         ax.set_xticks(range(len(prefs)))
-        ax.set_xticklabels([f"{p:g}" for p in prefs])
+        ax.set_xticklabels([f"{p:g}" for p in prefs], fontsize=10)
         ax.set_yticks(range(len(betas)))
-        ax.set_yticklabels([f"{b:g}" for b in betas])
-        ax.set_xlabel("P_ref (Pa)")
-        ax.set_ylabel("beta")
-        ax.set_title(f"dL = {step:g} mm")
-    fig.colorbar(im, ax=axes[0].tolist(), label="success rate")
-    fig.suptitle("success rate (I / II / L = lost edge: dominant failure mode)")
+        ax.set_yticklabels([f"{b:g}" for b in betas], fontsize=10)
+        ax.set_xlabel("P_ref (Pa)", fontsize=11)
+        ax.set_title(f"dL = {step:g} mm", fontsize=12)
+    axes[0][0].set_ylabel("beta", fontsize=11)
+    fig.colorbar(im, ax=axes[0].tolist(), label="success rate", fraction=0.025, pad=0.02)
+    fig.suptitle("success rate per cell: successes/trials; I / II / L (lost edge): dominant failure mode",
+                 fontsize=12)
     fig.savefig(sys.argv[2], dpi=110, bbox_inches="tight")
-
 
 if __name__ == "__main__":
     main()

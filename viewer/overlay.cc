@@ -62,6 +62,31 @@ void AddTrialDecorations(const mjModel* m, const mjData* d, const ContourTrial& 
   Arrow(scn, origin, dir, 0.03, green);
 }
 
+OverlayValues CurrentOverlayValues(const ContourTrial& trial, const mjData* d) {
+  OverlayValues v;
+  v.t_s = d->time;
+  v.phase = trial.phase();
+  v.p_pa = trial.Pressures();
+  // Mean and differentials as the law defines them, on the current pressures.
+  const ContourStep now = ComputeContourStep(v.p_pa, trial.config().law);
+  v.mean_pa = now.p_mean_pa;
+  v.dpx_pa = now.dpx_pa;
+  v.dpy_pa = now.dpy_pa;
+  v.cf = trial.last_step().cf;
+  v.iterations = trial.result().iterations;
+  return v;
+}
+
+std::string OverlayValuesLine(const OverlayValues& v) {
+  char buf[320];
+  std::snprintf(buf, sizeof(buf),
+                "overlay t=%.4f phase=%s p_pa=%.9g,%.9g,%.9g,%.9g mean_pa=%.9g dpx_pa=%.9g "
+                "dpy_pa=%.9g cf=%.9g iterations=%d",
+                v.t_s, PhaseName(v.phase), v.p_pa[0], v.p_pa[1], v.p_pa[2], v.p_pa[3], v.mean_pa,
+                v.dpx_pa, v.dpy_pa, v.cf, v.iterations);
+  return buf;
+}
+
 PressureFigures::PressureFigures() { Reset(); }
 
 void PressureFigures::Reset() {
@@ -69,20 +94,29 @@ void PressureFigures::Reset() {
     mjv_defaultFigure(f);
     f->flg_extend = 1;
     f->gridsize[0] = 5;
-    f->gridsize[1] = 5;
     f->figurergba[3] = 0.5f;
+    f->linewidth = 2;
+    std::snprintf(f->xformat, sizeof(f->xformat), "%%.1f");
+    std::snprintf(f->xlabel, sizeof(f->xlabel), "time (s)");
   }
-  std::snprintf(pressures_.title, sizeof(pressures_.title), "log10 vacuum (Pa)");
-  std::snprintf(pressures_.xlabel, sizeof(pressures_.xlabel), "time (s)");
+  // log10 of the vacuum; ticks at whole decades read as 1e0 .. 1e5 Pa.
+  std::snprintf(pressures_.title, sizeof(pressures_.title), "chamber vacuum (Pa, log scale)");
+  std::snprintf(pressures_.yformat, sizeof(pressures_.yformat), "1e%%.0f");
+  pressures_.gridsize[1] = 6;
+  pressures_.range[1][0] = 0;
+  pressures_.range[1][1] = 5;
+  pressures_.flg_extend = 0;  // fixed decades; Add() sets the time range
   const char* names[8] = {"P1 SE", "P2 NE", "P3 NW", "P4 SW", "mean", "P_n", "P_ref", "P_g"};
   for (int i = 0; i < 8; ++i) std::snprintf(pressures_.linename[i], 100, "%s", names[i]);
   const float colours[8][3] = {{1, 0.3f, 0.3f}, {0.3f, 1, 0.3f}, {0.4f, 0.6f, 1}, {1, 1, 0.3f},
-                               {1, 1, 1},      {0.5f, 0.5f, 0.5f}, {0, 1, 1}, {1, 0, 1}};
+                               {1, 1, 1},      {0.6f, 0.6f, 0.6f}, {0, 1, 1}, {1, 0, 1}};
   for (int i = 0; i < 8; ++i)
     for (int k = 0; k < 3; ++k) pressures_.linergb[i][k] = colours[i][k];
-  pressures_.range[1][0] = 0;
-  pressures_.range[1][1] = 4.5;
   std::snprintf(correction_.title, sizeof(correction_.title), "correction factor c_f");
+  std::snprintf(correction_.yformat, sizeof(correction_.yformat), "%%.0f");
+  correction_.gridsize[1] = 5;
+  correction_.range[1][0] = -2;  // c_f spans [-beta, beta]; the axis grows past +-2 if needed
+  correction_.range[1][1] = 2;
   std::snprintf(correction_.linename[0], 100, "c_f");
   correction_.linergb[0][0] = 1;
   correction_.linergb[0][1] = 0.5f;
@@ -92,8 +126,8 @@ void PressureFigures::Reset() {
   last_t_ = -1;
 }
 
-void PressureFigures::Add(double t, const double p[4], const ContourStep& step,
-                          const ContourLawParams& law) {
+void PressureFigures::Add(const OverlayValues& v, const ContourLawParams& law) {
+  const double t = v.t_s;
   if (t <= last_t_) return;
   last_t_ = t;
   auto push = [](mjvFigure& f, int line, double x, double y) {
@@ -110,17 +144,30 @@ void PressureFigures::Add(double t, const double p[4], const ContourStep& step,
     f.linedata[line][2 * n + 1] = static_cast<float>(y);
     f.linepnt[line] = n + 1;
   };
-  auto lg = [](double v) { return std::log10(std::max(1.0, v)); };
-  for (int c = 0; c < 4; ++c) push(pressures_, c, t, lg(p[c]));
-  push(pressures_, 4, t, lg(0.25 * (p[0] + p[1] + p[2] + p[3])));
+  auto lg = [](double p) { return std::log10(std::max(1.0, p)); };
+  for (int c = 0; c < 4; ++c) push(pressures_, c, t, lg(v.p_pa[c]));
+  push(pressures_, 4, t, lg(v.mean_pa));
   push(pressures_, 5, t, lg(law.p_noise_pa));
   push(pressures_, 6, t, lg(law.p_ref_pa));
   push(pressures_, 7, t, lg(law.p_grasp_pa));
-  push(correction_, 0, t, step.cf);
+  push(correction_, 0, t, v.cf);
+  // The time axis spans the data in four round intervals (0.5, 1, 2, 5, 10 ... s), so its ticks
+  // read as round numbers; the vacuum axis keeps its decades.
+  const double first = pressures_.linedata[0][0];
+  double interval = 0.25;
+  for (double k : {0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0}) {
+    if (first + 4 * interval >= t) break;
+    interval = k;
+  }
+  for (mjvFigure* f : {&pressures_, &correction_}) {
+    f->range[0][0] = static_cast<float>(interval * std::floor(first / interval));
+    f->range[0][1] = f->range[0][0] + static_cast<float>(4 * interval);
+    std::snprintf(f->xformat, sizeof(f->xformat), interval < 1 ? "%%.2g" : "%%.0f");
+  }
 }
 
-std::string TrialStatusText(const ContourTrial& trial, double rtf, bool paused, double speed,
-                            const ChamberPressureDiagnostics* sensor) {
+std::string TrialStatusText(const ContourTrial& trial, const OverlayValues& v, double rtf,
+                            bool paused, double speed, const ChamberPressureDiagnostics* sensor) {
   const ChamberPressureSample* sample = sensor ? &sensor->last_sample() : nullptr;
   const TrialConfig& c = trial.config();
   // Sealed share of each chamber's opening (the sensor's view).
@@ -131,21 +178,28 @@ std::string TrialStatusText(const ContourTrial& trial, double rtf, bool paused, 
                   100 * sample->sealed_area_m2[0] / quarter, 100 * sample->sealed_area_m2[1] / quarter,
                   100 * sample->sealed_area_m2[2] / quarter, 100 * sample->sealed_area_m2[3] / quarter);
   }
+  char timing[96];
+  if (rtf >= 0) {
+    std::snprintf(timing, sizeof(timing), "speed x%.2f %s   real-time factor %.2f   (F1: help)",
+                  speed, paused ? "PAUSED" : "", rtf);
+  } else {
+    std::snprintf(timing, sizeof(timing), "t = %.3f s", v.t_s);
+  }
   const TrialResult& r = trial.result();
-  const ContourStep& s = trial.last_step();
   char buf[1024];
   std::snprintf(buf, sizeof(buf),
                 "P_ref %.0f Pa   beta %.2f   dL %.2f mm   seed %llu\n"
                 "phase %s   outcome %s\n"
+                "P1 %.0f  P2 %.0f  P3 %.0f  P4 %.0f Pa\n"
                 "mean P %.1f Pa   dPx %.1f  dPy %.1f Pa   c_f %.2f\n"
                 "iterations %d   swept %.0f deg   path points %zu\n"
                 "%s\n"
-                "speed x%.2f %s   real-time factor %.2f   (F1: help)",
+                "%s",
                 c.law.p_ref_pa, c.law.beta, c.law.step_mm,
-                static_cast<unsigned long long>(c.seed), PhaseName(trial.phase()),
-                OutcomeName(r.outcome), s.p_mean_pa, s.dpx_pa, s.dpy_pa, s.cf, r.iterations,
-                trial.phase() == TrialPhase::kDone ? r.swept_deg : 0.0, trial.path().size(),
-                sealed, speed, paused ? "PAUSED" : "", rtf);
+                static_cast<unsigned long long>(c.seed), PhaseName(v.phase), OutcomeName(r.outcome),
+                v.p_pa[0], v.p_pa[1], v.p_pa[2], v.p_pa[3], v.mean_pa, v.dpx_pa, v.dpy_pa, v.cf,
+                v.iterations, trial.phase() == TrialPhase::kDone ? r.swept_deg : trial.swept_deg(),
+                trial.path().size(), sealed, timing);
   return buf;
 }
 

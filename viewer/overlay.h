@@ -3,6 +3,7 @@
 #ifndef SSC_VIEWER_OVERLAY_H_
 #define SSC_VIEWER_OVERLAY_H_
 
+#include <array>
 #include <string>
 
 #include <mujoco/mujoco.h>
@@ -16,13 +17,28 @@ namespace ssc {
 void AddTrialDecorations(const mjModel* m, const mjData* d, const ContourTrial& trial,
                          int tool_site, mjvScene* scn);
 
-// Live figures: chamber pressures and mean P on a log10 axis with lines at P_n, P_ref and P_g;
-// the correction factor c_f.
+// What the overlay shows now, in every phase: the sensor's current filtered pressures (not only
+// the values of the last control iteration), their mean and differentials, and the c_f of the
+// last iteration. One function for the text, the figures and the printed check line.
+struct OverlayValues {
+  double t_s = 0;
+  TrialPhase phase = TrialPhase::kApproach;
+  std::array<double, 4> p_pa{};
+  double mean_pa = 0, dpx_pa = 0, dpy_pa = 0;
+  double cf = 0;  // last control iteration (0 before following starts)
+  int iterations = 0;
+};
+OverlayValues CurrentOverlayValues(const ContourTrial& trial, const mjData* d);
+// One line for tests and logs: "overlay t=.. phase=.. p_pa=a,b,c,d mean_pa=.. cf=.."
+std::string OverlayValuesLine(const OverlayValues& v);
+
+// Live figures: the four chamber pressures and their mean on a log axis with the reference
+// lines P_n, P_ref and P_g; the correction factor c_f.
 class PressureFigures {
  public:
   PressureFigures();
   void Reset();
-  void Add(double t_s, const double p_pa[4], const ContourStep& step, const ContourLawParams& law);
+  void Add(const OverlayValues& v, const ContourLawParams& law);
   mjvFigure& pressures() { return pressures_; }
   mjvFigure& correction() { return correction_; }
 
@@ -31,9 +47,11 @@ class PressureFigures {
   double last_t_ = -1;
 };
 
-// The text panel: parameters, phase, outcome and live metrics.
-std::string TrialStatusText(const ContourTrial& trial, double realtime_factor, bool paused,
-                            double speed, const ChamberPressureDiagnostics* sensor);
+// The text panel: parameters, phase, outcome and live metrics. realtime_factor < 0 (off-screen
+// shots, where it means nothing) leaves it out.
+std::string TrialStatusText(const ContourTrial& trial, const OverlayValues& values,
+                            double realtime_factor, bool paused, double speed,
+                            const ChamberPressureDiagnostics* sensor);
 std::string ViewerHelpText();
 
 }  // namespace ssc

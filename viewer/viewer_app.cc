@@ -34,20 +34,37 @@ struct Session {
   double speed = 1.0;
   bool button_left = false, button_right = false;
   double last_x = 0, last_y = 0;
-  int last_iteration = -1;
+  double next_figure_s = 0;  // the figures sample the overlay values every kFigurePeriodS
+  int arm_base_body = -1;    // the arm's base (arm scenes): framed together with the cup
+  bool close_up = false;     // T: the cup alone, close
 };
 
-// Tracking looks at the lip (the tool site), not at the cup body's centre of mass.
-void SetTrackingCamera(Session* s) { s->cam.type = mjCAMERA_FREE; }
+constexpr double kFigurePeriodS = 0.02;
+
+// The camera follows the lip (the tool site). With an arm, the overview keeps the whole arm in
+// frame: it looks at the middle of base and cup from far enough to see both.
 void FollowCup(Session* s) {
   if (!s->tracking) return;
-  for (int k = 0; k < 3; ++k) s->cam.lookat[k] = s->d->site_xpos[3 * s->tool_site + k];
+  const mjtNum* cup = s->d->site_xpos + 3 * s->tool_site;
+  if (s->arm_base_body < 0 || s->close_up) {
+    for (int k = 0; k < 3; ++k) s->cam.lookat[k] = cup[k];
+    s->cam.distance = 0.25;
+    return;
+  }
+  const mjtNum* base = s->d->xpos + 3 * s->arm_base_body;
+  const mjtNum top[3] = {base[0], base[1], base[2] + 1.0};  // the elbow rises about 1 m
+  mjtNum span = 0;
+  for (int k = 0; k < 3; ++k) {
+    s->cam.lookat[k] = 0.5 * (cup[k] + top[k]) - (k == 2 ? 0.25 : 0.0);
+    span = std::max(span, std::fabs(cup[k] - top[k]));
+  }
+  s->cam.distance = 1.6 * span + 0.4;
 }
 
 void Restart(Session* s) {
   s->trial->Reset();
   s->figures.Reset();
-  s->last_iteration = -1;
+  s->next_figure_s = 0;
 }
 
 void OnKey(GLFWwindow* w, int key, int, int action, int) {
@@ -68,9 +85,15 @@ void OnKey(GLFWwindow* w, int key, int, int action, int) {
     case GLFW_KEY_V: law.beta = std::max(0.0, law.beta - 0.5); break;
     case GLFW_KEY_L: law.step_mm = std::min(100.0, law.step_mm + 0.5); break;
     case GLFW_KEY_K: law.step_mm = std::max(0.5, law.step_mm - 0.5); break;
-    case GLFW_KEY_T:
-      s->tracking = !s->tracking;
-      SetTrackingCamera(s);
+    case GLFW_KEY_T:  // arm overview -> cup close-up -> free camera -> overview
+      if (s->tracking && !s->close_up && s->arm_base_body >= 0) {
+        s->close_up = true;
+      } else if (s->tracking) {
+        s->tracking = false;
+      } else {
+        s->tracking = true;
+        s->close_up = false;
+      }
       break;
     case GLFW_KEY_F1: s->help = !s->help; break;
     default: break;
@@ -112,13 +135,17 @@ void Render(Session* s, mjrRect viewport, double rtf) {
   mjv_updateScene(s->m, s->d, &s->opt, nullptr, &s->cam, mjCAT_ALL, &s->scn);
   AddTrialDecorations(s->m, s->d, *s->trial, s->tool_site, &s->scn);
   mjr_render(viewport, &s->scn, &s->con);
-  // Figures on the right, text at the top left.
-  const int fw = viewport.width / 3, fh = viewport.height / 3;
+  // Figures on the right (the pressure one tall enough for its eight-line legend), text at the
+  // top left.
+  const int fw = viewport.width * 3 / 8, fh = viewport.height * 5 / 9;
+  const int ch = viewport.height - fh;
   mjrRect top = {viewport.left + viewport.width - fw, viewport.bottom + viewport.height - fh, fw, fh};
-  mjrRect below = {top.left, top.bottom - fh, fw, fh};
+  mjrRect below = {top.left, viewport.bottom, fw, std::min(ch, viewport.height / 3)};
   mjr_figure(top, &s->figures.pressures(), &s->con);
   mjr_figure(below, &s->figures.correction(), &s->con);
-  const std::string status = TrialStatusText(*s->trial, rtf, s->paused, s->speed, s->sensor);
+  const OverlayValues values = CurrentOverlayValues(*s->trial, s->d);
+  const std::string status =
+      TrialStatusText(*s->trial, values, rtf, s->paused, s->speed, s->sensor);
   mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport, status.c_str(), nullptr, &s->con);
   if (s->help) {
     mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMLEFT, viewport, ViewerHelpText().c_str(), nullptr,
@@ -126,15 +153,12 @@ void Render(Session* s, mjrRect viewport, double rtf) {
   }
 }
 
-// Steps the trial once and feeds the figures at each control iteration.
+// Steps the trial once; the figures sample what the overlay shows, in every phase.
 void StepOnce(Session* s) {
   s->trial->Step();
-  if (s->trial->result().iterations != s->last_iteration &&
-      s->trial->phase() != TrialPhase::kApproach) {
-    s->last_iteration = s->trial->result().iterations;
-    const ContourStep& step = s->trial->last_step();
-    const std::array<double, 4> p = s->trial->Pressures();
-    s->figures.Add(s->d->time, p.data(), step, s->trial->config().law);
+  if (s->d->time >= s->next_figure_s) {
+    s->figures.Add(CurrentOverlayValues(*s->trial, s->d), s->trial->config().law);
+    s->next_figure_s = s->d->time + kFigurePeriodS;
   }
 }
 
@@ -213,11 +237,16 @@ int RunViewer(const ViewerOptions& options) {
   mjr_defaultContext(&s->con);
   mjv_makeScene(s->m, &s->scn, 6000);
   mjr_makeContext(s->m, &s->con, mjFONTSCALE_150);
-  SetTrackingCamera(s);
+  s->cam.type = mjCAMERA_FREE;
+  // Arm scenes: the base of the first joint's chain; gantry and probe scenes have none.
+  if (mj_name2id(s->m, mjOBJ_JOINT, "gantry_x") < 0 && s->m->njnt > 0 &&
+      s->m->jnt_type[0] == mjJNT_HINGE) {
+    s->arm_base_body = s->m->jnt_bodyid[0];
+  }
   mj_forward(s->m, s->d);
-  s->cam.distance = 0.18;
-  s->cam.azimuth = 200;
-  s->cam.elevation = -30;
+  s->cam.azimuth = 225;
+  s->cam.elevation = -25;
+  FollowCup(s);
   s->speed = options.speed;
 
   int code = 0;
@@ -228,7 +257,7 @@ int RunViewer(const ViewerOptions& options) {
     const int w = std::min(options.width, s->con.offWidth);
     const int h = std::min(options.height, s->con.offHeight);
     const mjrRect viewport = {0, 0, w, h};
-    Render(s, viewport, 0);
+    Render(s, viewport, -1);  // no real-time factor: nothing ran in real time
     std::vector<unsigned char> rgb(static_cast<size_t>(w) * h * 3);
     mjr_readPixels(rgb.data(), nullptr, viewport, &s->con);
     if (!WritePng(options.screenshot, w, h, rgb)) {
@@ -239,6 +268,7 @@ int RunViewer(const ViewerOptions& options) {
       std::printf("wrote %s (%dx%d) at t = %.4f s; phase %s; tool at %.9f %.9f %.9f m\n",
                   options.screenshot.c_str(), w, h, s->d->time, PhaseName(s->trial->phase()),
                   p[0], p[1], p[2]);
+      std::printf("%s\n", OverlayValuesLine(CurrentOverlayValues(*s->trial, s->d)).c_str());
     }
   } else {
     ListScenes();

@@ -50,6 +50,7 @@ void PrintUsage() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  ssc::InstallMuJoCoMessageHandlers();
   const std::string version_error = ssc::CheckMuJoCoVersion();
   if (!version_error.empty()) {
     std::fprintf(stderr, "ssc: %s\n", version_error.c_str());

@@ -1,0 +1,79 @@
+# `cmake --install`: the libraries with their headers, the MuJoCo plugin, `ssc`, the models,
+# scenes and plot scripts, and a package config so that a downstream project does
+#   find_package(ssc CONFIG REQUIRED)   target_link_libraries(app PRIVATE ssc::ssc)
+# Layout under the prefix:
+#   bin/ssc   lib/libssc_*.a   lib/libssc_plugin.so   include/ssc/<folder>/*.h
+#   share/ssc/{models,scenes,tools}   lib/cmake/ssc/ssc{Config,ConfigVersion,Targets}.cmake
+# Installed binaries find share/ssc next to them (ResourceDir() in the MuJoCo adapters).
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(SSC_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/ssc")
+set(SSC_INSTALL_INCLUDEDIR "${CMAKE_INSTALL_INCLUDEDIR}/ssc")
+set(SSC_INSTALL_DATADIR "${CMAKE_INSTALL_DATADIR}/ssc")
+
+# The libraries a downstream program links (the viewer stays with `ssc`: it needs GLFW).
+set(SSC_EXPORTED_LIBRARIES)
+foreach(t ssc_warnings ssc_common ssc_pneumatics ssc_plugin ssc_geometry ssc_control
+          ssc_calibration ssc_objects ssc_runtime ssc_studies ssc_robotlog ssc_compare)
+  if(TARGET ${t})
+    list(APPEND SSC_EXPORTED_LIBRARIES ${t})
+    # Targets say PUBLIC "${PROJECT_SOURCE_DIR}" for the build; installed, the headers live in
+    # include/ssc with the same sub-folders.
+    if(NOT t STREQUAL "ssc_warnings")
+      set_target_properties(${t} PROPERTIES INTERFACE_INCLUDE_DIRECTORIES
+        "$<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>;$<INSTALL_INTERFACE:${SSC_INSTALL_INCLUDEDIR}>")
+    endif()
+    string(REGEX REPLACE "^ssc_" "" _export_name "${t}")
+    set_target_properties(${t} PROPERTIES EXPORT_NAME ${_export_name})
+  endif()
+endforeach()
+# ssc::ssc: everything above in one name.
+add_library(ssc_all INTERFACE)
+list(REMOVE_ITEM SSC_EXPORTED_LIBRARIES ssc_warnings)  # static libraries list it privately
+target_link_libraries(ssc_all INTERFACE ${SSC_EXPORTED_LIBRARIES})
+set_target_properties(ssc_all PROPERTIES EXPORT_NAME ssc)
+
+# Installed `ssc` and the plugin find each other and MuJoCo through their rpath.
+set_target_properties(ssc PROPERTIES INSTALL_RPATH "$ORIGIN/../${CMAKE_INSTALL_LIBDIR};${CMAKE_INSTALL_RPATH}")
+# In the Python wheel the plugin sits in ssc_twin/, libmujoco in ../mujoco.
+set_target_properties(ssc_plugin PROPERTIES INSTALL_RPATH "$ORIGIN/../mujoco;${CMAKE_INSTALL_RPATH}")
+
+install(TARGETS ssc_all ssc_warnings ${SSC_EXPORTED_LIBRARIES} EXPORT sscTargets
+        RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}"
+        LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}"
+        ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}")
+install(TARGETS ssc RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
+install(EXPORT sscTargets NAMESPACE ssc:: DESTINATION "${SSC_INSTALL_CMAKEDIR}")
+
+# Headers of every library folder, keeping the paths the sources include them by.
+foreach(dir common plugin geometry controller calibration objects runtime studies robotlog compare)
+  if(IS_DIRECTORY "${PROJECT_SOURCE_DIR}/${dir}")
+    install(DIRECTORY "${PROJECT_SOURCE_DIR}/${dir}" DESTINATION "${SSC_INSTALL_INCLUDEDIR}"
+            FILES_MATCHING PATTERN "*.h" PATTERN "fuzz" EXCLUDE PATTERN "tools" EXCLUDE)
+  endif()
+endforeach()
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/models" "${PROJECT_SOURCE_DIR}/scenes"
+        DESTINATION "${SSC_INSTALL_DATADIR}")
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/tools/" DESTINATION "${SSC_INSTALL_DATADIR}/tools"
+        FILES_MATCHING PATTERN "plot_*.py")
+install(FILES "${PROJECT_SOURCE_DIR}/requirements.txt" DESTINATION "${SSC_INSTALL_DATADIR}")
+
+# Studies may link MPI (privately; a static library passes it on).
+set(SSC_CONFIG_WITH_MPI "${SSC_MPI_FOUND}")
+
+# MuJoCo as this build found it: a regular install (find_dependency) or the wheel's library.
+if(SSC_MUJOCO_LIBRARY)
+  set(SSC_CONFIG_MUJOCO_LIBRARY "${SSC_MUJOCO_LIBRARY}")
+  set(SSC_CONFIG_MUJOCO_INCLUDE_DIR "${SSC_MUJOCO_INCLUDE_DIR}")
+else()
+  set(SSC_CONFIG_MUJOCO_LIBRARY "")
+  set(SSC_CONFIG_MUJOCO_INCLUDE_DIR "")
+endif()
+configure_package_config_file("${CMAKE_CURRENT_LIST_DIR}/sscConfig.cmake.in"
+  "${PROJECT_BINARY_DIR}/sscConfig.cmake" INSTALL_DESTINATION "${SSC_INSTALL_CMAKEDIR}"
+  PATH_VARS SSC_INSTALL_DATADIR SSC_INSTALL_INCLUDEDIR)
+write_basic_package_version_file("${PROJECT_BINARY_DIR}/sscConfigVersion.cmake"
+  VERSION "${PROJECT_VERSION}" COMPATIBILITY SameMinorVersion)
+install(FILES "${PROJECT_BINARY_DIR}/sscConfig.cmake" "${PROJECT_BINARY_DIR}/sscConfigVersion.cmake"
+        DESTINATION "${SSC_INSTALL_CMAKEDIR}")

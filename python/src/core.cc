@@ -1,0 +1,484 @@
+// ssc_twin._core: the twin's C++ for Python (nanobind). Trials, sweeps, the kinematic probe and
+// log comparison run here; results come back as dicts of numbers and NumPy arrays. No physics or
+// control is re-written in Python.
+#include <nanobind/nanobind.h>
+#include <nanobind/ndarray.h>
+#include <nanobind/stl/array.h>
+#include <nanobind/stl/string.h>
+#include <nanobind/stl/vector.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "compare/log_replay.h"
+#include "controller/pure/contour_law.h"
+#include "geometry/dimensions.h"
+#include "objects/object_mjcf.h"
+#include "objects/object_spec.h"
+#include "runtime/mujoco_model.h"
+#include "runtime/trial.h"
+#include "studies/edge_probe.h"
+#include "studies/object_trials.h"
+#include "studies/sweep.h"
+#include "robotlog/topic_csv.h"
+
+namespace nb = nanobind;
+using namespace nb::literals;
+
+namespace ssc {
+namespace {
+
+using Array = nb::ndarray<nb::numpy, double>;
+
+// A NumPy array that owns a copy of `values` laid out as `shape`.
+nb::object ToNumpy(std::vector<double> values, std::vector<size_t> shape) {
+  auto* heap = new std::vector<double>(std::move(values));
+  nb::capsule owner(heap, [](void* p) noexcept { delete static_cast<std::vector<double>*>(p); });
+  return Array(heap->data(), shape.size(), shape.data(), owner).cast();
+}
+
+template <size_t N>
+nb::object Rows(const std::vector<std::array<double, N>>& rows) {
+  std::vector<double> flat;
+  flat.reserve(rows.size() * N);
+  for (const auto& r : rows) flat.insert(flat.end(), r.begin(), r.end());
+  return ToNumpy(std::move(flat), {rows.size(), N});
+}
+
+nb::object Column(const std::vector<double>& v) { return ToNumpy(v, {v.size()}); }
+
+// {"key", nb::cast(value)}, ... -> a dict.
+nb::dict Dict(std::initializer_list<std::pair<const char*, nb::object>> items) {
+  nb::dict d;
+  for (const auto& [key, value] : items) d[key] = value;
+  return d;
+}
+
+[[noreturn]] void Fail(const std::string& what) { throw std::runtime_error(what); }
+
+ModelPtr Load(const std::string& scene) {
+  std::string error;
+  ModelPtr m = LoadModel(ResolveScenePath(scene), &error);
+  if (!m) Fail(error);
+  return m;
+}
+
+TrialConfig MakeConfig(double pref, double beta, double step_mm, std::uint64_t seed,
+                       const std::string& object, std::string* scene) {
+  TrialConfig config;
+  config.law.p_ref_pa = pref;
+  config.law.beta = beta;
+  config.law.step_mm = step_mm;
+  config.seed = seed;
+  if (!object.empty()) {
+    // A test object: its scenes are written next to the other generated files (like ssc view).
+    const ObjectSpec spec = ObjectByName(object);
+    if (spec.name.empty()) Fail("unknown test object '" + object + "' (e.g. disk_d10, hole_d10, corner_a090, volute)");
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / "ssc_twin_objects";
+    std::string error;
+    if (!WriteObjectFiles(spec, dir.string(), ResourceDir(), &error)) Fail(error);
+    const ObjectFiles files = ObjectFileNames(spec.name);
+    *scene = (dir / (scene->find("gantry") != std::string::npos ? files.gantry_scene
+                                                                 : files.arm_scene)).string();
+    config = ObjectTrialConfig(spec, config.law, seed);
+  }
+  if (const std::string e = config.Validate(); !e.empty()) Fail(e);
+  return config;
+}
+
+nb::dict MetricsDict(const TrialResult& r) {
+  const DiskTrialMetrics& m = r.metrics;
+  nb::dict d;
+  d["s_mm"] = m.s_mm;
+  d["r_mean_mm"] = m.r_mean_mm;
+  d["dr_mm"] = m.dr_mm;
+  d["sigma_r_mm"] = m.sigma_r_mm;
+  d["s_c"] = m.s_c;
+  d["duration_s"] = m.duration_s;
+  d["speed_mm_s"] = m.speed_mm_s;
+  d["speed_body_d_s"] = m.speed_body_d_s;
+  d["contour_mean_mm"] = m.contour_mean_mm;
+  d["contour_max_mm"] = m.contour_max_mm;
+  d["swept_deg"] = r.swept_deg;
+  d["end_arc_mm"] = r.end_arc_mm;
+  d["iterations"] = r.iterations;
+  return d;
+}
+
+nb::dict LogDict(const std::vector<TrialLogRow>& log) {
+  std::vector<double> t, pbar, dpx, dpy, cf, ft, phase, iteration;
+  std::vector<std::array<double, 3>> tool;
+  std::vector<std::array<double, 4>> p;
+  std::vector<std::array<double, 2>> step;
+  for (const TrialLogRow& row : log) {
+    t.push_back(row.t_s);
+    tool.push_back(row.tool_m);
+    p.push_back(row.p_pa);
+    pbar.push_back(row.pbar_pa);
+    dpx.push_back(row.dpx_pa);
+    dpy.push_back(row.dpy_pa);
+    cf.push_back(row.cf);
+    step.push_back({row.step_x_m, row.step_y_m});
+    ft.push_back(row.ft_normal_n);
+    phase.push_back(static_cast<double>(row.phase));
+    iteration.push_back(row.iteration ? 1 : 0);
+  }
+  nb::dict d;
+  d["t_s"] = Column(t);
+  d["tool_m"] = Rows(tool);
+  d["p_pa"] = Rows(p);
+  d["pbar_pa"] = Column(pbar);
+  d["dpx_pa"] = Column(dpx);
+  d["dpy_pa"] = Column(dpy);
+  d["cf"] = Column(cf);
+  d["step_m"] = Rows(step);
+  d["ft_normal_n"] = Column(ft);
+  d["phase"] = Column(phase);  // 0 approach, 1 move, 2 follow, 3 done (phase_names)
+  d["iteration"] = Column(iteration);
+  return d;
+}
+
+nb::dict ResultDict(const std::string& scene, const TrialConfig& c, const TrialResult& r) {
+  nb::dict d;
+  d["scene"] = scene;
+  d["outcome"] = std::string(OutcomeName(r.outcome));
+  d["detail"] = r.detail;
+  d["seed"] = c.seed;
+  d["parameters"] = Dict({{"pref_pa", nb::cast(c.law.p_ref_pa)}, {"beta", nb::cast(c.law.beta)},
+                          {"step_mm", nb::cast(c.law.step_mm)}, {"timeout_s", nb::cast(c.timeout_s)},
+                          {"control_period_s", nb::cast(c.control_period_s)}});
+  d["metrics"] = MetricsDict(r);
+  d["follow_time_s"] = r.follow_time_s;
+  d["sim_time_s"] = r.sim_time_s;
+  d["wall_time_s"] = r.wall_time_s;
+  d["hold_height_mm"] = r.hold_height_m * 1e3;
+  if (!r.log.empty()) d["log"] = LogDict(r.log);
+  return d;
+}
+
+nb::dict StepDict(const ContourStep& s) {
+  nb::dict d;
+  d["p_mean_pa"] = s.p_mean_pa;
+  d["dpx_pa"] = s.dpx_pa;
+  d["dpy_pa"] = s.dpy_pa;
+  d["cf"] = s.cf;
+  d["moving"] = s.moving;
+  d["along_edge"] = ToNumpy({s.along_edge[0], s.along_edge[1]}, {2});
+  d["correction"] = ToNumpy({s.correction[0], s.correction[1]}, {2});
+  d["direction"] = ToNumpy({s.direction[0], s.direction[1]}, {2});
+  d["step_m"] = ToNumpy({s.step_m[0], s.step_m[1]}, {2});
+  return d;
+}
+
+ContourLawParams Law(double pref, double beta, double step_mm) {
+  ContourLawParams law;
+  law.p_ref_pa = pref;
+  law.beta = beta;
+  law.step_mm = step_mm;
+  if (const std::string e = law.Validate(); !e.empty()) Fail(e);
+  return law;
+}
+
+// A trial that Python steps one control iteration at a time (the Gymnasium environment), with
+// the law's step or one given per iteration.
+class SteppedTrial {
+ public:
+  SteppedTrial(const std::string& scene, double pref, double beta, double step_mm,
+               std::uint64_t seed, const std::string& object, double timeout_s) {
+    scene_ = scene;
+    config_ = MakeConfig(pref, beta, step_mm, seed, object, &scene_);
+    if (timeout_s > 0) config_.timeout_s = timeout_s;
+    if (const std::string e = config_.Validate(); !e.empty()) Fail(e);
+    model_ = Load(scene_);
+    std::string error;
+    data_ = MakeData(model_.get(), &error);
+    if (!data_) Fail(error);
+    trial_ = ContourTrial::Create(model_.get(), data_.get(), config_, false, &error);
+    if (!trial_) Fail(error);
+  }
+  void Reset(std::uint64_t seed) {
+    trial_->mutable_config().seed = seed;
+    trial_->Reset();
+  }
+  // The policy: the contour law inside the trial, or Python (apply_step at each iteration).
+  void SetExternalPolicy(bool on) { trial_->SetExternalPolicy(on); }
+  bool RunToNextIteration() {
+    nb::gil_scoped_release release;
+    return trial_->RunToNextIteration();
+  }
+  void ApplyStep(std::array<double, 2> step_m) { trial_->ApplyStep(step_m); }
+  std::array<double, 4> IterationPressures() const { return trial_->HostPressures(); }
+  std::array<double, 4> Pressures() const { return trial_->Pressures(); }
+  std::array<double, 3> ToolPosition() const {
+    const double* p = data_->site_xpos + 3 * trial_->tool_site();
+    return {p[0], p[1], p[2]};
+  }
+  std::array<double, 6> ForceTorque() const {
+    // The F/T sensors as the model names them (force then torque, N and N m).
+    std::array<double, 6> ft{};
+    const int f = mj_name2id(model_.get(), mjOBJ_SENSOR, "ft_force");
+    const int t = mj_name2id(model_.get(), mjOBJ_SENSOR, "ft_torque");
+    for (int k = 0; k < 3; ++k) {
+      if (f >= 0) ft[k] = data_->sensordata[model_->sensor_adr[f] + k];
+      if (t >= 0) ft[3 + k] = data_->sensordata[model_->sensor_adr[t] + k];
+    }
+    return ft;
+  }
+  std::string Phase() const { return PhaseName(trial_->phase()); }
+  nb::dict Result() const { return ResultDict(scene_, trial_->config(), trial_->result()); }
+  nb::dict LastStep() const { return StepDict(trial_->last_step()); }
+  double Time() const { return data_->time; }
+  double SweptDeg() const { return trial_->swept_deg(); }
+  double TrackedArcM() const { return trial_->tracked_arc_m(); }
+  nb::dict Target() const {
+    const TrialTarget& t = trial_->config().target;
+    const bool swept = t.goal.kind == TrialGoal::Kind::kSweptAngle;
+    const std::array<double, 2> centre = {t.goal.centre[0], t.goal.centre[1]};
+    return Dict({{"goal", nb::cast(std::string(swept ? "swept_angle" : "goal_point"))},
+                 {"sweep_deg", nb::cast(t.goal.sweep_deg)},
+                 {"goal_arc_m", nb::cast(t.goal.goal_arc_m)},
+                 {"centre", nb::cast(centre)},
+                 {"disk_radius_m", nb::cast(t.disk_radius_m)},
+                 {"control_period_s", nb::cast(trial_->config().control_period_s)},
+                 {"timeout_s", nb::cast(trial_->config().timeout_s)}});
+  }
+  // Signed distance of (x, y) from the followed edge (negative on the object), m.
+  double ContourDistanceM(double x, double y) const {
+    const TrialTarget& t = trial_->config().target;
+    if (t.edge) return t.edge->SignedDistance(x, y);
+    return std::hypot(x - t.goal.centre[0], y - t.goal.centre[1]) - t.disk_radius_m;
+  }
+  std::string scene() const { return scene_; }
+
+ private:
+  std::string scene_;
+  TrialConfig config_;
+  ModelPtr model_;
+  DataPtr data_;
+  std::unique_ptr<ContourTrial> trial_;
+};
+
+}  // namespace
+}  // namespace ssc
+
+NB_MODULE(_core, m) {
+  using namespace ssc;
+  m.doc() = "Smart Suction Cup twin: trials, sweeps, probe and log comparison (C++).";
+
+  m.def("resource_dir", &ResourceDir, "The folder holding models/ and scenes/.");
+  m.def("set_resource_dir", &SetResourceDir, "dir"_a);
+  m.def("scene_path", &ResolveScenePath, "scene"_a,
+        "Path of a scene given by name (under scenes/) or path.");
+  m.def("mujoco_version", [] { return std::string(mj_versionString()); });
+  m.def("check_mujoco_version", &CheckMuJoCoVersion,
+        "Empty when the loaded libmujoco matches the headers this was built with.");
+  m.def("install_message_handlers", [] {
+    // Only where the host (e.g. the mujoco package) set none: no MUJOCO_LOG.TXT litter.
+    InstallMuJoCoMessageHandlers();
+  });
+  m.def("phase_names", [] {
+    return std::vector<std::string>{PhaseName(TrialPhase::kApproach), PhaseName(TrialPhase::kMoveToStart),
+                                    PhaseName(TrialPhase::kFollow), PhaseName(TrialPhase::kDone)};
+  });
+  m.def("object_names", [] {
+    std::vector<std::string> names;
+    for (const ObjectSpec& s : AllObjects()) names.push_back(s.name);
+    return names;
+  });
+
+  m.def("contour_step",
+        [](std::array<double, 4> p_pa, double pref, double beta, double step_mm) {
+          return StepDict(ComputeContourStep(p_pa, Law(pref, beta, step_mm)));
+        },
+        "p_pa"_a, "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 7.5,
+        "The published contour law on four chamber pressures (tool frame step, m).");
+
+  m.def("run_trial",
+        [](const std::string& scene, double pref, double beta, double step_mm, std::uint64_t seed,
+           const std::string& object, bool keep_log, double stop_at_s, double timeout_s) {
+          std::string scene_path = scene;
+          TrialConfig config = MakeConfig(pref, beta, step_mm, seed, object, &scene_path);
+          if (timeout_s > 0) config.timeout_s = timeout_s;
+          if (const std::string e = config.Validate(); !e.empty()) Fail(e);
+          ModelPtr model = Load(scene_path);
+          std::string error;
+          TrialResult r;
+          {
+            nb::gil_scoped_release release;
+            DataPtr data = MakeData(model.get(), &error);
+            auto trial = data ? ContourTrial::Create(model.get(), data.get(), config, keep_log, &error)
+                              : nullptr;
+            if (trial) r = stop_at_s > 0 ? trial->Run(stop_at_s) : trial->Run();
+          }
+          if (!error.empty()) Fail(error);
+          return ResultDict(ResolveScenePath(scene_path), config, r);
+        },
+        "scene"_a = "disk_benchmark", "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 7.5,
+        "seed"_a = 1, "object"_a = "", "keep_log"_a = true, "stop_at_s"_a = 0.0,
+        "timeout_s"_a = 0.0,
+        "One contour-following trial, as `ssc trial` runs it. object: a test object by name "
+        "(its arm scene; 'gantry' in scene picks the gantry one).");
+
+  m.def("sweep",
+        [](const std::string& scene, std::vector<double> pref, std::vector<double> beta,
+           std::vector<double> step_mm, int repeats, std::uint64_t seed, int threads,
+           const std::string& out_csv) {
+          SweepSpec spec;
+          spec.scene_name = scene;
+          spec.pref_pa = std::move(pref);
+          spec.beta = std::move(beta);
+          spec.step_mm = std::move(step_mm);
+          spec.repeats = repeats;
+          spec.seed = seed;
+          spec.threads = threads;
+          spec.out_csv = out_csv;
+          ModelPtr model = Load(scene);
+          SweepSummary summary;
+          std::string error;
+          bool ok = false;
+          {
+            nb::gil_scoped_release release;
+            ok = RunSweep(model.get(), spec, nullptr, &summary, &error);
+          }
+          if (!ok) Fail(error);
+          return Dict({{"csv", nb::cast(out_csv)}, {"total", nb::cast(summary.total)},
+                       {"ran", nb::cast(summary.ran)}, {"skipped", nb::cast(summary.skipped)},
+                       {"wall_s", nb::cast(summary.wall_s)}});
+        },
+        "scene"_a = "disk_benchmark_gantry", "pref"_a, "beta"_a, "step_mm"_a, "repeats"_a = 3,
+        "seed"_a = 1, "threads"_a = 1, "out_csv"_a,
+        "A P_ref x beta x step x repeats grid of trials into a resumable CSV (ssc sweep).");
+
+  nb::class_<EdgeProbe3d>(m, "Probe",
+                          "The cup on a mocap body placed over an edge; reads the sensor.")
+      .def("__init__",
+           [](EdgeProbe3d* self, const std::string& scene) {
+             std::string error;
+             std::unique_ptr<EdgeProbe3d> p = EdgeProbe3d::Create(ResolveScenePath(scene), &error);
+             if (!p) Fail(error);
+             new (self) EdgeProbe3d(std::move(*p));
+           },
+           "scene"_a = "probe_edge")
+      .def("read",
+           [](EdgeProbe3d& p, double x_m, double y_m, double yaw_rad, double surface_z_m,
+              double compression_m, double settle_s) {
+             ProbeReading r;
+             {
+               nb::gil_scoped_release release;
+               r = p.Read(x_m, y_m, yaw_rad, surface_z_m, compression_m, settle_s);
+             }
+             auto arr = [](const std::array<double, 4>& a) {
+               return ToNumpy({a[0], a[1], a[2], a[3]}, {4});
+             };
+             nb::dict d;
+             d["filtered_pa"] = arr(r.filtered_pa);
+             d["static_pa"] = arr(r.static_pa);
+             d["sealed_area_mm2"] = arr(r.sealed_area_mm2);
+             d["leak_area_mm2"] = arr(r.leak_area_mm2);
+             d["lip_contacts"] = r.lip_contacts;
+             d["pbar_pa"] = r.pbar_pa;
+             d["dpx_pa"] = r.dpx_pa;
+             d["dpy_pa"] = r.dpy_pa;
+             d["g_world_rad"] = r.g_world_rad;
+             d["travel_world_rad"] = r.travel_world_rad;
+             d["static_pbar_pa"] = r.static_pbar_pa;
+             return d;
+           },
+           "x_m"_a, "y_m"_a, "yaw_rad"_a = 0.0, "surface_z_m"_a = 0.010,
+           "compression_m"_a = 0.001, "settle_s"_a = 0.3);
+
+  m.def("compare",
+        [](const std::string& log_path, const std::string& scene, double tcp_offset_mm) {
+          ProcessOptions options;
+          options.tcp_offset_m = tcp_offset_mm * 1e-3;
+          ProcessedLog log;
+          LoadError load_error;
+          if (!LoadAnyLog(log_path, options, &log, &load_error)) Fail(load_error.ToString());
+          ModelPtr model = Load(scene);
+          ReplayComparison c;
+          std::string error;
+          bool ok = false;
+          {
+            nb::gil_scoped_release release;
+            ok = ReplayLog(model.get(), log, options.tcp_offset_m, &c, &error);
+          }
+          if (!ok) Fail(error);
+          auto arr = [](const std::array<double, 4>& a) {
+            return ToNumpy({a[0], a[1], a[2], a[3]}, {4});
+          };
+          nb::dict d;
+          d["rms_pa"] = arr(c.rms_pa);
+          d["rms_log10"] = arr(c.rms_log10);
+          d["correlation"] = arr(c.correlation);
+          d["mean_ratio"] = arr(c.mean_ratio);
+          d["pbar_rms_pa"] = c.pbar_rms_pa;
+          d["pbar_bias_pa"] = c.pbar_bias_pa;
+          d["direction_rms_deg"] = c.direction_rms_deg;
+          d["direction_median_deg"] = c.direction_median_deg;
+          d["direction_samples"] = c.direction_samples;
+          d["t_s"] = Column(c.t_s);
+          d["sim_pa"] = Rows(c.sim_pa);
+          d["log_pa"] = Rows(c.log_pa);
+          d["tcp_m"] = Rows(c.tcp_m);
+          return d;
+        },
+        "log"_a, "scene"_a = "disk_replay", "tcp_offset_mm"_a = kToolCentreOffsetM * 1e3,
+        "Replays a robot log (topic-CSV folder, .mat or plain CSV) in the twin and compares the "
+        "pressures (ssc compare without the closed loop).");
+
+  m.def("write_robot_log",
+        [](const std::string& dir, const std::string& scene, double pref, double beta,
+           double step_mm, std::uint64_t seed, double noise_pa) {
+          std::string scene_path = scene;
+          const TrialConfig config = MakeConfig(pref, beta, step_mm, seed, "", &scene_path);
+          ModelPtr model = Load(scene_path);
+          std::string error;
+          TrialResult r;
+          {
+            nb::gil_scoped_release release;
+            r = RunTrial(model.get(), config, true, &error);
+          }
+          const RobotLog log = RobotLogFromTrial(r, kToolCentreOffsetM, 1.0, 0.0, 101325.0, noise_pa, 1);
+          if (!WriteTopicCsvRecording(dir, log, LoggerVersion::kNewer, nullptr, &error)) Fail(error);
+          return std::string(OutcomeName(r.outcome));
+        },
+        "dir"_a, "scene"_a = "disk_benchmark", "pref"_a = 100.0, "beta"_a = 2.0,
+        "step_mm"_a = 7.5, "seed"_a = 1, "noise_pa"_a = 0.0,
+        "Runs a trial and writes it as a robot-format log folder (ssc trial --robot-log).");
+
+  nb::class_<SteppedTrial>(m, "SteppedTrial",
+                           "A trial stepped one control iteration at a time from Python.")
+      .def(nb::init<const std::string&, double, double, double, std::uint64_t, const std::string&,
+                    double>(),
+           "scene"_a = "disk_benchmark_gantry", "pref"_a = 100.0, "beta"_a = 2.0,
+           "step_mm"_a = 7.5, "seed"_a = 1, "object"_a = "", "timeout_s"_a = 0.0)
+      .def("reset", &SteppedTrial::Reset, "seed"_a)
+      .def("set_external_policy", &SteppedTrial::SetExternalPolicy, "on"_a,
+           "On: each following iteration waits for apply_step instead of taking the law's step.")
+      .def("run_to_next_iteration", &SteppedTrial::RunToNextIteration,
+           "Steps until the next control iteration read the sensor (or the trial ended: False).")
+      .def("apply_step", &SteppedTrial::ApplyStep, "step_m"_a,
+           "The waiting iteration's planar step, tool frame, m.")
+      .def("iteration_pressures", &SteppedTrial::IterationPressures,
+           "The four filtered pressures the last iteration read, Pa.")
+      .def("pressures", &SteppedTrial::Pressures)
+      .def("tool_position", &SteppedTrial::ToolPosition)
+      .def("force_torque", &SteppedTrial::ForceTorque)
+      .def("last_step", &SteppedTrial::LastStep)
+      .def("result", &SteppedTrial::Result)
+      .def("target", &SteppedTrial::Target)
+      .def("contour_distance_m", &SteppedTrial::ContourDistanceM, "x"_a, "y"_a)
+      .def_prop_ro("phase", &SteppedTrial::Phase)
+      .def_prop_ro("time", &SteppedTrial::Time)
+      .def_prop_ro("swept_deg", &SteppedTrial::SweptDeg)
+      .def_prop_ro("tracked_arc_m", &SteppedTrial::TrackedArcM)
+      .def_prop_ro("scene", &SteppedTrial::scene);
+}

@@ -1,0 +1,53 @@
+"""Smart Suction Cup digital twin for MuJoCo, from Python.
+
+The C++ twin does the work; this package hands its results back as dicts and NumPy arrays.
+
+    import ssc_twin
+    r = ssc_twin.run_trial(pref=100, beta=2, step_mm=7.5, seed=1)
+    r["outcome"], r["metrics"]["sigma_r_mm"], r["log"]["p_pa"]      # (N, 4) array
+
+Installing the package registers the pressure-sensor plugin with the mujoco package (entry point
+group ``mujoco.plugins``), so ``import mujoco`` can load the bundled scenes::
+
+    python -m mujoco.viewer --mjcf=$(python -c "import ssc_twin; print(ssc_twin.scene_path('disk_benchmark'))")
+
+and the Gymnasium environment ``ssc_twin/EdgeFollowing-v0`` is registered when gymnasium is
+installed (``pip install .[gym]``).
+"""
+import os as _os
+
+import mujoco as _mujoco  # noqa: F401  loads libmujoco, which _core links (the same library)
+
+from . import _core
+from ._core import (Probe, SteppedTrial, compare, contour_step, mujoco_version, object_names,
+                    phase_names, resource_dir, run_trial, scene_path, sweep, write_robot_log)
+
+__all__ = ["Probe", "SteppedTrial", "compare", "contour_step", "mujoco_version", "object_names",
+           "phase_names", "resource_dir", "run_trial", "scene_path", "sweep", "write_robot_log",
+           "plugin_library", "read_sweep", "validate"]
+
+_core.install_message_handlers()
+_version_problem = _core.check_mujoco_version()
+if _version_problem:
+    raise ImportError(_version_problem)
+
+
+def plugin_library():
+    """Path of the bundled plugin library (for mujoco.mj_loadPluginLibrary in other hosts)."""
+    return _os.path.join(_os.path.dirname(__file__), "libssc_plugin.so")
+
+
+def read_sweep(csv_path):
+    """The rows of a sweep CSV (written by sweep()) as a dict of NumPy arrays, one per column."""
+    import numpy as np
+    table = np.genfromtxt(csv_path, delimiter=",", names=True, dtype=None, encoding="utf-8")
+    return {name: table[name] for name in table.dtype.names}
+
+
+try:
+    import gymnasium as _gymnasium  # noqa: F401
+except ImportError:  # the environment needs gymnasium (pip install .[gym])
+    pass
+else:
+    from .edge_following import register_envs as _register_envs
+    _register_envs()

@@ -1,0 +1,180 @@
+"""The installed ssc_twin package (run inside the venv it was pip-installed into):
+the plugin found by `import mujoco` alone, trials equal to the CLI's, sweep / probe / compare
+bindings, no MUJOCO_LOG.TXT, MuJoCo's own viewer on our scene, and the edge-following
+environment (checker, the published law succeeds, a random policy does not).
+
+    python package_test.py PATH/TO/ssc
+"""
+import csv
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+SSC = sys.argv.pop(1) if len(sys.argv) > 1 and not sys.argv[1].startswith("-") else None
+XVFB = shutil.which("xvfb-run")
+
+
+def run(cmd, timeout=300, **kw):
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, **kw)
+
+
+class PackageTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp(prefix="ssc_pkg_")
+        os.chdir(cls.tmp)  # MUJOCO_LOG.TXT would land here
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+    def test_import_mujoco_alone_finds_the_plugin_and_writes_no_log(self):
+        import ssc_twin
+        scene = ssc_twin.scene_path("disk_benchmark")
+        # A fresh interpreter that never imports ssc_twin: only the entry point can load it.
+        script = ("import mujoco; m = mujoco.MjModel.from_xml_path(%r); d = mujoco.MjData(m); "
+                  "mujoco.mj_step(m, d, 50); print('plugins', m.nplugin)" % scene)
+        r = run([sys.executable, "-c", script], cwd=self.tmp)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("plugins 1", r.stdout)
+        self.assertNotIn("Attaching a spec", r.stderr + r.stdout)
+        self.assertFalse(os.path.exists(os.path.join(self.tmp, "MUJOCO_LOG.TXT")))
+
+    def test_resources_come_from_the_installed_package(self):
+        import ssc_twin
+        pkg = os.path.dirname(ssc_twin.__file__)
+        self.assertEqual(os.path.realpath(ssc_twin.resource_dir()), os.path.realpath(pkg))
+        self.assertTrue(ssc_twin.scene_path("probe_edge").startswith(pkg))
+        self.assertTrue(os.path.exists(ssc_twin.plugin_library()))
+
+    @unittest.skipUnless(SSC, "no ssc executable given")
+    def test_trial_equals_the_cli(self):
+        import ssc_twin
+        out = os.path.join(self.tmp, "cli")
+        r = run([SSC, "trial", "--seed", "3", "--no-plot", "--out", out])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(out, "summary.json")) as f:
+            cli = json.load(f)
+        py = ssc_twin.run_trial(seed=3)
+        self.assertEqual(py["outcome"], cli["outcome"])
+        self.assertEqual(py["detail"], cli["detail"])
+        for key, value in cli["metrics"].items():  # summary.json keeps 6 significant digits
+            self.assertAlmostEqual(py["metrics"][key], value, delta=1e-5 * abs(value) + 1e-9,
+                                   msg=key)
+        with open(os.path.join(out, "trial.csv")) as f:
+            rows = list(csv.DictReader(f))
+        log = py["log"]
+        self.assertEqual(len(rows), len(log["t_s"]))
+        col = lambda name: np.array([float(r[name]) for r in rows])
+        # trial.csv keeps 6 significant digits (8 for positions): equal to that precision.
+        np.testing.assert_allclose(log["t_s"], col("t_s"), atol=1e-9)
+        for k in range(4):
+            np.testing.assert_allclose(log["p_pa"][:, k], col(f"p{k + 1}_pa"), rtol=6e-6, atol=1e-6)
+        np.testing.assert_allclose(log["tool_m"][:, 0], col("x_m"), rtol=6e-8, atol=1e-12)
+        np.testing.assert_allclose(log["cf"], col("cf"), rtol=6e-6, atol=1e-9)
+
+    def test_sweep_writes_its_rows(self):
+        import ssc_twin
+        path = os.path.join(self.tmp, "sweep.csv")
+        s = ssc_twin.sweep(pref=[100, 1000], beta=[2], step_mm=[7.5], repeats=1, seed=5,
+                           threads=2, out_csv=path)
+        self.assertEqual((s["total"], s["ran"]), (2, 2))
+        rows = ssc_twin.read_sweep(path)
+        self.assertEqual(sorted(rows["pref_pa"].tolist()), [100.0, 1000.0])
+        self.assertTrue(set(rows["outcome"]) <= {"success", "failure_I", "failure_II", "timeout"})
+        again = ssc_twin.sweep(pref=[100, 1000], beta=[2], step_mm=[7.5], repeats=1, seed=5,
+                               threads=1, out_csv=path)
+        self.assertEqual(again["skipped"], 2)  # resumed: nothing runs twice
+
+    def test_probe_grasps_on_the_plate_and_reads_ambient_in_air(self):
+        import ssc_twin
+        probe = ssc_twin.Probe()
+        on = probe.read(-0.03, 0.0)          # well inside the plate
+        off = probe.read(0.05, 0.0)          # beyond its edge, over the table
+        self.assertTrue(np.all(on["filtered_pa"] > 10000), on)
+        self.assertLess(float(np.abs(off["filtered_pa"]).max()), 50.0, off)
+        self.assertEqual(on["filtered_pa"].shape, (4,))
+
+    def test_compare_replays_a_twin_log(self):
+        import ssc_twin
+        log_dir = os.path.join(self.tmp, "robot_log")
+        self.assertEqual(ssc_twin.write_robot_log(log_dir, seed=2), "success")
+        c = ssc_twin.compare(log_dir)
+        self.assertEqual(c["sim_pa"].shape, c["log_pa"].shape)
+        self.assertGreater(c["sim_pa"].shape[0], 100)
+        self.assertTrue(np.all(c["correlation"] > 0.9), c["correlation"])
+
+    @unittest.skipUnless(XVFB, "xvfb-run not installed")
+    def test_mujoco_viewer_opens_our_scene(self):
+        import ssc_twin
+        cmd = [XVFB, "-a", "-s", "-screen 0 1024x768x24", "timeout", "12", sys.executable, "-m",
+               "mujoco.viewer", "--mjcf=" + ssc_twin.scene_path("disk_benchmark")]
+        r = run(cmd, timeout=60, cwd=self.tmp)
+        # Still running when the timeout ended it: the scene loaded and the window stayed up.
+        self.assertEqual(r.returncode, 124, r.stderr[-2000:])
+        self.assertNotIn("not found", r.stderr)
+        self.assertNotIn("Error", r.stderr)
+
+
+class EdgeFollowingTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        import gymnasium as gym
+        import ssc_twin  # registers the environment
+        from ssc_twin.edge_following import PublishedLawPolicy
+        cls.gym, cls.policy = gym, PublishedLawPolicy
+
+    def episode(self, env, policy, seed, options=None):
+        obs, info = env.reset(seed=seed, options=options)
+        total, steps = 0.0, 0
+        while True:
+            obs, reward, terminated, truncated, info = env.step(policy(obs))
+            total += reward
+            steps += 1
+            if terminated or truncated:
+                return info, total, steps
+
+    def test_environment_passes_the_checker(self):
+        from gymnasium.utils.env_checker import check_env
+        env = self.gym.make("ssc_twin/EdgeFollowing-v0", include_ft=True)
+        check_env(env.unwrapped, skip_render_check=True)
+        self.assertEqual(env.observation_space.shape, (10,))
+
+    def test_published_law_succeeds_on_the_disk(self):
+        env = self.gym.make("ssc_twin/EdgeFollowing-v0")
+        law = self.policy(env, pref=100, beta=2, step_mm=7.5)
+        info, total, steps = self.episode(env, law, seed=1)
+        self.assertEqual(info["outcome"], "success", info)
+        self.assertGreater(info["progress_mm"], 200)  # ~2 pi x 33 mm round the disk
+        self.assertGreater(total, 20)
+
+    def test_random_policy_does_not(self):
+        env = self.gym.make("ssc_twin/EdgeFollowing-v0")
+        env.action_space.seed(7)
+        random_policy = lambda obs: env.action_space.sample()
+        for seed in range(3):
+            info, total, _ = self.episode(env, random_policy, seed=seed)
+            self.assertNotEqual(info["outcome"], "success", info)
+            self.assertLess(total, 5)
+
+    def test_episodes_on_test_objects_start_at_their_edge(self):
+        env = self.gym.make("ssc_twin/EdgeFollowing-v0", objects=["volute", "hole_d14"])
+        for name in ("volute", "hole_d14"):
+            obs, info = env.reset(seed=0, options={"object": name})
+            self.assertEqual(info["object"], name)
+            self.assertEqual(info["phase"], "follow")
+            self.assertLess(abs(info["contour_distance_mm"]), 6.0, info)  # started at the edge
+            obs, reward, *_ = env.step(np.zeros(2, dtype=np.float32))
+            self.assertTrue(np.isfinite(reward))
+            self.assertTrue(env.observation_space.contains(obs))
+
+
+if __name__ == "__main__":
+    result = unittest.main(exit=False, verbosity=2).result
+    sys.exit(0 if result.wasSuccessful() else 1)
