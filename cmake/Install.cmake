@@ -12,21 +12,31 @@ set(SSC_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/ssc")
 set(SSC_INSTALL_INCLUDEDIR "${CMAKE_INSTALL_INCLUDEDIR}/ssc")
 set(SSC_INSTALL_DATADIR "${CMAKE_INSTALL_DATADIR}/ssc")
 
-# The libraries a downstream program links (the viewer stays with `ssc`: it needs GLFW).
-set(SSC_EXPORTED_LIBRARIES)
-foreach(t ssc_warnings ssc_common ssc_pneumatics ssc_plugin ssc_geometry ssc_control
-          ssc_calibration ssc_objects ssc_runtime ssc_studies ssc_robotlog ssc_compare)
-  if(TARGET ${t})
-    list(APPEND SSC_EXPORTED_LIBRARIES ${t})
-    # Targets say PUBLIC "${PROJECT_SOURCE_DIR}" for the build; installed, the headers live in
-    # include/ssc with the same sub-folders.
-    if(NOT t STREQUAL "ssc_warnings")
-      set_target_properties(${t} PROPERTIES INTERFACE_INCLUDE_DIRECTORIES
-        "$<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>;$<INSTALL_INTERFACE:${SSC_INSTALL_INCLUDEDIR}>")
-    endif()
-    string(REGEX REPLACE "^ssc_" "" _export_name "${t}")
-    set_target_properties(${t} PROPERTIES EXPORT_NAME ${_export_name})
+# The libraries a downstream program links: every library target of the library folders (the
+# viewer stays with `ssc`: it needs GLFW), so a new library is exported without a list to edit.
+set(SSC_LIBRARY_FOLDERS common plugin geometry controller calibration objects runtime studies
+    robotlog compare)
+set(SSC_EXPORTED_LIBRARIES ssc_warnings)
+foreach(dir ${SSC_LIBRARY_FOLDERS})
+  if(IS_DIRECTORY "${PROJECT_SOURCE_DIR}/${dir}")
+    get_property(_targets DIRECTORY "${PROJECT_SOURCE_DIR}/${dir}" PROPERTY BUILDSYSTEM_TARGETS)
+    foreach(t ${_targets})
+      get_target_property(_type ${t} TYPE)
+      if(_type MATCHES "^(STATIC|SHARED)_LIBRARY$")
+        list(APPEND SSC_EXPORTED_LIBRARIES ${t})
+      endif()
+    endforeach()
   endif()
+endforeach()
+foreach(t ${SSC_EXPORTED_LIBRARIES})
+  # Targets say PUBLIC "${PROJECT_SOURCE_DIR}" for the build; installed, the headers live in
+  # include/ssc with the same sub-folders.
+  if(NOT t STREQUAL "ssc_warnings")
+    set_target_properties(${t} PROPERTIES INTERFACE_INCLUDE_DIRECTORIES
+      "$<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>;$<INSTALL_INTERFACE:${SSC_INSTALL_INCLUDEDIR}>")
+  endif()
+  string(REGEX REPLACE "^ssc_" "" _export_name "${t}")
+  set_target_properties(${t} PROPERTIES EXPORT_NAME ${_export_name})
 endforeach()
 # ssc::ssc: everything above in one name.
 add_library(ssc_all INTERFACE)
@@ -47,7 +57,7 @@ install(TARGETS ssc RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
 install(EXPORT sscTargets NAMESPACE ssc:: DESTINATION "${SSC_INSTALL_CMAKEDIR}")
 
 # Headers of every library folder, keeping the paths the sources include them by.
-foreach(dir common plugin geometry controller calibration objects runtime studies robotlog compare)
+foreach(dir ${SSC_LIBRARY_FOLDERS})
   if(IS_DIRECTORY "${PROJECT_SOURCE_DIR}/${dir}")
     install(DIRECTORY "${PROJECT_SOURCE_DIR}/${dir}" DESTINATION "${SSC_INSTALL_INCLUDEDIR}"
             FILES_MATCHING PATTERN "*.h" PATTERN "fuzz" EXCLUDE PATTERN "tools" EXCLUDE)
