@@ -69,8 +69,22 @@ install(DIRECTORY "${PROJECT_SOURCE_DIR}/tools/" DESTINATION "${SSC_INSTALL_DATA
         FILES_MATCHING PATTERN "plot_*.py")
 install(FILES "${PROJECT_SOURCE_DIR}/requirements.txt" DESTINATION "${SSC_INSTALL_DATADIR}")
 
-# Studies may link MPI (privately; a static library passes it on).
-set(SSC_CONFIG_WITH_MPI "${SSC_MPI_FOUND}")
+# Other packages' imported targets the libraries link (privately too: a static library passes
+# them on), e.g. NLopt::nlopt, nlohmann_json::nlohmann_json, MPI::MPI_CXX: the package config
+# finds each package again. Eigen, Threads and MuJoCo are handled there by name.
+set(SSC_CONFIG_PACKAGES)
+foreach(t ${SSC_EXPORTED_LIBRARIES})
+  get_target_property(_links ${t} LINK_LIBRARIES)
+  foreach(l ${_links})
+    if(l MATCHES "^([A-Za-z0-9_]+)::")
+      set(_package "${CMAKE_MATCH_1}")
+      if(NOT _package MATCHES "^(ssc|mujoco|Eigen3|Threads)$")
+        list(APPEND SSC_CONFIG_PACKAGES "${_package}")
+      endif()
+    endif()
+  endforeach()
+endforeach()
+list(REMOVE_DUPLICATES SSC_CONFIG_PACKAGES)
 
 # MuJoCo as this build found it: a regular install (find_dependency) or the wheel's library.
 if(SSC_MUJOCO_LIBRARY)
