@@ -17,7 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "compare/log_replay.h"
+#include "compare/comparison.h"
+#include "compare/twin_log.h"
 #include "controller/pure/contour_law.h"
 #include "geometry/dimensions.h"
 #include "objects/object_mjcf.h"
@@ -27,7 +28,6 @@
 #include "studies/edge_probe.h"
 #include "studies/object_trials.h"
 #include "studies/sweep.h"
-#include "robotlog/topic_csv.h"
 
 namespace nb = nanobind;
 using namespace nb::literals;
@@ -396,21 +396,22 @@ NB_MODULE(_core, m) {
            "compression_m"_a = 0.001, "settle_s"_a = 0.3);
 
   m.def("compare",
-        [](const std::string& log_path, const std::string& scene, double tcp_offset_mm) {
-          ProcessOptions options;
-          options.tcp_offset_m = tcp_offset_mm * 1e-3;
-          ProcessedLog log;
-          LoadError load_error;
-          if (!LoadAnyLog(log_path, options, &log, &load_error)) Fail(load_error.ToString());
-          ModelPtr model = Load(scene);
-          ReplayComparison c;
+        [](const std::string& log_path, const std::string& scene, const std::string& out_dir,
+           double tcp_offset_mm) {
+          CompareOptions options;
+          options.log_path = log_path;
+          options.scene = scene;
+          options.out_dir = out_dir;
+          options.processing.tcp_offset_m = tcp_offset_mm * 1e-3;
+          CompareResult result;
           std::string error;
           bool ok = false;
           {
             nb::gil_scoped_release release;
-            ok = ReplayLog(model.get(), log, options.tcp_offset_m, &c, &error);
+            ok = RunComparison(options, &result, &error);
           }
           if (!ok) Fail(error);
+          const ReplayComparison& c = result.replay;
           auto arr = [](const std::array<double, 4>& a) {
             return ToNumpy({a[0], a[1], a[2], a[3]}, {4});
           };
@@ -428,15 +429,17 @@ NB_MODULE(_core, m) {
           d["sim_pa"] = Rows(c.sim_pa);
           d["log_pa"] = Rows(c.log_pa);
           d["tcp_m"] = Rows(c.tcp_m);
+          d["report_dir"] = out_dir;
           return d;
         },
-        "log"_a, "scene"_a = "disk_replay", "tcp_offset_mm"_a = kToolCentreOffsetM * 1e3,
-        "Replays a robot log (topic-CSV folder, .mat or plain CSV) in the twin and compares the "
-        "pressures (ssc compare without the closed loop).");
+        "log"_a, "scene"_a = "disk_replay", "out_dir"_a = "out/compare",
+        "tcp_offset_mm"_a = kToolCentreOffsetM * 1e3,
+        "Replays a robot log (lab per-topic CSVs, .mat or plain CSV) in the twin and compares the "
+        "pressures, as `ssc compare` without the closed loop (report files into out_dir).");
 
   m.def("write_robot_log",
         [](const std::string& dir, const std::string& scene, double pref, double beta,
-           double step_mm, std::uint64_t seed, double noise_pa) {
+           double step_mm, std::uint64_t seed) {
           std::string scene_path = scene;
           const TrialConfig config = MakeConfig(pref, beta, step_mm, seed, "", &scene_path);
           ModelPtr model = Load(scene_path);
@@ -446,13 +449,15 @@ NB_MODULE(_core, m) {
             nb::gil_scoped_release release;
             r = RunTrial(model.get(), config, true, &error);
           }
-          const RobotLog log = RobotLogFromTrial(r, kToolCentreOffsetM, 1.0, 0.0, 101325.0, noise_pa, 1);
-          if (!WriteTopicCsvRecording(dir, log, LoggerVersion::kNewer, nullptr, &error)) Fail(error);
+          std::vector<std::string> written;
+          if (!WriteLabRecordingFromTrial(model.get(), r, config, dir, &written, &error)) {
+            Fail(error);
+          }
           return std::string(OutcomeName(r.outcome));
         },
         "dir"_a, "scene"_a = "disk_benchmark", "pref"_a = 100.0, "beta"_a = 2.0,
-        "step_mm"_a = 7.5, "seed"_a = 1, "noise_pa"_a = 0.0,
-        "Runs a trial and writes it as a robot-format log folder (ssc trial --robot-log).");
+        "step_mm"_a = 7.5, "seed"_a = 1,
+        "Runs a trial and writes it as a lab recording (ssc trial --robot-log).");
 
   nb::class_<SteppedTrial>(m, "SteppedTrial",
                            "A trial stepped one control iteration at a time from Python.")

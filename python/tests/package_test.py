@@ -105,7 +105,7 @@ class PackageTest(unittest.TestCase):
         import ssc_twin
         log_dir = os.path.join(self.tmp, "robot_log")
         self.assertEqual(ssc_twin.write_robot_log(log_dir, seed=2), "success")
-        c = ssc_twin.compare(log_dir)
+        c = ssc_twin.compare(log_dir, out_dir=os.path.join(self.tmp, "compare"))
         self.assertEqual(c["sim_pa"].shape, c["log_pa"].shape)
         self.assertGreater(c["sim_pa"].shape[0], 100)
         self.assertTrue(np.all(c["correlation"] > 0.9), c["correlation"])
