@@ -45,6 +45,12 @@ std::vector<MetricTarget> PublishedMetricTargets() {
   };
 }
 
+std::vector<MapCell> PublishedOutcomeCells() {
+  return {{2.5, 1.0, 70, MapClass::kThreeOfThree},
+          {2.5, 2.0, 100, MapClass::kThreeOfThree},
+          {7.5, 2.0, 100, MapClass::kThreeOfThree}};
+}
+
 namespace {
 
 const DynamicParameter* FindParameter(const std::string& key) {

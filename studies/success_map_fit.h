@@ -36,6 +36,10 @@ struct MetricTarget {
   double model = 0;    // the twin's mean over successful trials (NaN if none succeeded)
 };
 std::vector<MetricTarget> PublishedMetricTargets();
+// The published outcomes beside the map (calibration targets in smart-suction-cup.md): the pilot
+// controller (P_ref 70, beta 1, dL 2.5 mm) succeeds; P_ref 100, beta 2 succeeds 3/3 at dL 2.5,
+// 5 and 7.5 mm. The fit scores them like map cells.
+std::vector<MapCell> PublishedOutcomeCells();
 
 struct DynamicFitSpec {
   TrialConfig base;                  // the starting point (its values are the start)

@@ -74,6 +74,12 @@ int RunCalibrateCommand(int argc, char** argv) {
       std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
       return 2;
     }
+    for (const MapCell& c : PublishedOutcomeCells()) {
+      bool in_map = false;
+      for (const MapCell& m : spec.cells)
+        in_map |= m.step_mm == c.step_mm && m.beta == c.beta && m.pref_pa == c.pref_pa;
+      if (!in_map) spec.cells.push_back(c);
+    }
     std::stringstream ks(dyn_keys);
     for (std::string k; std::getline(ks, k, ',');) spec.keys.push_back(k);
     spec.seeds = static_cast<int>(dyn_seeds);
