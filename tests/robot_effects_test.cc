@@ -34,7 +34,9 @@ TEST(LoopTimingTest, JitterIsUniformWithTheStatedHalfWidth) {
   EXPECT_NEAR(static_cast<double>(low_quarter) / n, 0.25, 0.01);
   EXPECT_LT(lo, period - 0.95 * p.jitter_s);  // the whole band is used
   // Off: exactly the period. Same seed and index: the same period (determinism).
-  EXPECT_EQ(IterationPeriod(LoopTimingParams(), period, 7, 3), period);
+  LoopTimingParams off;
+  off.jitter_s = 0;
+  EXPECT_EQ(IterationPeriod(off, period, 7, 3), period);
   EXPECT_EQ(IterationPeriod(p, period, 7, 3), IterationPeriod(p, period, 7, 3));
   EXPECT_NE(IterationPeriod(p, period, 7, 3), IterationPeriod(p, period, 8, 3));
 }
@@ -43,6 +45,8 @@ TEST(ChamberSpreadTest, AGainSpreadRotatesTheDirectionAsComputedByHand) {
   // Cup on the east edge of a disk: the west chambers (3 = NW, 4 = SW) covered at 100 Pa.
   std::array<double, 4> p = {0, 0, 100, 100};
   ChamberSpreadParams params;  // no drift: only the gains act
+  params.drift_pa = 0;
+  params.drift_relative = 0;
   ChamberSpreadState s;
   s.gain = {1.0, 1.0, 1.2, 0.8};
   ApplyChamberSpread(params, 1, 0.0, &s, &p);
@@ -78,7 +82,9 @@ TEST(ChamberSpreadTest, GainsAreDrawnPerTrialWithTheStatedSpread) {
   }
   EXPECT_NEAR(std::sqrt(sum2 / n), 0.1, 0.005);
   ChamberSpreadState off;
-  ResetChamberSpread(ChamberSpreadParams(), 5, &off);
+  ChamberSpreadParams no_spread;
+  no_spread.gain_spread = 0;
+  ResetChamberSpread(no_spread, 5, &off);
   for (double g : off.gain) EXPECT_EQ(g, 1.0);
 }
 
@@ -106,7 +112,8 @@ TEST(ChamberSpreadTest, SlowNoiseHasItsStationarySpreadAndCorrelationTime) {
 }
 
 TEST(LipShearTest, NoFrictionNoShearNoTilt) {
-  LipShearParams p;  // slip 0: the footprint never sticks
+  LipShearParams p;
+  p.slip_mm = 0;  // no friction: the footprint never sticks
   p.tilt_decades = 0.3;
   LipShearState s;
   AdvanceLipShear(p, {0.004, 0.0}, &s);
