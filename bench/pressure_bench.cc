@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "apps/ssc/cli.h"
+#include "plugin/chamber_pressure_sensor.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/trial.h"
-#include "plugin/chamber_pressure_sensor.h"
 
 namespace {
 
@@ -172,8 +172,8 @@ int main(int argc, char** argv) {
     s->model = ssc::LoadModel(s->path, &error);
     if (s->model) s->data = ssc::MakeData(s->model.get(), &error);
     if (s->data) {
-      s->trial = ssc::ContourTrial::Create(s->model.get(), s->data.get(), ssc::TrialConfig(),
-                                           false, &error);
+      s->trial = ssc::ContourTrial::Create(s->model.get(), s->data.get(), ssc::TrialConfig(), false,
+                                           &error);
     }
     if (s->trial) s->bare = CompileVariant(s->path, true, &error);
     if (s->bare) s->floor = CompileVariant(s->path, false, &error);
@@ -182,7 +182,8 @@ int main(int argc, char** argv) {
       return 1;
     }
     if (!s->ToFollowing()) {
-      std::fprintf(stderr, "ssc bench: %s: the trial never reached the follow phase\n", name.c_str());
+      std::fprintf(stderr, "ssc bench: %s: the trial never reached the follow phase\n",
+                   name.c_str());
       return 1;
     }
     s->first_follow_s = s->data->time;
@@ -243,12 +244,12 @@ int main(int argc, char** argv) {
   }
 
   const Scene& ref = *scenes.front();
-  std::printf("MuJoCo %s; %d rounds of %d-step blocks, scenes and variants alternating; "
-              "medians over rounds (ratios paired within a round)\n",
-              mj_versionString(), rounds, block);
-  std::printf("\n%-26s %8s %7s %8s %6s %6s %6s %8s %8s %9s %8s\n", "scene", "trial us",
-              "vs ref", "us/sim-s", "nv", "ncon", "dt ms", "held us", "vs ref", "-sensor",
-              "floor");
+  std::printf(
+      "MuJoCo %s; %d rounds of %d-step blocks, scenes and variants alternating; "
+      "medians over rounds (ratios paired within a round)\n",
+      mj_versionString(), rounds, block);
+  std::printf("\n%-26s %8s %7s %8s %6s %6s %6s %8s %8s %9s %8s\n", "scene", "trial us", "vs ref",
+              "us/sim-s", "nv", "ncon", "dt ms", "held us", "vs ref", "-sensor", "floor");
   for (const auto& s : scenes) {
     std::vector<double> trial_vs_ref, held_vs_ref, no_sensor, floor;
     for (int r = 0; r < rounds; ++r) {
@@ -261,18 +262,18 @@ int main(int argc, char** argv) {
       floor.push_back(s->held[2].block_us[r] / held);
     }
     const double trial_us = Median(s->trial_us);
-    std::printf("%-26s %8.1f %7.3f %8.0f %6ld %6d %6.2f %8.1f %8.3f %9.3f %8.3f\n",
-                s->name.c_str(), trial_us, Median(trial_vs_ref),
-                trial_us / s->model->opt.timestep, static_cast<long>(s->model->nv),
-                s->held[0].d->ncon, s->model->opt.timestep * 1e3, Median(s->held[0].block_us),
-                Median(held_vs_ref), Median(no_sensor), Median(floor));
+    std::printf("%-26s %8.1f %7.3f %8.0f %6ld %6d %6.2f %8.1f %8.3f %9.3f %8.3f\n", s->name.c_str(),
+                trial_us, Median(trial_vs_ref), trial_us / s->model->opt.timestep,
+                static_cast<long>(s->model->nv), s->held[0].d->ncon, s->model->opt.timestep * 1e3,
+                Median(s->held[0].block_us), Median(held_vs_ref), Median(no_sensor), Median(floor));
   }
-  std::printf("  trial: a step with the controller in the loop while following the edge (what "
-              "sweeps run); us/sim-s: wall us per simulated second;\n  held: the same scene from "
-              "the same state with the controls held; -sensor, floor: held without the pressure "
-              "sensor,\n  and also without the lip joints, / held. vs ref: / %s in the same "
-              "round.\n",
-              ref.name.c_str());
+  std::printf(
+      "  trial: a step with the controller in the loop while following the edge (what "
+      "sweeps run); us/sim-s: wall us per simulated second;\n  held: the same scene from "
+      "the same state with the controls held; -sensor, floor: held without the pressure "
+      "sensor,\n  and also without the lip joints, / held. vs ref: / %s in the same "
+      "round.\n",
+      ref.name.c_str());
   std::printf("\nwhere a trial step goes (MuJoCo timers, share of the step):\n");
   std::printf("%-26s %7s %7s %7s %7s %7s %7s %7s %7s %6s %6s\n", "scene", "step us", "collide",
               "constr", "integr", "kin+M", "sensor*", "control", "other", "ncon", "iters");
@@ -293,13 +294,14 @@ int main(int argc, char** argv) {
     const double other = step - collide - constr - integr - kin - sensor - control;
     const double n = static_cast<double>(s->trial_steps);
     std::printf("%-26s %7.1f %7.3f %7.3f %7.3f %7.3f %7.3f %7.3f %7.3f %6.1f %6.1f\n",
-                s->name.c_str(), step / n, collide / step, constr / step, integr / step,
-                kin / step, sensor / step, control / step, other / step, s->contacts / n,
+                s->name.c_str(), step / n, collide / step, constr / step, integr / step, kin / step,
+                sensor / step, control / step, other / step, s->contacts / n,
                 s->solver_iterations / n);
   }
-  std::printf("  collide: broad+narrow phase; constr: make, project, solve; integr: the "
-              "integrator; kin+M: kinematics, inertia;\n  sensor*: the rest of mj_forward "
-              "(sensors; the pressure plugin dominates); other: velocity, actuation, checks;\n  ncon: "
-              "contacts per step; iters: constraint solver iterations per step\n");
+  std::printf(
+      "  collide: broad+narrow phase; constr: make, project, solve; integr: the "
+      "integrator; kin+M: kinematics, inertia;\n  sensor*: the rest of mj_forward "
+      "(sensors; the pressure plugin dominates); other: velocity, actuation, checks;\n  ncon: "
+      "contacts per step; iters: constraint solver iterations per step\n");
   return 0;
 }

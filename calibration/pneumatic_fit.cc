@@ -52,10 +52,12 @@ double Cost(const std::vector<FitTarget>& targets) {
 }  // namespace
 
 std::vector<FitTarget> EvaluatePublishedTargets(const PneumaticModel& m) {
-  std::vector<FitTarget> t = {
-      {"offset_at_40pa_mm", "mm", 0.7, 0.1},  {"offset_at_100pa_mm", "mm", 2.5, 0.1},
-      {"offset_at_200pa_mm", "mm", 3.2, 0.1}, {"differential_at_100pa_pa", "Pa", 200, 20},
-      {"air_mean_pa", "Pa", 4, 1},            {"plate_min_pa", "Pa", 20000, 1000}};
+  std::vector<FitTarget> t = {{"offset_at_40pa_mm", "mm", 0.7, 0.1},
+                              {"offset_at_100pa_mm", "mm", 2.5, 0.1},
+                              {"offset_at_200pa_mm", "mm", 3.2, 0.1},
+                              {"differential_at_100pa_pa", "Pa", 200, 20},
+                              {"air_mean_pa", "Pa", 4, 1},
+                              {"plate_min_pa", "Pa", 20000, 1000}};
   const double d100 = OffsetFor(m, 100);
   t[0].model = OffsetFor(m, 40) * 1e3;
   t[1].model = d100 * 1e3;
@@ -70,10 +72,9 @@ std::vector<FitTarget> EvaluatePublishedTargets(const PneumaticModel& m) {
 }
 
 PneumaticFit FitPublishedTargets(const PneumaticModel& start) {
-  const std::vector<double> x0 = {std::log(start.pneumatics.pump_free_flow_m3_s),
-                                  std::log(start.pneumatics.port_area_m2),
-                                  std::log(start.pneumatics.jet_area_m2),
-                                  std::log(start.geometry.lip_roughness_gap_m)};
+  const std::vector<double> x0 = {
+      std::log(start.pneumatics.pump_free_flow_m3_s), std::log(start.pneumatics.port_area_m2),
+      std::log(start.pneumatics.jet_area_m2), std::log(start.geometry.lip_roughness_gap_m)};
   auto f = [&](const std::vector<double>& x) {
     return Cost(EvaluatePublishedTargets(WithLog(start, x)));
   };

@@ -27,9 +27,9 @@ struct FitTarget {
 
 // The fitted parameters, in the order of their log-scale coordinates.
 struct FitParameter {
-  std::string key;        // plugin config key
-  double value = 0;       // in the key's unit
-  double sensitivity = 0; // d(cost) / d(log value) at the optimum
+  std::string key;         // plugin config key
+  double value = 0;        // in the key's unit
+  double sensitivity = 0;  // d(cost) / d(log value) at the optimum
 };
 
 struct PneumaticFit {

@@ -74,8 +74,7 @@ std::string NumberRange::ToString() const {
          FormatNumber(hi) + (hi_open ? ")" : "]");
 }
 
-bool ParseNumber(std::string_view text, const NumberRange& range, double* out,
-                 std::string* error) {
+bool ParseNumber(std::string_view text, const NumberRange& range, double* out, std::string* error) {
   const std::string_view t = Trim(text);
   if (t.empty()) {
     *error = "empty value; expected " + range.ToString();
@@ -109,11 +108,10 @@ bool ParseNumberList(std::string_view text, const NumberRange& range, bool uniqu
   size_t start = 0;
   for (int item = 1;; ++item) {
     const size_t comma = text.find(',', start);
-    const std::string_view cell =
-        text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
+    const std::string_view cell = text.substr(
+        start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
     if (Trim(cell).empty()) {
-      *error = "item " + std::to_string(item) + " of " + Quote(text) +
-               " is empty (a stray comma?)";
+      *error = "item " + std::to_string(item) + " of " + Quote(text) + " is empty (a stray comma?)";
       return false;
     }
     double v = 0;

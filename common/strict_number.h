@@ -21,7 +21,9 @@ struct NumberRange {
   bool lo_open = false, hi_open = false;
   bool whole = false;  // integers only
 
-  static constexpr NumberRange Closed(double lo, double hi) { return {lo, hi, false, false, false}; }
+  static constexpr NumberRange Closed(double lo, double hi) {
+    return {lo, hi, false, false, false};
+  }
   static constexpr NumberRange Positive(double hi = std::numeric_limits<double>::infinity()) {
     return {0.0, hi, true, false, false};
   }
@@ -39,8 +41,7 @@ std::string FormatNumber(double v);
 
 // Parses all of `text` as one number in `range`. On failure returns false and *error says what
 // is wrong with the value and gives the range (the caller prefixes the input's name).
-bool ParseNumber(std::string_view text, const NumberRange& range, double* out,
-                 std::string* error);
+bool ParseNumber(std::string_view text, const NumberRange& range, double* out, std::string* error);
 
 // A comma-separated list ("40,70,100"). Empty items (a trailing or doubled comma) are errors; so
 // are repeated values when `unique` (a grid axis listing a value twice runs its trials twice).

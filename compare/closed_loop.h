@@ -4,11 +4,11 @@
 #ifndef SSC_COMPARE_CLOSED_LOOP_H_
 #define SSC_COMPARE_CLOSED_LOOP_H_
 
+#include <mujoco/mujoco.h>
+
 #include <array>
 #include <string>
 #include <vector>
-
-#include <mujoco/mujoco.h>
 
 #include "compare/frames.h"
 #include "compare/replay.h"
@@ -34,15 +34,15 @@ struct HistoryPair {
   HistoryRow lab;
   LabControllerVectors twin;
   std::array<double, 4> twin_vacuum_pa{};
-  double twin_f_normal_n = 0;  // lab sign: negative = compression
+  double twin_f_normal_n = 0;                             // lab sign: negative = compression
   double r_p_deg = 0, corr_p_deg = 0, r_p_final_deg = 0;  // angle twin - lab; NaN if undefined
 };
 
 struct HistoryComparison {
   bool ran = false;
   int iterations = 0;
-  double time_offset_s = 0;   // log time = history time + this (found by matching x, y)
-  double match_rms_mm = 0;    // history x, y against the logged TCP at the matched times
+  double time_offset_s = 0;         // log time = history time + this (found by matching x, y)
+  double match_rms_mm = 0;          // history x, y against the logged TCP at the matched times
   bool history_in_ur_base = false;  // x, y matched only after turning them 180 deg (RTDE frame)
   double r_p_median_deg = 0, r_p_rms_deg = 0;
   double corr_p_median_deg = 0;

@@ -55,8 +55,8 @@ bool RunComparison(const CompareOptions& o, CompareResult* r, std::string* error
   if (lab && o.object_pose.empty()) {
     // The object from the log; its top needs the twin's lip depth at the logged force.
     loop = LoadModel(ResolveScenePath(o.loop_scene), error);
-    if (!loop || !TwinContactDepth(loop.get(), loop_config.approach_force_n, &s.contact_depth_m,
-                                   error)) {
+    if (!loop ||
+        !TwinContactDepth(loop.get(), loop_config.approach_force_n, &s.contact_depth_m, error)) {
       *error = "lip depth at the approach force: " + *error;
       return false;
     }
@@ -121,10 +121,9 @@ bool RunComparison(const CompareOptions& o, CompareResult* r, std::string* error
     at.y_m = s.scene_object.y_m;
     const SceneObject& disk = *NearestSceneObject(loop_objects, LogFrame::kUrBase, at);
     loop_config.target.surface_top_z_m = disk.top_z_m;
-    const double start_t = r->history.ran ? args.history.front().t_s + r->history.time_offset_s
-                                          : -1.0;
-    if (!CompareClosedLoop(loop.get(), scene_log, disk, start_t, loop_config, &r->closed,
-                           error)) {
+    const double start_t =
+        r->history.ran ? args.history.front().t_s + r->history.time_offset_s : -1.0;
+    if (!CompareClosedLoop(loop.get(), scene_log, disk, start_t, loop_config, &r->closed, error)) {
       *error = "closed loop: " + *error;
       return false;
     }

@@ -17,12 +17,12 @@ struct CompareOptions {
   std::string scene = "disk_replay";                 // replay scene (name or path)
   std::string loop_scene = "disk_benchmark_gantry";  // closed loop and the lip depth
   std::string out_dir = "out/compare";
-  ProcessOptions processing;                          // offset window, average, TCP offset
+  ProcessOptions processing;  // offset window, average, TCP offset
   LogFrame frame = LogFrame::kBaseLink;
   std::vector<double> object_pose;  // empty, or x, y, top z (m) [, yaw (deg)] in the log frame
   bool closed_loop = false;
-  TrialConfig loop_config;          // defaults for what the file does not give
-  bool override_law = false;        // the command line's P_ref, beta, dL win over the file's
+  TrialConfig loop_config;    // defaults for what the file does not give
+  bool override_law = false;  // the command line's P_ref, beta, dL win over the file's
 };
 
 struct CompareResult {

@@ -111,8 +111,9 @@ ObjectPose DiskPoseFromLog(const LoadedLog& loaded, double contact_depth_m) {
   o.top_z_m = follow_z + contact_depth_m;
   const LabRunArgs& a = loaded.raw.args;
   if (!std::isnan(a.disk_radius_mm)) o.radius_m = a.disk_radius_mm * 1e-3;
-  o.source = "the log (disk benchmark: centre = the TCP where the recording starts, top = the "
-             "lowest steady TCP height + the twin's lip depth at the approach force)";
+  o.source =
+      "the log (disk benchmark: centre = the TCP where the recording starts, top = the "
+      "lowest steady TCP height + the twin's lip depth at the approach force)";
   if (!a.history.empty() && !std::isnan(a.start_offset_m)) {
     const double first = std::hypot(a.history.front().x_m - o.x_m, a.history.front().y_m - o.y_m);
     char buf[200];

@@ -10,13 +10,13 @@
 #ifndef SSC_COMPARE_FRAMES_H_
 #define SSC_COMPARE_FRAMES_H_
 
+#include <mujoco/mujoco.h>
+
+#include <Eigen/Geometry>
 #include <array>
 #include <limits>
 #include <string>
 #include <vector>
-
-#include <Eigen/Geometry>
-#include <mujoco/mujoco.h>
 
 #include "compare/log_source.h"
 #include "geometry/dimensions.h"
@@ -42,7 +42,7 @@ struct ObjectPose {
   bool known = false;
   double x_m = 0, y_m = 0, top_z_m = 0, yaw_rad = 0;
   double radius_m = std::numeric_limits<double>::quiet_NaN();  // a disk's, when the log has it
-  std::string source;                                           // where it came from
+  std::string source;                                          // where it came from
   std::string note;  // a consistency remark (e.g. the start offset checked against the log)
 };
 

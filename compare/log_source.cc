@@ -48,8 +48,9 @@ bool LoadLog(const std::string& path, const ProcessOptions& options, LoadedLog* 
   *out = LoadedLog();
   if (!DetectLogFormat(path, &out->format, error)) return false;
   if (out->format == LogFormat::kPlain) return LoadPlainLog(path, &out->log, error);
-  const bool loaded = out->format == LogFormat::kMat ? LoadRobotLogMat(path, &out->raw, error)
-                                                     : LoadTopicCsvRecording(path, &out->raw, error);
+  const bool loaded = out->format == LogFormat::kMat
+                          ? LoadRobotLogMat(path, &out->raw, error)
+                          : LoadTopicCsvRecording(path, &out->raw, error);
   ProcessOptions base = options;
   base.X_scene_base = Eigen::Isometry3d::Identity();
   return loaded && ProcessRobotLog(out->raw, base, &out->log, error);

@@ -18,8 +18,8 @@ bool DetectLogFormat(const std::string& path, LogFormat* format, LoadError* erro
 
 struct LoadedLog {
   LogFormat format = LogFormat::kPlain;
-  RobotLog raw;       // the lab formats: as recorded (with the script's arguments for a .mat)
-  ProcessedLog log;   // lab formats: in the log's base frame; plain: already in the scene frame
+  RobotLog raw;      // the lab formats: as recorded (with the script's arguments for a .mat)
+  ProcessedLog log;  // lab formats: in the log's base frame; plain: already in the scene frame
 };
 
 // Loads and processes (ProcessRobotLog with `options`, whose X_scene_base is ignored: the frame

@@ -1,10 +1,9 @@
 #include "compare/replay.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-
-#include <Eigen/Geometry>
 
 #include "controller/pure/contour_law.h"
 #include "plugin/chamber_pressure_sensor.h"
@@ -36,8 +35,9 @@ bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
   *out = ReplayComparison();
   const int body = mj_name2id(m, mjOBJ_BODY, "probe");
   if (body < 0 || m->body_mocapid[body] < 0) {
-    *error = "the replay scene needs a mocap body named 'probe' holding the tool (e.g. "
-             "scenes/disk_replay.xml)";
+    *error =
+        "the replay scene needs a mocap body named 'probe' holding the tool (e.g. "
+        "scenes/disk_replay.xml)";
     return false;
   }
   if (log.t_s.size() < 2) {
@@ -60,11 +60,12 @@ bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
     i = std::clamp<size_t>(i, 1, log.t_s.size() - 1);
     const double u = std::clamp((t - log.t_s[i - 1]) / (log.t_s[i] - log.t_s[i - 1]), 0.0, 1.0);
     std::array<double, 3> tcp;
-    for (int k = 0; k < 3; ++k) tcp[k] = log.tcp_m[i - 1][k] + u * (log.tcp_m[i][k] - log.tcp_m[i - 1][k]);
+    for (int k = 0; k < 3; ++k)
+      tcp[k] = log.tcp_m[i - 1][k] + u * (log.tcp_m[i][k] - log.tcp_m[i - 1][k]);
     const std::array<double, 4>& q = log.quat[u < 0.5 ? i - 1 : i];
-    const Eigen::Vector3d tool0 = Tool0FromTcp(Eigen::Vector3d(tcp[0], tcp[1], tcp[2]),
-                                               Eigen::Quaterniond(q[0], q[1], q[2], q[3]),
-                                               tcp_offset_m);
+    const Eigen::Vector3d tool0 =
+        Tool0FromTcp(Eigen::Vector3d(tcp[0], tcp[1], tcp[2]),
+                     Eigen::Quaterniond(q[0], q[1], q[2], q[3]), tcp_offset_m);
     for (int k = 0; k < 3; ++k) d->mocap_pos[3 * mocap + k] = tool0[k];
     for (int k = 0; k < 4; ++k) d->mocap_quat[4 * mocap + k] = q[k];
   };
@@ -115,9 +116,10 @@ bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
     const ContourStep l = ComputeContourStep(out->log_pa[i], law);
     se += std::pow(s.p_mean_pa - l.p_mean_pa, 2);
     bias += s.p_mean_pa - l.p_mean_pa;
-    if (std::hypot(s.g[0], s.g[1]) > law.p_noise_pa && std::hypot(l.g[0], l.g[1]) > law.p_noise_pa) {
-      const double da = std::remainder(std::atan2(s.g[1], s.g[0]) - std::atan2(l.g[1], l.g[0]),
-                                       2 * M_PI);
+    if (std::hypot(s.g[0], s.g[1]) > law.p_noise_pa &&
+        std::hypot(l.g[0], l.g[1]) > law.p_noise_pa) {
+      const double da =
+          std::remainder(std::atan2(s.g[1], s.g[0]) - std::atan2(l.g[1], l.g[0]), 2 * M_PI);
       angles.push_back(std::fabs(da) * 180 / M_PI);
     }
   }
@@ -128,7 +130,8 @@ bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
     double s2 = 0;
     for (double a : angles) s2 += a * a;
     out->direction_rms_deg = std::sqrt(s2 / static_cast<double>(angles.size()));
-    std::nth_element(angles.begin(), angles.begin() + static_cast<long>(angles.size() / 2), angles.end());
+    std::nth_element(angles.begin(), angles.begin() + static_cast<long>(angles.size() / 2),
+                     angles.end());
     out->direction_median_deg = angles[angles.size() / 2];
   }
   return true;

@@ -2,11 +2,11 @@
 #ifndef SSC_COMPARE_REPLAY_H_
 #define SSC_COMPARE_REPLAY_H_
 
+#include <mujoco/mujoco.h>
+
 #include <array>
 #include <string>
 #include <vector>
-
-#include <mujoco/mujoco.h>
 
 #include "robotlog/log_types.h"
 

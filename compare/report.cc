@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-
 #include <nlohmann/json.hpp>
 
 namespace ssc {
@@ -20,29 +19,36 @@ json Array4(const std::array<double, 4>& a) {
 }
 
 json Metrics(const DiskTrialMetrics& m) {
-  return {{"dr_mm", Num(m.dr_mm)},       {"sigma_r_mm", Num(m.sigma_r_mm)},
-          {"s_c", Num(m.s_c)},           {"duration_s", Num(m.duration_s)},
-          {"speed_mm_s", Num(m.speed_mm_s)}, {"path_length_mm", Num(m.s_mm)}};
+  return {{"dr_mm", Num(m.dr_mm)},
+          {"sigma_r_mm", Num(m.sigma_r_mm)},
+          {"s_c", Num(m.s_c)},
+          {"duration_s", Num(m.duration_s)},
+          {"speed_mm_s", Num(m.speed_mm_s)},
+          {"path_length_mm", Num(m.s_mm)}};
 }
 
 json SetupJson(const ComparisonSetup& s) {
-  json frames = {{"log_frame", s.log_frame},
-                 {"scene_object", {{"name", s.scene_object.name},
-                                   {"x_m", s.scene_object.x_m},
-                                   {"y_m", s.scene_object.y_m},
-                                   {"top_z_m", s.scene_object.top_z_m},
-                                   {"radius_m", Num(s.scene_object.radius_m)},
-                                   {"half_size_m", {s.scene_object.half_size_m[0],
-                                                    s.scene_object.half_size_m[1]}}}},
-                 {"closest_approach_mm", Num(s.reach.closest_m * 1e3)},
-                 {"closest_approach_t_s", Num(s.reach.t_s)},
-                 {"closest_approach_tcp_m", {s.reach.tcp_m[0], s.reach.tcp_m[1], s.reach.tcp_m[2]}},
-                 {"twin_contact_depth_mm", Num(s.contact_depth_m * 1e3)}};
+  json frames = {
+      {"log_frame", s.log_frame},
+      {"scene_object",
+       {{"name", s.scene_object.name},
+        {"x_m", s.scene_object.x_m},
+        {"y_m", s.scene_object.y_m},
+        {"top_z_m", s.scene_object.top_z_m},
+        {"radius_m", Num(s.scene_object.radius_m)},
+        {"half_size_m", {s.scene_object.half_size_m[0], s.scene_object.half_size_m[1]}}}},
+      {"closest_approach_mm", Num(s.reach.closest_m * 1e3)},
+      {"closest_approach_t_s", Num(s.reach.t_s)},
+      {"closest_approach_tcp_m", {s.reach.tcp_m[0], s.reach.tcp_m[1], s.reach.tcp_m[2]}},
+      {"twin_contact_depth_mm", Num(s.contact_depth_m * 1e3)}};
   if (s.object.known) {
-    frames["object_pose"] = {{"x_m", s.object.x_m},       {"y_m", s.object.y_m},
-                             {"top_z_m", s.object.top_z_m}, {"yaw_deg", s.object.yaw_rad * 180 / M_PI},
+    frames["object_pose"] = {{"x_m", s.object.x_m},
+                             {"y_m", s.object.y_m},
+                             {"top_z_m", s.object.top_z_m},
+                             {"yaw_deg", s.object.yaw_rad * 180 / M_PI},
                              {"radius_m", Num(s.object.radius_m)},
-                             {"source", s.object.source},  {"note", s.object.note}};
+                             {"source", s.object.source},
+                             {"note", s.object.note}};
   }
   json X = json::array();
   for (int r = 0; r < 4; ++r) {
@@ -121,21 +127,20 @@ bool WriteComparisonReport(const std::string& dir, const ComparisonSetup& setup,
 
   if (history && history->ran) {
     const HistoryComparison& h = *history;
-    report["history"] = {
-        {"iterations", h.iterations},
-        {"time_offset_s", h.time_offset_s},
-        {"match_rms_mm", h.match_rms_mm},
-        {"history_in_ur_base", h.history_in_ur_base},
-        {"r_p_median_deg", Num(h.r_p_median_deg)},
-        {"r_p_rms_deg", Num(h.r_p_rms_deg)},
-        {"corr_p_median_deg", Num(h.corr_p_median_deg)},
-        {"corr_p_samples", h.corr_p_samples},
-        {"r_p_final_median_deg", Num(h.r_p_final_median_deg)},
-        {"p_rms_pa", Array4(h.p_rms_pa)},
-        {"p_correlation", Array4(h.p_correlation)},
-        {"p_mean_ratio", Array4(h.p_mean_ratio)},
-        {"f_normal_rms_n", Num(h.f_normal_rms_n)},
-        {"f_normal_bias_n", Num(h.f_normal_bias_n)}};
+    report["history"] = {{"iterations", h.iterations},
+                         {"time_offset_s", h.time_offset_s},
+                         {"match_rms_mm", h.match_rms_mm},
+                         {"history_in_ur_base", h.history_in_ur_base},
+                         {"r_p_median_deg", Num(h.r_p_median_deg)},
+                         {"r_p_rms_deg", Num(h.r_p_rms_deg)},
+                         {"corr_p_median_deg", Num(h.corr_p_median_deg)},
+                         {"corr_p_samples", h.corr_p_samples},
+                         {"r_p_final_median_deg", Num(h.r_p_final_median_deg)},
+                         {"p_rms_pa", Array4(h.p_rms_pa)},
+                         {"p_correlation", Array4(h.p_correlation)},
+                         {"p_mean_ratio", Array4(h.p_mean_ratio)},
+                         {"f_normal_rms_n", Num(h.f_normal_rms_n)},
+                         {"f_normal_bias_n", Num(h.f_normal_bias_n)}};
     md << "\n## Controller, iteration by iteration (edgeFollowing_history)\n\n"
        << Fmt("%.0f iterations; log time = history time + %.3f s (x, y on the logged path to "
               "%.2f mm RMS)",
@@ -144,8 +149,8 @@ bool WriteComparisonReport(const std::string& dir, const ComparisonSetup& setup,
        << ".\n\n| quantity | twin vs lab |\n| --- | --- |\n"
        << Fmt("| r_p direction | median %.1f deg, RMS %.1f deg |\n", h.r_p_median_deg,
               h.r_p_rms_deg)
-       << Fmt("| corr_p direction | median %.1f deg over %.0f iterations |\n",
-              h.corr_p_median_deg, h.corr_p_samples)
+       << Fmt("| corr_p direction | median %.1f deg over %.0f iterations |\n", h.corr_p_median_deg,
+              h.corr_p_samples)
        << Fmt("| r_p_final direction | median %.1f deg |\n", h.r_p_final_median_deg)
        << Fmt("| F_normal | RMS %.2f N, bias %.2f N |\n", h.f_normal_rms_n, h.f_normal_bias_n);
     for (int k = 0; k < 4; ++k) {

@@ -15,8 +15,8 @@ namespace ssc {
 struct ComparisonSetup {
   std::string log_path;
   std::string format;
-  std::string log_frame;       // "base_link", "base", or "scene" (plain CSV)
-  ObjectPose object;           // in the log's base frame (known = false: none)
+  std::string log_frame;  // "base_link", "base", or "scene" (plain CSV)
+  ObjectPose object;      // in the log's base frame (known = false: none)
   SceneObject scene_object;
   Eigen::Isometry3d X_scene_log = Eigen::Isometry3d::Identity();
   Reach reach;

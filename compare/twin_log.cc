@@ -110,8 +110,7 @@ bool WriteLabRecordingFromTrial(const mjModel* scene, const TrialResult& trial,
   }
   const RobotLog log = LabLogFromTrial(trial, config, *disk, LabSetup(), LogPerturbation());
   if (!WriteTopicCsvRecording(dir, log, LoggerVersion::kNewer, written, error)) return false;
-  const std::string mat =
-      dir + "/" + DiskBenchmarkMatName(RecordingStamp(log.t0_ns), log.args);
+  const std::string mat = dir + "/" + DiskBenchmarkMatName(RecordingStamp(log.t0_ns), log.args);
   if (!WriteRobotLogMat(mat, log, error)) return false;
   if (written != nullptr) written->push_back(mat);
   return true;

@@ -21,7 +21,7 @@ std::vector<TwinSample> TwinRunFromTrial(const TrialResult& trial, const TrialCo
 struct LabSetup {
   LogFrame frame = LogFrame::kBaseLink;
   double disk_x_m = kLabDiskCentreX, disk_y_m = kLabDiskCentreY;
-  double disk_top_z_m = 0.005;      // the disk's top in the log frame
+  double disk_top_z_m = 0.005;       // the disk's top in the log frame
   double history_time_offset_s = 0;  // edgeFollowing_history time = trial time - first row + this
 };
 

@@ -20,9 +20,7 @@ Point2 LeftOf(const Point2& t) { return {-t[1], t[0]}; }
 // Polar pieces are parametrised by t in [0, |sweep|], theta = theta0 + sign(sweep) t.
 double Sign(double v) { return v < 0 ? -1.0 : 1.0; }
 
-double RadiusAt(const PathPiece& p, double t) {
-  return p.r0_m + p.dr_drad * Sign(p.sweep_rad) * t;
-}
+double RadiusAt(const PathPiece& p, double t) { return p.r0_m + p.dr_drad * Sign(p.sweep_rad) * t; }
 
 // Antiderivative of sqrt(r^2 + k^2) in r: the spiral's arc length is a difference of it over k.
 double SpiralG(double r, double k) {
@@ -206,8 +204,7 @@ ContourProjection ContourPath::Project(double x, double y) const {
   return ProjectWithin(x, y, 0.0, total_m_);
 }
 
-ContourProjection ContourPath::ProjectWithin(double x, double y, double s_min,
-                                             double s_max) const {
+ContourProjection ContourPath::ProjectWithin(double x, double y, double s_min, double s_max) const {
   ContourProjection best;
   double best_d2 = std::numeric_limits<double>::infinity();
   // Closed contours: the window may wrap past the start; try it shifted by one turn each way.

@@ -19,7 +19,7 @@ namespace {
 // Volute: r = r0 + (r1 - r0) theta / 2 pi about W over one turn, closed by the straight step
 // from r1 back to r0 at theta = 0 (a concave corner at its foot).
 constexpr double kVoluteR0M = 25 * kMm, kVoluteR1M = 60 * kMm;
-constexpr int kVoluteWedges = 16;         // 22.5 deg each
+constexpr int kVoluteWedges = 16;          // 22.5 deg each
 constexpr int kVoluteChordsPerWedge = 12;  // 1.9 deg chords: within 0.01 mm of the spiral
 constexpr double kVoluteCoreM = 20 * kMm;  // central cylinder; wedges start inside it
 constexpr double kVoluteInnerM = 18 * kMm;
@@ -31,8 +31,8 @@ constexpr double kStripGapM = 4 * kMm;       // flat edge between features
 constexpr double kStripLeadInM = 14 * kMm;   // flat edge before the first feature
 constexpr double kStripLeadOutM = 10 * kMm;  // and after the last
 constexpr double kStripWidthM = 30 * kMm;
-constexpr double kStripStartM = 7 * kMm;     // start: this far along the lead-in
-constexpr double kStripEndMarginM = 5 * kMm; // success: this far before the end of the edge
+constexpr double kStripStartM = 7 * kMm;      // start: this far along the lead-in
+constexpr double kStripEndMarginM = 5 * kMm;  // success: this far before the end of the edge
 
 ObjectSpec Strip(const std::string& name, ObjectKind kind, bool semicircles) {
   ObjectSpec s;

@@ -16,13 +16,13 @@ using spec_internal::W;
 
 namespace {
 
-constexpr double kBarDepthM = 60 * kMm;   // the bar reaches this far north of the edge
-constexpr double kLeadInM = 30 * kMm;     // sharp bar before the edge's start (the start sees
-constexpr double kRunOutM = 30 * kMm;     // a continuing edge) and 16 mm fillet after its end
-constexpr double kSliceM = 10 * kMm;      // slice length along the edge
-constexpr int kArcChords = 16;            // chords of the rounded edge per cross-section
-constexpr double kStartAlongM = 10 * kMm; // start on the sharp end
-constexpr double kEndMarginM = 10 * kMm;  // success: this far before the end of the edge
+constexpr double kBarDepthM = 60 * kMm;    // the bar reaches this far north of the edge
+constexpr double kLeadInM = 30 * kMm;      // sharp bar before the edge's start (the start sees
+constexpr double kRunOutM = 30 * kMm;      // a continuing edge) and 16 mm fillet after its end
+constexpr double kSliceM = 10 * kMm;       // slice length along the edge
+constexpr int kArcChords = 16;             // chords of the rounded edge per cross-section
+constexpr double kStartAlongM = 10 * kMm;  // start on the sharp end
+constexpr double kEndMarginM = 10 * kMm;   // success: this far before the end of the edge
 
 // The bar's cross-section at x_local along the edge (y north of the edge, z up), convex: the top
 // face, the rounded edge (radius r about (r, top - r)) down to the side wall or, where r exceeds
@@ -82,9 +82,9 @@ ObjectSpec MakeFillet() {
                 "cubic through 0, 4.7, 10.4, 14.5, 16.0 mm at 0, 45, 90, 135, 180 mm), with %.0f "
                 "mm of sharp bar before and %.0f mm of 16 mm fillet after; %zu convex slices %.0f "
                 "mm long; start %.0f mm along, %.0f mm inside",
-                (kLeadInM + kFilletEdgeLengthM + kRunOutM) / kMm, kBarDepthM / kMm,
-                kLeadInM / kMm, kRunOutM / kMm, s.pieces.size(), kSliceM / kMm,
-                kStartAlongM / kMm, kStartInsetM / kMm);
+                (kLeadInM + kFilletEdgeLengthM + kRunOutM) / kMm, kBarDepthM / kMm, kLeadInM / kMm,
+                kRunOutM / kMm, s.pieces.size(), kSliceM / kMm, kStartAlongM / kMm,
+                kStartInsetM / kMm);
   s.description = desc;
   return s;
 }

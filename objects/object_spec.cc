@@ -87,13 +87,20 @@ ConvexPiece ConvexPiece::Hull(std::vector<std::array<double, 3>> points) {
 
 const char* ObjectKindName(ObjectKind kind) {
   switch (kind) {
-    case ObjectKind::kDisk: return "disk";
-    case ObjectKind::kHole: return "hole";
-    case ObjectKind::kCorner: return "corner";
-    case ObjectKind::kVolute: return "volute";
-    case ObjectKind::kSemicircleStrip: return "semicircle_strip";
-    case ObjectKind::kSemisquareStrip: return "semisquare_strip";
-    case ObjectKind::kFillet: return "fillet";
+    case ObjectKind::kDisk:
+      return "disk";
+    case ObjectKind::kHole:
+      return "hole";
+    case ObjectKind::kCorner:
+      return "corner";
+    case ObjectKind::kVolute:
+      return "volute";
+    case ObjectKind::kSemicircleStrip:
+      return "semicircle_strip";
+    case ObjectKind::kSemisquareStrip:
+      return "semisquare_strip";
+    case ObjectKind::kFillet:
+      return "fillet";
   }
   return "?";
 }

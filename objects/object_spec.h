@@ -26,13 +26,19 @@
 
 namespace ssc {
 
-inline constexpr double kTableZ = 0.0;                            // table plane, m
-inline constexpr double kObjectTopZ = 0.010;                      // top face of every object, m
+inline constexpr double kTableZ = 0.0;         // table plane, m
+inline constexpr double kObjectTopZ = 0.010;   // top face of every object, m
 inline constexpr double kStartInsetM = 0.003;  // cup centre inside the edge at the start
 inline constexpr double kSeamOverlapM = 1e-4;  // neighbouring convex pieces overlap this much
 
 enum class ObjectKind {
-  kDisk, kHole, kCorner, kVolute, kSemicircleStrip, kSemisquareStrip, kFillet
+  kDisk,
+  kHole,
+  kCorner,
+  kVolute,
+  kSemicircleStrip,
+  kSemisquareStrip,
+  kFillet
 };
 const char* ObjectKindName(ObjectKind kind);
 
@@ -40,10 +46,10 @@ const char* ObjectKindName(ObjectKind kind);
 struct ConvexPiece {
   enum class Shape { kBox, kCylinder, kPrism, kHull };
   Shape shape = Shape::kBox;
-  Point2 centre{};                  // box, cylinder: axis through (x, y)
-  double half_x_m = 0, half_y_m = 0;  // box (axis-aligned)
-  double radius_m = 0;              // cylinder
-  std::vector<Point2> polygon;      // prism: a convex polygon (either orientation)
+  Point2 centre{};                                 // box, cylinder: axis through (x, y)
+  double half_x_m = 0, half_y_m = 0;               // box (axis-aligned)
+  double radius_m = 0;                             // cylinder
+  std::vector<Point2> polygon;                     // prism: a convex polygon (either orientation)
   std::vector<std::array<double, 3>> hull_points;  // hull: the piece is their convex hull
   double bottom_z_m = kTableZ, top_z_m = kObjectTopZ;  // box, cylinder, prism
 
@@ -55,12 +61,12 @@ struct ConvexPiece {
 
 // How the trial runner starts a contour-following trial on an object, and its goal.
 struct ObjectTrialSetup {
-  Point2 landing_xy_m{};    // the cup descends here to the start-up compression (world)
-  Point2 start_xy_m{};      // cup centre when following starts
-  double start_arc_m = 0;   // arc position of the edge point next to the start
+  Point2 landing_xy_m{};                // the cup descends here to the start-up compression (world)
+  Point2 start_xy_m{};                  // cup centre when following starts
+  double start_arc_m = 0;               // arc position of the edge point next to the start
   double start_inset_m = kStartInsetM;  // start lies this far inside the edge (object side)
-  Point2 follow_direction{1, 0};  // unit: the edge's walking direction at the start
-  bool object_on_left = true;     // the published sense: ccw round a disk, cw round a hole
+  Point2 follow_direction{1, 0};        // unit: the edge's walking direction at the start
+  bool object_on_left = true;           // the published sense: ccw round a disk, cw round a hole
   // Closed contours: the swept angle about the object's centre (signed: > 0 counter-clockwise);
   // open contours: the goal point's arc position along the edge.
   TrialGoal goal;
@@ -68,7 +74,7 @@ struct ObjectTrialSetup {
 };
 
 struct ObjectSpec {
-  std::string name;         // e.g. disk_d06, disk_r35, hole_d10, corner_a090, volute, fillet
+  std::string name;  // e.g. disk_d06, disk_r35, hole_d10, corner_a090, volute, fillet
   ObjectKind kind = ObjectKind::kDisk;
   double param = 0;         // diameter (mm) for disks and holes, angle (deg) for corners, else 0
   std::string description;  // dimensions in words, for the files and docs

@@ -17,12 +17,12 @@ using spec_internal::W;
 
 namespace {
 
-constexpr double kPlateHalfM = 50 * kMm;     // hole plate: 100 x 100 mm
-constexpr double kHoleRingM = 6 * kMm;       // wedges reach this far beyond the hole's radius
-constexpr double kHoleSagittaM = 0.03 * kMm; // largest chord-to-circle gap of the hole polygon
-constexpr double kCornerEdgeM = 60 * kMm;    // both straight edges of a corner
-constexpr double kCornerReachM = 70 * kMm;   // radius of the corner's round back
-constexpr double kCornerStartM = 40 * kMm;   // start: this far before the apex on edge 1
+constexpr double kPlateHalfM = 50 * kMm;      // hole plate: 100 x 100 mm
+constexpr double kHoleRingM = 6 * kMm;        // wedges reach this far beyond the hole's radius
+constexpr double kHoleSagittaM = 0.03 * kMm;  // largest chord-to-circle gap of the hole polygon
+constexpr double kCornerEdgeM = 60 * kMm;     // both straight edges of a corner
+constexpr double kCornerReachM = 70 * kMm;    // radius of the corner's round back
+constexpr double kCornerStartM = 40 * kMm;    // start: this far before the apex on edge 1
 // Success: the cup follows edge 2 for one body diameter past the apex.
 constexpr double kCornerPastM = kCupBodyDiameterMm * kMm;
 constexpr double kCupBodyRadiusM = 0.5 * kCupBodyDiameterMm * kMm;
@@ -138,8 +138,8 @@ ObjectSpec MakeCorner(double alpha_deg) {
                 "%s corner of %.4g deg between two 60 mm straight edges (apex at W), a sector of "
                 "radius 70 mm (%zu convex prism%s); start %.0f mm before the apex, %.0f mm inside",
                 alpha_deg < 180 ? "convex" : (alpha_deg > 180 ? "concave" : "straight (180 deg)"),
-                alpha_deg, s.pieces.size(), s.pieces.size() > 1 ? "s" : "",
-                kCornerStartM / kMm, kStartInsetM / kMm);
+                alpha_deg, s.pieces.size(), s.pieces.size() > 1 ? "s" : "", kCornerStartM / kMm,
+                kStartInsetM / kMm);
   s.description = desc;
   return s;
 }

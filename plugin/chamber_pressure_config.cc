@@ -49,12 +49,11 @@ std::string FormatGroups(const C& c) {
 
 // Getters and setters in the key's unit; the structs hold SI units (to_si = 1 / to_key,
 // written out so that a given value converts exactly as it always has).
-#define SSC_KEY_SCALED(member, to_key, to_si)                           \
-  [](const C& c) { return c.member * (to_key); },                      \
-  [](C* c, double v) { c->member = v * (to_si); }
-#define SSC_KEY_INT(member, type)                                       \
-  [](const C& c) { return static_cast<double>(c.member); },            \
-  [](C* c, double v) { c->member = static_cast<type>(v); }
+#define SSC_KEY_SCALED(member, to_key, to_si) \
+  [](const C& c) { return c.member * (to_key); }, [](C* c, double v) { c->member = v * (to_si); }
+#define SSC_KEY_INT(member, type)                           \
+  [](const C& c) { return static_cast<double>(c.member); }, \
+      [](C* c, double v) { c->member = static_cast<type>(v); }
 
 // constexpr: the table is built from the plugin library's load-time initialiser, maybe before
 // this file's dynamic initialisers have run.
@@ -96,9 +95,11 @@ const std::vector<ChamberPressureConfigKey>& ChamberPressureConfigKeys() {
        SSC_KEY_SCALED(lip.tilt_stiffness_nm_per_rad, 1e3 / kDegPerRad, 1e-3 * kDegPerRad)},
       // Pneumatics.
       {"pump_max_vacuum_pa", "Pa", "pneumatics", "pump vacuum at zero flow",
-       NumberRange::Positive(100000).OpenHigh(), SSC_KEY_SCALED(pneumatics.pump_max_vacuum_pa, 1, 1)},
+       NumberRange::Positive(100000).OpenHigh(),
+       SSC_KEY_SCALED(pneumatics.pump_max_vacuum_pa, 1, 1)},
       {"pump_free_flow_lpm", "L/min", "pneumatics", "pump flow at zero vacuum",
-       NumberRange::Positive(60000), [](const C& c) { return c.pneumatics.pump_free_flow_m3_s * 60000.0; },
+       NumberRange::Positive(60000),
+       [](const C& c) { return c.pneumatics.pump_free_flow_m3_s * 60000.0; },
        [](C* c, double v) { c->pneumatics.pump_free_flow_m3_s = v / 60000.0; }},
       {"port_area_mm2", "mm^2", "pneumatics", "restriction from each chamber to the shared port",
        kArea, SSC_KEY_SCALED(pneumatics.port_area_m2, 1e6, 1e-6)},
@@ -163,7 +164,8 @@ std::optional<ChamberPressureConfig> ParseChamberPressureConfig(
     return std::nullopt;
   }
   // The pure structs check their own invariants (relations between keys included).
-  for (const std::string& e : {c.geometry.Validate(), c.pneumatics.Validate(), c.sensor.Validate()}) {
+  for (const std::string& e :
+       {c.geometry.Validate(), c.pneumatics.Validate(), c.sensor.Validate()}) {
     if (!e.empty()) {
       *error = plugin + ": " + e;
       return std::nullopt;
@@ -185,8 +187,9 @@ std::string FindEmptyConfigValuesIn(const std::filesystem::path& file,
   for (size_t a = text.find("<!--"); a != std::string::npos; a = text.find("<!--", a)) {
     const size_t b = text.find("-->", a);
     const size_t end = b == std::string::npos ? text.size() : b + 3;
-    std::replace_if(text.begin() + static_cast<long>(a), text.begin() + static_cast<long>(end),
-                    [](char ch) { return ch != '\n'; }, ' ');
+    std::replace_if(
+        text.begin() + static_cast<long>(a), text.begin() + static_cast<long>(end),
+        [](char ch) { return ch != '\n'; }, ' ');
     a = end;
   }
   static const std::regex config_tag(R"(<config\b[^>]*>)");
@@ -258,7 +261,8 @@ std::string ChamberPressureConfigMarkdown() {
       os << "\n## " << char(section[0] - 'a' + 'A') << section.substr(1) << "\n\n"
          << "| key | unit | default | valid | meaning |\n| --- | --- | --- | --- | --- |\n";
     }
-    const std::string valid = k.parse_text ? "groups, each " + k.range.ToString() : k.range.ToString();
+    const std::string valid =
+        k.parse_text ? "groups, each " + k.range.ToString() : k.range.ToString();
     os << "| `" << k.key << "` | " << (k.unit[0] ? k.unit : "-") << " | "
        << ConfigValueText(k, defaults) << " | " << valid << " | " << k.meaning << " |\n";
   }

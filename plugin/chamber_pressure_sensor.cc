@@ -34,7 +34,6 @@ SensorChainState* StateOf(mjData* d, const mjModel* m, int instance) {
   return reinterpret_cast<SensorChainState*>(d->plugin_state + m->plugin_stateadr[instance]);
 }
 
-
 // The sensor behind a plugin instance (its plugin_data). Private to this file: tools see it
 // through ChamberPressureDiagnostics.
 class ChamberPressureSensor final : public ChamberPressureDiagnostics {
@@ -141,14 +140,15 @@ ChamberPressureSensor* ChamberPressureSensor::Create(const mjModel* m, int insta
     return nullptr;
   }
   const int site_id = m->sensor_objid[sensor_id];
-  auto* sensor = new ChamberPressureSensor(std::move(*config), instance, site_id,
-                                           m->sensor_adr[sensor_id]);
+  auto* sensor =
+      new ChamberPressureSensor(std::move(*config), instance, site_id, m->sensor_adr[sensor_id]);
 
   // Lip segments: geoms of the lip group in the site body's subtree.
   const int root = m->site_bodyid[site_id];
   sensor->lip_of_geom_.assign(m->ngeom, -1);
   for (int g = 0; g < m->ngeom; ++g) {
-    if (m->geom_group[g] == sensor->config_.lip_geom_group && IsInSubtree(m, m->geom_bodyid[g], root)) {
+    if (m->geom_group[g] == sensor->config_.lip_geom_group &&
+        IsInSubtree(m, m->geom_bodyid[g], root)) {
       sensor->lip_of_geom_[g] = static_cast<int>(sensor->lip_geoms_.size());
       sensor->lip_geoms_.push_back(g);
     }
@@ -156,8 +156,8 @@ ChamberPressureSensor* ChamberPressureSensor::Create(const mjModel* m, int insta
   if (sensor->lip_geoms_.empty() || sensor->lip_geoms_.size() > kMaxLipSegments) {
     *error = std::string(kChamberPressurePluginName) + ": found " +
              std::to_string(sensor->lip_geoms_.size()) + " lip segment geoms (group " +
-             std::to_string(sensor->config_.lip_geom_group) + ") under the site's body; need 1 to " +
-             std::to_string(kMaxLipSegments);
+             std::to_string(sensor->config_.lip_geom_group) +
+             ") under the site's body; need 1 to " + std::to_string(kMaxLipSegments);
     delete sensor;
     return nullptr;
   }
@@ -340,10 +340,13 @@ bool ChamberPressureSensor::BindLip(const mjModel* m, std::string* error) {
     }
   }
   if (lip.shear_stiffness_n_per_m > 0 && !has_shear) {
-    return fail("lip_shear_n_per_mm > 0 needs slide joints on the lip carrier body (models/ssc_tool.xml)");
+    return fail(
+        "lip_shear_n_per_mm > 0 needs slide joints on the lip carrier body (models/ssc_tool.xml)");
   }
   if (lip.tilt_stiffness_nm_per_rad > 0 && !has_tilt) {
-    return fail("lip_tilt_nmm_per_deg > 0 needs hinge joints on the lip carrier body (models/ssc_tool.xml)");
+    return fail(
+        "lip_tilt_nmm_per_deg > 0 needs hinge joints on the lip carrier body "
+        "(models/ssc_tool.xml)");
   }
   return true;
 }
@@ -554,9 +557,13 @@ void ChamberPressureSensor::Visualize(const mjModel* m, mjData* d, const mjvOpti
     const LipSegmentState& s = sample_.lip[i];
     float rgba[4] = {0.9f, 0.15f, 0.1f, 1.0f};
     if (s.in_contact) {
-      rgba[0] = 0.1f; rgba[1] = 0.85f; rgba[2] = 0.2f;
+      rgba[0] = 0.1f;
+      rgba[1] = 0.85f;
+      rgba[2] = 0.2f;
     } else if (s.gap_m <= seal) {
-      rgba[0] = 1.0f; rgba[1] = 0.7f; rgba[2] = 0.0f;
+      rgba[0] = 1.0f;
+      rgba[1] = 0.7f;
+      rgba[2] = 0.0f;
     }
     const int g = lip_geoms_[i];
     const mjtNum size[3] = {0.0012, 0.0012, 0.0012};
@@ -569,7 +576,7 @@ void ChamberPressureSensor::Visualize(const mjModel* m, mjData* d, const mjvOpti
 }
 
 const ChamberPressureDiagnostics* FindChamberPressureDiagnostics(const mjModel* m,
-                                                                  const mjData* d) {
+                                                                 const mjData* d) {
   int slot = -1;
   const mjpPlugin* plugin = mjp_getPlugin(kChamberPressurePluginName, &slot);
   if (plugin == nullptr) return nullptr;
@@ -630,12 +637,12 @@ void RegisterChamberPressurePlugin() {
       sensor->Compute(m, d, instance);
     }
   };
-  plugin.visualize = +[](const mjModel* m, mjData* d, const mjvOption* opt, mjvScene* scn,
-                         int instance) {
-    if (const ChamberPressureSensor* sensor = SensorOf(d, instance)) {
-      sensor->Visualize(m, d, opt, scn);
-    }
-  };
+  plugin.visualize =
+      +[](const mjModel* m, mjData* d, const mjvOption* opt, mjvScene* scn, int instance) {
+        if (const ChamberPressureSensor* sensor = SensorOf(d, instance)) {
+          sensor->Visualize(m, d, opt, scn);
+        }
+      };
   mjp_registerPlugin(&plugin);
 }
 

@@ -40,12 +40,12 @@
 #ifndef SSC_PLUGIN_CHAMBER_PRESSURE_SENSOR_H_
 #define SSC_PLUGIN_CHAMBER_PRESSURE_SENSOR_H_
 
+#include <mujoco/mujoco.h>
+
 #include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include <mujoco/mujoco.h>
 
 #include "plugin/chamber_pressure_config.h"
 #include "plugin/pneumatics/cup_geometry.h"
@@ -71,9 +71,9 @@ struct ChamberPressureSample {
 class ChamberPressureDiagnostics {
  public:
   virtual ~ChamberPressureDiagnostics() = default;
-  virtual int instance() const = 0;      // plugin instance id
-  virtual int site_id() const = 0;       // the tool site the sensor is attached to
-  virtual int sensor_adr() const = 0;    // first of its 4 values in sensordata
+  virtual int instance() const = 0;    // plugin instance id
+  virtual int site_id() const = 0;     // the tool site the sensor is attached to
+  virtual int sensor_adr() const = 0;  // first of its 4 values in sensordata
   virtual int num_lip_segments() const = 0;
   virtual const ChamberPressureConfig& config() const = 0;
   virtual const ChamberPressureSample& last_sample() const = 0;

@@ -1,10 +1,10 @@
 #include "plugin/mujoco_messages.h"
 
+#include <mujoco/mujoco.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-
-#include <mujoco/mujoco.h>
 
 namespace ssc {
 namespace {

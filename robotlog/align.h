@@ -10,10 +10,9 @@
 #ifndef SSC_ROBOTLOG_ALIGN_H_
 #define SSC_ROBOTLOG_ALIGN_H_
 
+#include <Eigen/Geometry>
 #include <array>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 #include "robotlog/log_types.h"
 

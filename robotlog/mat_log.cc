@@ -53,17 +53,38 @@ bool ToDoubles(const matvar_t* v, std::vector<double>* out) {
   }
   const size_t n = Elements(v);
   switch (v->data_type) {
-    case MAT_T_DOUBLE: Convert<double>(v->data, n, out); return true;
-    case MAT_T_SINGLE: Convert<float>(v->data, n, out); return true;
-    case MAT_T_INT8: Convert<int8_t>(v->data, n, out); return true;
-    case MAT_T_UINT8: Convert<uint8_t>(v->data, n, out); return true;
-    case MAT_T_INT16: Convert<int16_t>(v->data, n, out); return true;
-    case MAT_T_UINT16: Convert<uint16_t>(v->data, n, out); return true;
-    case MAT_T_INT32: Convert<int32_t>(v->data, n, out); return true;
-    case MAT_T_UINT32: Convert<uint32_t>(v->data, n, out); return true;
-    case MAT_T_INT64: Convert<int64_t>(v->data, n, out); return true;
-    case MAT_T_UINT64: Convert<uint64_t>(v->data, n, out); return true;
-    default: return false;
+    case MAT_T_DOUBLE:
+      Convert<double>(v->data, n, out);
+      return true;
+    case MAT_T_SINGLE:
+      Convert<float>(v->data, n, out);
+      return true;
+    case MAT_T_INT8:
+      Convert<int8_t>(v->data, n, out);
+      return true;
+    case MAT_T_UINT8:
+      Convert<uint8_t>(v->data, n, out);
+      return true;
+    case MAT_T_INT16:
+      Convert<int16_t>(v->data, n, out);
+      return true;
+    case MAT_T_UINT16:
+      Convert<uint16_t>(v->data, n, out);
+      return true;
+    case MAT_T_INT32:
+      Convert<int32_t>(v->data, n, out);
+      return true;
+    case MAT_T_UINT32:
+      Convert<uint32_t>(v->data, n, out);
+      return true;
+    case MAT_T_INT64:
+      Convert<int64_t>(v->data, n, out);
+      return true;
+    case MAT_T_UINT64:
+      Convert<uint64_t>(v->data, n, out);
+      return true;
+    default:
+      return false;
   }
 }
 
@@ -72,8 +93,7 @@ bool CharRows(const matvar_t* v, std::vector<std::string>* rows) {
   if (v->class_type != MAT_C_CHAR || v->rank != 2 || v->data == nullptr) return false;
   const size_t n = v->dims[0], len = v->dims[1];
   size_t width = 1;
-  if (v->data_type == MAT_T_UINT16 || v->data_type == MAT_T_UTF16 ||
-      v->data_type == MAT_T_INT16) {
+  if (v->data_type == MAT_T_UINT16 || v->data_type == MAT_T_UTF16 || v->data_type == MAT_T_INT16) {
     width = 2;
   } else if (v->data_type == MAT_T_UINT32 || v->data_type == MAT_T_UTF32) {
     width = 4;
@@ -96,7 +116,8 @@ bool CharRows(const matvar_t* v, std::vector<std::string>* rows) {
 }
 
 bool EndsWith(const std::string& s, const std::string& suffix) {
-  return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() > suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 std::vector<std::string> VariableNames(mat_t* mat) {
@@ -115,8 +136,9 @@ bool ReadTopicPair(mat_t* mat, const std::string& path, const std::string& prefi
   VarPtr names(Mat_VarRead(mat, names_var.c_str()));
   std::vector<std::string> columns;
   if (!names || !CharRows(names.get(), &columns) || columns.empty()) {
-    text::SetError(e, path, 0, 0, "variable '" + names_var + "': expected a char matrix of " +
-                                      "column names (one per row)");
+    text::SetError(
+        e, path, 0, 0,
+        "variable '" + names_var + "': expected a char matrix of " + "column names (one per row)");
     return false;
   }
   std::vector<std::string_view> views(columns.begin(), columns.end());
@@ -161,12 +183,13 @@ bool ReadTopicPair(mat_t* mat, const std::string& path, const std::string& prefi
     const double t = v[i];  // column-major: column 0 is the first n elements
     // 9.2e18 ns is the int64 limit (the year 2262).
     if (!std::isfinite(t) || t < 0 || t >= 9.2e18 || t != std::floor(t)) {
-      text::SetError(e, path, row, 1, what + "time stamp " + text::FormatDouble(t) +
-                                          " is not a non-negative integer number of ns");
+      text::SetError(e, path, row, 1,
+                     what + "time stamp " + text::FormatDouble(t) +
+                         " is not a non-negative integer number of ns");
       return false;
     }
-    const long long stamp = int64_stamps ? static_cast<const int64_t*>(data->data)[i]
-                                          : static_cast<long long>(t);
+    const long long stamp =
+        int64_stamps ? static_cast<const int64_t*>(data->data)[i] : static_cast<long long>(t);
     if (!table->t_ns.empty() && stamp <= table->t_ns.back()) {
       text::SetError(e, path, row, 1,
                      what + (stamp == table->t_ns.back() ? "duplicate" : "non-monotonic") +
@@ -179,9 +202,9 @@ bool ReadTopicPair(mat_t* mat, const std::string& path, const std::string& prefi
       const int field = table->header.field_of_column[c - 1];
       const double x = v[c * n + i];
       if (!std::isfinite(x)) {
-        text::SetError(e, path, row, text::ToInt(c + 1),
-                       what + "non-finite value (" +
-                           topic.short_names[static_cast<size_t>(field)] + ")");
+        text::SetError(
+            e, path, row, text::ToInt(c + 1),
+            what + "non-finite value (" + topic.short_names[static_cast<size_t>(field)] + ")");
         return false;
       }
       values[static_cast<size_t>(field)] = x;
@@ -194,8 +217,8 @@ bool ReadTopicPair(mat_t* mat, const std::string& path, const std::string& prefi
 }
 
 // A numeric argument: a scalar or a row/column vector.
-bool ReadNumbers(mat_t* mat, const std::string& path, const char* name, size_t min_n,
-                 size_t max_n, std::vector<double>* out, LoadError* e) {
+bool ReadNumbers(mat_t* mat, const std::string& path, const char* name, size_t min_n, size_t max_n,
+                 std::vector<double>* out, LoadError* e) {
   VarPtr v(Mat_VarRead(mat, name));
   out->clear();
   if (!v) return true;  // absent: not a disk benchmark file
@@ -219,8 +242,7 @@ bool ReadNumbers(mat_t* mat, const std::string& path, const char* name, size_t m
   return true;
 }
 
-bool ReadScalar(mat_t* mat, const std::string& path, const char* name, double* out,
-                LoadError* e) {
+bool ReadScalar(mat_t* mat, const std::string& path, const char* name, double* out, LoadError* e) {
   std::vector<double> v;
   if (!ReadNumbers(mat, path, name, 1, 1, &v, e)) return false;
   if (!v.empty()) *out = v[0];
@@ -229,8 +251,7 @@ bool ReadScalar(mat_t* mat, const std::string& path, const char* name, double* o
 
 // edgeFollowing_history: an N x 11 cell array (what savemat makes of rows holding 2-vectors),
 // an N x 11 numeric matrix (scalar r_p...) or an N x 14 one (the vectors spread out).
-bool ReadHistory(mat_t* mat, const std::string& path, std::vector<HistoryRow>* out,
-                 LoadError* e) {
+bool ReadHistory(mat_t* mat, const std::string& path, std::vector<HistoryRow>* out, LoadError* e) {
   constexpr char kName[] = "edgeFollowing_history";
   VarPtr v(Mat_VarRead(mat, kName));
   if (!v) return true;
@@ -244,8 +265,9 @@ bool ReadHistory(mat_t* mat, const std::string& path, std::vector<HistoryRow>* o
   std::vector<std::vector<double>> rows(n);
   if (v->class_type == MAT_C_CELL) {
     if (cols != kHistoryColumns) {
-      text::SetError(e, path, 0, 0, what + "is a " + std::to_string(n) + " x " +
-                                        std::to_string(cols) + " cell array, expected N x 11");
+      text::SetError(e, path, 0, 0,
+                     what + "is a " + std::to_string(n) + " x " + std::to_string(cols) +
+                         " cell array, expected N x 11");
       return false;
     }
     for (size_t i = 0; i < n; ++i) {
@@ -255,8 +277,7 @@ bool ReadHistory(mat_t* mat, const std::string& path, std::vector<HistoryRow>* o
         const size_t want = (c >= 3 && c <= 5) ? 2 : 1;
         if (cell == nullptr || !ToDoubles(cell, &x) || (x.size() != 1 && x.size() != want)) {
           text::SetError(e, path, text::ToInt(i + 1), text::ToInt(c + 1),
-                         what + "cell is not " + (want == 2 ? "a 2-vector or " : "") +
-                             "a number");
+                         what + "cell is not " + (want == 2 ? "a 2-vector or " : "") + "a number");
           return false;
         }
         if (x.size() == 1 && want == 2) x.push_back(0.0);
@@ -266,9 +287,9 @@ bool ReadHistory(mat_t* mat, const std::string& path, std::vector<HistoryRow>* o
   } else {
     std::vector<double> x;
     if (!ToDoubles(v.get(), &x) || (cols != kHistoryColumns && cols != 14)) {
-      text::SetError(e, path, 0, 0, what + "is " + std::to_string(n) + " x " +
-                                        std::to_string(cols) +
-                                        ", expected an N x 11 cell array or an N x 14 matrix");
+      text::SetError(e, path, 0, 0,
+                     what + "is " + std::to_string(n) + " x " + std::to_string(cols) +
+                         ", expected an N x 11 cell array or an N x 14 matrix");
       return false;
     }
     for (size_t i = 0; i < n; ++i) {
@@ -332,8 +353,7 @@ bool WriteVar(mat_t* mat, matvar_t* v, const std::string& name, std::string* err
 
 matvar_t* Doubles(const char* name, size_t rows, size_t cols, const std::vector<double>& v) {
   size_t dims[2] = {rows, cols};
-  return Mat_VarCreate(name, MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims,
-                       const_cast<double*>(v.data()), 0);
+  return Mat_VarCreate(name, MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, const_cast<double*>(v.data()), 0);
 }
 
 matvar_t* Int64s(const char* name, size_t rows, size_t cols, const std::vector<double>& v) {
@@ -416,18 +436,25 @@ bool WriteStream(mat_t* mat, const LabTopic& t, LoggerVersion version, long long
 bool WriteHistory(mat_t* mat, const std::vector<HistoryRow>& history, std::string* error) {
   const size_t n = history.size();
   size_t dims[2] = {n, kHistoryColumns};
-  matvar_t* cell = Mat_VarCreate("edgeFollowing_history", MAT_C_CELL, MAT_T_CELL, 2, dims,
-                                 nullptr, 0);
+  matvar_t* cell =
+      Mat_VarCreate("edgeFollowing_history", MAT_C_CELL, MAT_T_CELL, 2, dims, nullptr, 0);
   if (cell == nullptr) {
     *error = "cannot create edgeFollowing_history";
     return false;
   }
   for (size_t i = 0; i < n; ++i) {
     const HistoryRow& h = history[i];
-    const std::vector<std::vector<double>> row = {
-        {h.t_s}, {h.x_m}, {h.y_m}, {h.r_p[0], h.r_p[1]}, {h.corr_p[0], h.corr_p[1]},
-        {h.r_p_final[0], h.r_p_final[1]}, {h.f_normal_n}, {h.p_pa[0]}, {h.p_pa[1]},
-        {h.p_pa[2]}, {h.p_pa[3]}};
+    const std::vector<std::vector<double>> row = {{h.t_s},
+                                                  {h.x_m},
+                                                  {h.y_m},
+                                                  {h.r_p[0], h.r_p[1]},
+                                                  {h.corr_p[0], h.corr_p[1]},
+                                                  {h.r_p_final[0], h.r_p_final[1]},
+                                                  {h.f_normal_n},
+                                                  {h.p_pa[0]},
+                                                  {h.p_pa[1]},
+                                                  {h.p_pa[2]},
+                                                  {h.p_pa[3]}};
     for (size_t c = 0; c < kHistoryColumns; ++c) {
       Mat_VarSetCell(cell, static_cast<int>(c * n + i), Doubles(nullptr, 1, row[c].size(), row[c]));
     }

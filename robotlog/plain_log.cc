@@ -15,8 +15,8 @@ namespace {
 // Column indices into kColumns.
 enum Column : int { kT = 0, kX = 1, kQw = 4, kP1 = 8, kFx = 12, kPwm = 18, kNumColumns = 19 };
 const char* const kColumns[kNumColumns] = {
-    "t_s",   "x_m",   "y_m",   "z_m",  "qw",   "qx",   "qy",    "qz",    "p1_pa",  "p2_pa",
-    "p3_pa", "p4_pa", "fx_n",  "fy_n", "fz_n", "tx_nm", "ty_nm", "tz_nm", "pwm_pct"};
+    "t_s",   "x_m",   "y_m",  "z_m",  "qw",   "qx",    "qy",    "qz",    "p1_pa",  "p2_pa",
+    "p3_pa", "p4_pa", "fx_n", "fy_n", "fz_n", "tx_nm", "ty_nm", "tz_nm", "pwm_pct"};
 
 std::string Num(double v) { return text::FormatDouble(v); }
 
@@ -40,8 +40,8 @@ bool CheckRow(const std::array<double, kNumColumns>& v, const std::array<int, kN
                               " is more than 5 m from the scene origin: millimetres?");
     }
   }
-  const double n = std::sqrt(v[kQw] * v[kQw] + v[kQw + 1] * v[kQw + 1] +
-                             v[kQw + 2] * v[kQw + 2] + v[kQw + 3] * v[kQw + 3]);
+  const double n = std::sqrt(v[kQw] * v[kQw] + v[kQw + 1] * v[kQw + 1] + v[kQw + 2] * v[kQw + 2] +
+                             v[kQw + 3] * v[kQw + 3]);
   if (std::fabs(n - 1) > kQuaternionNormTolerance) {
     return fail(kQw, "qw..qz is not a unit quaternion (norm " + Num(n) + ")");
   }
@@ -147,13 +147,12 @@ bool ParsePlainLog(std::string_view contents, const std::string& file, Processed
         const std::string_view cell = cells[static_cast<size_t>(at[k])];
         const text::NumberParse r = text::ParseDouble(cell, &v[k]);
         if (r != text::NumberParse::kOk) {
-          text::SetError(error, file, line_no, at[k] + 1,
-                         (r == text::NumberParse::kEmpty       ? std::string("empty cell")
-                          : r == text::NumberParse::kNonFinite ? "non-finite value " +
-                                                                     text::Quote(cell)
-                                                               : text::Quote(cell) +
-                                                                     " is not a number") +
-                             " (" + kColumns[k] + ")");
+          text::SetError(
+              error, file, line_no, at[k] + 1,
+              (r == text::NumberParse::kEmpty       ? std::string("empty cell")
+               : r == text::NumberParse::kNonFinite ? "non-finite value " + text::Quote(cell)
+                                                    : text::Quote(cell) + " is not a number") +
+                  " (" + kColumns[k] + ")");
           return ok = false;
         }
       }
@@ -195,7 +194,8 @@ bool ParsePlainLog(std::string_view contents, const std::string& file, Processed
       text::SetError(error, file, lines[peak_row], at_p1 + 1,
                      "the largest vacuum in the log is " + Num(peak) +
                          " Pa: kPa under a _pa column? A trial on an object reads more than " +
-                         Num(kPeakVacuumMinPa) + " Pa (a cup that never touched anything gives "
+                         Num(kPeakVacuumMinPa) +
+                         " Pa (a cup that never touched anything gives "
                          "nothing to compare)");
       return false;
     }

@@ -24,9 +24,9 @@
 
 namespace ssc {
 
-inline constexpr double kGaugeVacuumMaxPa = 80e3;   // above: an absolute pressure
-inline constexpr double kGaugeVacuumMinPa = -5e3;   // below: vacuum written negative
-inline constexpr double kPeakVacuumMinPa = 50;      // largest vacuum below this: kPa?
+inline constexpr double kGaugeVacuumMaxPa = 80e3;  // above: an absolute pressure
+inline constexpr double kGaugeVacuumMinPa = -5e3;  // below: vacuum written negative
+inline constexpr double kPeakVacuumMinPa = 50;     // largest vacuum below this: kPa?
 
 bool ParsePlainLog(std::string_view text, const std::string& file, ProcessedLog* log,
                    LoadError* error);

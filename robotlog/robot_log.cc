@@ -46,13 +46,16 @@ bool Fail(const Stream& s, StreamId id, size_t i, int field, const std::string& 
 bool CheckShape(const Stream& s, StreamId id, LoadError* e) {
   const LabTopic& spec = GetLabTopic(id);
   if (s.rows.size() != s.t_s.size()) {
-    return Fail(s, id, 0, -1, "has " + std::to_string(s.t_s.size()) + " times but " +
-                                  std::to_string(s.rows.size()) + " rows", e);
+    return Fail(s, id, 0, -1,
+                "has " + std::to_string(s.t_s.size()) + " times but " +
+                    std::to_string(s.rows.size()) + " rows",
+                e);
   }
   for (size_t i = 0; i < s.size(); ++i) {
     if (s.rows[i].size() != spec.size()) {
-      return Fail(s, id, i, -1, "row has " + std::to_string(s.rows[i].size()) +
-                                    " fields, the topic has " + std::to_string(spec.size()),
+      return Fail(s, id, i, -1,
+                  "row has " + std::to_string(s.rows[i].size()) + " fields, the topic has " +
+                      std::to_string(spec.size()),
                   e);
     }
     if (!std::isfinite(s.t_s[i]) || (i > 0 && !(s.t_s[i] > s.t_s[i - 1]))) {
@@ -60,8 +63,8 @@ bool CheckShape(const Stream& s, StreamId id, LoadError* e) {
     }
     for (size_t k = 0; k < spec.size(); ++k) {
       if (!std::isfinite(s.rows[i][k])) {
-        return Fail(s, id, i, static_cast<int>(k), "non-finite value (" +
-                                                       spec.short_names[k] + ")", e);
+        return Fail(s, id, i, static_cast<int>(k), "non-finite value (" + spec.short_names[k] + ")",
+                    e);
       }
     }
   }
@@ -203,9 +206,9 @@ bool ValidateRobotLog(const RobotLog& log, LoadError* error) {
       const Stream& s = *streams[static_cast<size_t>(spec.id)];
       if (s.empty()) {
         if (spec.required) {
-          text::SetError(error, s.source.empty() ? "log" : s.source, 0, 0,
-                         std::string("empty stream: the ") + StreamName(spec.id) +
-                             " stream is required");
+          text::SetError(
+              error, s.source.empty() ? "log" : s.source, 0, 0,
+              std::string("empty stream: the ") + StreamName(spec.id) + " stream is required");
           return false;
         }
         continue;
@@ -247,8 +250,8 @@ bool ProcessRobotLog(const RobotLog& log, const ProcessOptions& o, ProcessedLog*
     }
 
     // 1. In-air offset, as the robot host took it before the trial.
-    const double start_s = o.trial_start_s >= 0 ? o.trial_start_s
-                                                : p.t_s.front() + o.offset_window_s;
+    const double start_s =
+        o.trial_start_s >= 0 ? o.trial_start_s : p.t_s.front() + o.offset_window_s;
     const double begin_s = start_s - o.offset_window_s;
     std::array<double, 4> offset{};
     if (InAirOffset(p, begin_s, start_s, &offset) == 0) {

@@ -14,12 +14,12 @@
 
 #include <Eigen/Geometry>
 
+#include "geometry/dimensions.h"
 #include "robotlog/align.h"
 #include "robotlog/log_types.h"
 #include "robotlog/mat_log.h"
 #include "robotlog/plain_log.h"
 #include "robotlog/topic_csv.h"
-#include "geometry/dimensions.h"
 
 namespace ssc {
 
@@ -29,7 +29,7 @@ inline constexpr double kAbsolutePressureMaxPa = 175e3;  // MPRLS full scale, 25
 inline constexpr double kAmbientMinPa = 70e3;            // in-air offset: ~3000 m altitude
 inline constexpr double kAmbientMaxPa = 110e3;
 inline constexpr double kQuaternionNormTolerance = 0.01;
-inline constexpr double kPositionMaxM = 5.0;             // UR-10 reach 1.3 m; mm would be > 5
+inline constexpr double kPositionMaxM = 5.0;  // UR-10 reach 1.3 m; mm would be > 5
 // Clock checks, for every format (stamps or times in another unit must not pass): the median
 // time between samples of a sensor stream (pressure, pose, F/T; not PWM, which is published
 // only when it changes), and the span of the pressure stream, the recording's duration.
@@ -65,7 +65,7 @@ struct ProcessOptions {
   // trial_start_s puts the window at the first offset_window_s of the pressure stream.
   double offset_window_s = 1.0;
   double trial_start_s = -1.0;
-  int moving_average = 7;       // the host's filter, samples (1 = none)
+  int moving_average = 7;                    // the host's filter, samples (1 = none)
   double tcp_offset_m = kToolCentreOffsetM;  // tool centre point along tool0 z
   Interpolation interpolation = Interpolation::kLinear;
   ClockSource clock = ClockSource::kPressure;

@@ -121,7 +121,8 @@ bool ForEachFileLine(const std::string& path, const std::function<bool(int, std:
     size_t from = 0;
     while (from < got) {
       const void* nl = std::memchr(chunk.data() + from, '\n', got - from);
-      const size_t end = nl ? static_cast<size_t>(static_cast<const char*>(nl) - chunk.data()) : got;
+      const size_t end =
+          nl ? static_cast<size_t>(static_cast<const char*>(nl) - chunk.data()) : got;
       if (line.size() + (end - from) > kMaxLineBytes) {
         SetError(error, path, line_no + 1, 0,
                  "line longer than " + std::to_string(kMaxLineBytes / 1024) +

@@ -73,8 +73,8 @@ bool ParseRow(const std::vector<std::string_view>& cells, const std::string& fil
   if (!table->t_ns.empty() && t <= table->t_ns.back()) {
     text::SetError(e, file, line_no, 1,
                    std::string(t == table->t_ns.back() ? "duplicate" : "non-monotonic") +
-                       " time stamp " + std::to_string(t) + " ns (previous row: " +
-                       std::to_string(table->t_ns.back()) + " ns, line " +
+                       " time stamp " + std::to_string(t) +
+                       " ns (previous row: " + std::to_string(table->t_ns.back()) + " ns, line " +
                        std::to_string(table->lines.back()) + ")");
     return false;
   }
@@ -190,8 +190,7 @@ bool WriteTopicFile(const fs::path& path, const LabTopic& topic, LoggerVersion v
     const std::vector<double>& r = s.rows[i];
     if (r.size() != topic.size()) {
       *error = path.string() + ": row " + std::to_string(i + 1) + " has " +
-               std::to_string(r.size()) + " fields, the topic has " +
-               std::to_string(topic.size());
+               std::to_string(r.size()) + " fields, the topic has " + std::to_string(topic.size());
       return false;
     }
     f << t0_ns + std::llround(s.t_s[i] * 1e9);
@@ -243,8 +242,8 @@ const std::vector<LabTopic>& LabTopics() {
        "/netft_data",
        "netftdata",
        false,
-       {"wrench.force.x", "wrench.force.y", "wrench.force.z", "wrench.torque.x",
-        "wrench.torque.y", "wrench.torque.z"},
+       {"wrench.force.x", "wrench.force.y", "wrench.force.z", "wrench.torque.x", "wrench.torque.y",
+        "wrench.torque.z"},
        {"fx", "fy", "fz", "tx", "ty", "tz"}},
       {StreamId::kPwm, "/pwm", "pwm", false, {"data"}, {"pwm"}},
   };
@@ -253,8 +252,8 @@ const std::vector<LabTopic>& LabTopics() {
 
 const LabTopic& GetLabTopic(StreamId id) { return LabTopics()[static_cast<size_t>(id)]; }
 
-bool ParseTopicHeader(const std::vector<std::string_view>& names, const std::string& file,
-                      int line, TopicHeader* h, LoadError* e) {
+bool ParseTopicHeader(const std::vector<std::string_view>& names, const std::string& file, int line,
+                      TopicHeader* h, LoadError* e) {
   *h = TopicHeader();
   const std::string_view first = text::Trim(names[0]);
   if (first != kTimeColumn) {
@@ -337,8 +336,8 @@ bool ParseTopicHeader(const std::vector<std::string_view>& names, const std::str
     if (column_of_field[static_cast<size_t>(index)] >= 0) {
       text::SetError(e, file, line, text::ToInt(c + 1),
                      "field '" + t.fields[static_cast<size_t>(index)] + "' appears twice (also " +
-                         "column " + std::to_string(column_of_field[static_cast<size_t>(index)] +
-                                                    1) + ")");
+                         "column " +
+                         std::to_string(column_of_field[static_cast<size_t>(index)] + 1) + ")");
       return false;
     }
     column_of_field[static_cast<size_t>(index)] = static_cast<int>(c);
@@ -357,9 +356,9 @@ bool ParseTopicHeader(const std::vector<std::string_view>& names, const std::str
       h->has_ch = false;  // the older message had no ch field
       continue;
     }
-    text::SetError(e, file, line, text::ToInt(names.size() + 1),
-                   "header is missing field '" + t.fields[f] + "' (expected " +
-                       HeaderExample(t) + ")");
+    text::SetError(
+        e, file, line, text::ToInt(names.size() + 1),
+        "header is missing field '" + t.fields[f] + "' (expected " + HeaderExample(t) + ")");
     return false;
   }
   return true;
@@ -387,7 +386,8 @@ bool ReadTopicCsv(const std::string& path, TopicTable* table, LoadError* error) 
     TopicParser parser(path, table, error);
     bool ok = true;
     if (!text::ForEachFileLine(
-            path, [&](int line_no, std::string_view line) { return ok = parser.Line(line_no, line); },
+            path,
+            [&](int line_no, std::string_view line) { return ok = parser.Line(line_no, line); },
             error)) {
       return false;
     }
@@ -475,8 +475,8 @@ bool LoadTopicCsvRecording(const std::string& path, RobotLog* log, LoadError* er
     }
     for (size_t i = 0; i < topics.size(); ++i) {
       if (!topics[i].required || !sources[i].empty()) continue;
-      const std::string expected = stamp.empty() ? topics[i].topic
-                                                 : TopicFileName(stamp, topics[i].topic);
+      const std::string expected =
+          stamp.empty() ? topics[i].topic : TopicFileName(stamp, topics[i].topic);
       text::SetError(error, path, 0, 0,
                      "no file of topic " + topics[i].topic + " (a required stream; expected " +
                          expected + " beside the others, with its header naming " +

@@ -8,8 +8,8 @@
 //
 //   topic             our stream  fields (our order)                                  units
 //   /SensorPacket     pressure    ch, data[0..3] = P1..P4 (older logger: no ch)        ABSOLUTE Pa
-//   /endEffectorPose  pose        pose.orientation.w/x/y/z, pose.position.x/y/z        tool0 in base_link, m
-//   /netft_data       F/T         wrench.force.x/y/z, wrench.torque.x/y/z              N, N m (raw)
+//   /endEffectorPose  pose        pose.orientation.w/x/y/z, pose.position.x/y/z        tool0 in
+//   base_link, m /netft_data       F/T         wrench.force.x/y/z, wrench.torque.x/y/z N, N m (raw)
 //   /pwm              PWM         data                                                 % (Int8)
 //
 // A stream is recognised by the topic and field names in the file's header, never by the file
@@ -57,8 +57,8 @@ struct TopicHeader {
 // `names` includes ROStimestamp first. `line` names the header's line (or 0). Also accepts the
 // names pandas gives repeated columns ("<topic>.data.1") when a .mat was saved from an older
 // logger's files.
-bool ParseTopicHeader(const std::vector<std::string_view>& names, const std::string& file,
-                      int line, TopicHeader* header, LoadError* error);
+bool ParseTopicHeader(const std::vector<std::string_view>& names, const std::string& file, int line,
+                      TopicHeader* header, LoadError* error);
 
 // One parsed topic file.
 struct TopicTable {

@@ -1,7 +1,6 @@
 #include "runtime/arm_servo.h"
 
 #include <Eigen/Dense>
-
 #include <algorithm>
 
 namespace ssc {
@@ -39,7 +38,7 @@ void ArmServo::Command(const mjModel* m, mjData* d, const Vec3& tool_site_world)
   for (int k = 0; k < 3; ++k) e[k] = tool_site_world[k] - p[k];
   mjtNum q_now[4], local[3], world[3];
   mju_mat2Quat(q_now, d->site_xmat + 9 * site_);
-  mju_subQuat(local, held_quat_, q_now);          // q_now * quat(local) = held
+  mju_subQuat(local, held_quat_, q_now);  // q_now * quat(local) = held
   mju_mulMatVec3(world, d->site_xmat + 9 * site_, local);
   for (int k = 0; k < 3; ++k) e[3 + k] = world[k];
 

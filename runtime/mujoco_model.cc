@@ -2,8 +2,6 @@
 
 #include <dlfcn.h>
 
-#include "plugin/chamber_pressure_config.h"
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -12,6 +10,8 @@
 #include <fstream>
 #include <mutex>
 #include <sstream>
+
+#include "plugin/chamber_pressure_config.h"
 
 namespace ssc {
 namespace {
@@ -94,8 +94,7 @@ std::string CheckMuJoCoVersion() {
     std::ostringstream os;
     os << "MuJoCo library version " << mj_versionString() << " (" << mj_version()
        << ") does not match the headers this program was built with (" << mjVERSION_HEADER
-       << "); the project pins mujoco==" << SSC_MUJOCO_PINNED
-       << ". Rebuild with tools/setup.sh.";
+       << "); the project pins mujoco==" << SSC_MUJOCO_PINNED << ". Rebuild with tools/setup.sh.";
     return os.str();
   }
   return "";
@@ -134,8 +133,7 @@ std::string ResolveScenePath(const std::string& scene) {
   return scene;
 }
 
-ModelPtr LoadModelFromTexts(const ModelTexts& texts, const std::string& label,
-                            std::string* error) {
+ModelPtr LoadModelFromTexts(const ModelTexts& texts, const std::string& label, std::string* error) {
   mjVFS vfs;
   mj_defaultVFS(&vfs);
   for (const auto& [name, text] : texts.files) {  // a repeated name keeps its first text
@@ -193,12 +191,15 @@ ModelPtr LoadModel(const std::string& path, std::string* error) {
 std::string CheckTimestep(double timestep_s, std::string* warning) {
   char buf[256];
   if (!std::isfinite(timestep_s) || timestep_s <= 0) {
-    std::snprintf(buf, sizeof(buf), "time step %g s must be > 0 (<option timestep=...>; tested "
-                  "stable up to %g ms, docs/stability.md)", timestep_s, kLargestTestedTimestepS * 1e3);
+    std::snprintf(buf, sizeof(buf),
+                  "time step %g s must be > 0 (<option timestep=...>; tested "
+                  "stable up to %g ms, docs/stability.md)",
+                  timestep_s, kLargestTestedTimestepS * 1e3);
     return buf;
   }
   if (warning && timestep_s > kLargestTestedTimestepS * (1 + 1e-9)) {
-    std::snprintf(buf, sizeof(buf), "time step %g ms is above %g ms, the largest the stability "
+    std::snprintf(buf, sizeof(buf),
+                  "time step %g ms is above %g ms, the largest the stability "
                   "study found unchanged (docs/stability.md); results may be wrong",
                   timestep_s * 1e3, kLargestTestedTimestepS * 1e3);
     *warning = buf;

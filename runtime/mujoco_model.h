@@ -2,12 +2,12 @@
 #ifndef SSC_RUNTIME_MUJOCO_MODEL_H_
 #define SSC_RUNTIME_MUJOCO_MODEL_H_
 
+#include <mujoco/mujoco.h>
+
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <mujoco/mujoco.h>
 
 #include "plugin/mujoco_messages.h"
 
@@ -45,9 +45,9 @@ DataPtr MakeData(const mjModel* m, std::string* error);
 // ".xml").
 std::string ResolveScenePath(const std::string& scene);
 
-// The folder holding models/ and scenes/: SetResourceDir, else $SSC_RESOURCE_DIR (or $SSC_SOURCE_DIR) when set, else
-// <prefix>/share/ssc beside an installed binary, or the Python package's folder, else the source
-// tree this was built from (SSC_SOURCE_DIR at compile time).
+// The folder holding models/ and scenes/: SetResourceDir, else $SSC_RESOURCE_DIR (or
+// $SSC_SOURCE_DIR) when set, else <prefix>/share/ssc beside an installed binary, or the Python
+// package's folder, else the source tree this was built from (SSC_SOURCE_DIR at compile time).
 std::string ResourceDir();
 // Overrides all of the above (a program that knows where its models are; empty: look them up).
 void SetResourceDir(const std::string& dir);

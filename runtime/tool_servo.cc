@@ -1,9 +1,9 @@
 #include "runtime/tool_servo.h"
 
-#include "runtime/arm_servo.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "runtime/arm_servo.h"
 
 namespace ssc {
 

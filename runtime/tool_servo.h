@@ -7,11 +7,11 @@
 #ifndef SSC_RUNTIME_TOOL_SERVO_H_
 #define SSC_RUNTIME_TOOL_SERVO_H_
 
+#include <mujoco/mujoco.h>
+
 #include <array>
 #include <memory>
 #include <string>
-
-#include <mujoco/mujoco.h>
 
 namespace ssc {
 

@@ -30,18 +30,22 @@ TrialTarget TrialTarget::Disk(double centre_x_m, double centre_y_m, double radiu
   t.approach = {centre_x_m, centre_y_m};
   t.start = {centre_x_m + start_offset_m, centre_y_m};
   t.goal = TrialGoal::AroundDisk({centre_x_m, centre_y_m}, radius_m);
-  t.edge = std::make_shared<const ContourPath>(
-      ContourPath::Circle({centre_x_m, centre_y_m}, radius_m));
+  t.edge =
+      std::make_shared<const ContourPath>(ContourPath::Circle({centre_x_m, centre_y_m}, radius_m));
   t.disk_radius_m = radius_m;
   return t;
 }
 
 const char* PhaseName(TrialPhase phase) {
   switch (phase) {
-    case TrialPhase::kApproach: return "approach";
-    case TrialPhase::kMoveToStart: return "move";
-    case TrialPhase::kFollow: return "follow";
-    case TrialPhase::kDone: return "done";
+    case TrialPhase::kApproach:
+      return "approach";
+    case TrialPhase::kMoveToStart:
+      return "move";
+    case TrialPhase::kFollow:
+      return "follow";
+    case TrialPhase::kDone:
+      return "done";
   }
   return "?";
 }
@@ -243,7 +247,8 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
     case TrialPhase::kApproach: {
       // Tare the F/T over the first 50 ms in air, then descend until the compression is read.
       if (t < 0.05) {
-        ft_tare_n_ = (ft_tare_n_ * tare_samples_ + d_->sensordata[ft_adr_ + 2]) / (tare_samples_ + 1);
+        ft_tare_n_ =
+            (ft_tare_n_ * tare_samples_ + d_->sensordata[ft_adr_ + 2]) / (tare_samples_ + 1);
         ++tare_samples_;
         break;
       }
@@ -332,13 +337,14 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
           step_pending_ = true;
           step_apply_s_ = t + config_.effects.loop.pose_delay_s;
         } else {
-          servo_->SetTarget({tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], hold_z_});
+          servo_->SetTarget(
+              {tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], hold_z_});
         }
       }
       Log(true);
-      const SampleCheck check = ClassifySample(config_.thresholds, p, FtNormalForce(),
-                                               goal_.status(), t - follow_start_s_,
-                                               config_.timeout_s);
+      const SampleCheck check =
+          ClassifySample(config_.thresholds, p, FtNormalForce(), goal_.status(),
+                         t - follow_start_s_, config_.timeout_s);
       if (check.outcome == Outcome::kSuccess || check.outcome == Outcome::kLostEdge) {
         Finish(check.outcome, goal_.Detail());
       } else if (check.outcome != Outcome::kRunning) {

@@ -7,6 +7,8 @@
 #ifndef SSC_RUNTIME_TRIAL_H_
 #define SSC_RUNTIME_TRIAL_H_
 
+#include <mujoco/mujoco.h>
+
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -14,16 +16,14 @@
 #include <string>
 #include <vector>
 
-#include <mujoco/mujoco.h>
-
 #include "controller/pure/contour_law.h"
-#include "controller/pure/trial_goal.h"
 #include "controller/pure/robot_effects.h"
+#include "controller/pure/trial_goal.h"
 #include "controller/pure/trial_metrics.h"
 #include "controller/pure/trial_outcome.h"
+#include "plugin/chamber_pressure_sensor.h"
 #include "runtime/control_dispatch.h"
 #include "runtime/tool_servo.h"
-#include "plugin/chamber_pressure_sensor.h"
 
 namespace ssc {
 
@@ -34,8 +34,8 @@ const char* PhaseName(TrialPhase phase);
 // true contour for the metrics. The default is the disk benchmark (35 mm disk at W, start 32 mm
 // east of its centre, one counter-clockwise loop).
 struct TrialTarget {
-  Point2 approach{kWorkspaceX, kWorkspaceY};         // the cup descends here (world x/y, m)
-  Point2 start{kWorkspaceX + 0.032, kWorkspaceY};    // cup centre when following starts
+  Point2 approach{kWorkspaceX, kWorkspaceY};       // the cup descends here (world x/y, m)
+  Point2 start{kWorkspaceX + 0.032, kWorkspaceY};  // cup centre when following starts
   TrialGoal goal = TrialGoal::AroundDisk({kWorkspaceX, kWorkspaceY}, 0.035);
   double disk_radius_m = 0.035;    // > 0: r_mean / dr / sigma_r about the goal's centre
   double surface_top_z_m = 0.010;  // the approach never takes the lip plane deeper than
@@ -52,19 +52,19 @@ struct TrialTarget {
 };
 
 struct TrialConfig {
-  ContourLawParams law;            // P_ref, beta, step, thresholds of the law
-  TrialThresholds thresholds;      // success sweep, failure I/II, safety force
-  ServoParams servo;               // look-ahead smoothing of the arm
+  ContourLawParams law;        // P_ref, beta, step, thresholds of the law
+  TrialThresholds thresholds;  // success sweep, failure I/II, safety force
+  ServoParams servo;           // look-ahead smoothing of the arm
   // One control iteration. 0.15 s with the 0.15 s servo smoothing below gives the published
   // speeds (about 4 step lengths per second) AND keeps dL = 7.5 mm stable; see docs/trials.md.
   double control_period_s = 0.15;
-  double approach_force_n = 1.5;   // tared F/T compression that ends the approach, (0, 50]
+  double approach_force_n = 1.5;  // tared F/T compression that ends the approach, (0, 50]
   double approach_speed_m_s = 0.005;
-  double move_speed_m_s = 0.02;    // to the start point
-  TrialTarget target;              // where to land, start and finish (default: the disk)
-  double timeout_s = 120;          // follow phase limit, simulated seconds
-  std::uint64_t seed = 1;          // sensor noise seed for this trial
-  double log_period_s = 0.02;      // path sampling for metrics and the log
+  double move_speed_m_s = 0.02;  // to the start point
+  TrialTarget target;            // where to land, start and finish (default: the disk)
+  double timeout_s = 120;        // follow phase limit, simulated seconds
+  std::uint64_t seed = 1;        // sensor noise seed for this trial
+  double log_period_s = 0.02;    // path sampling for metrics and the log
   // The real loop, lip and sensors (controller/pure/robot_effects.h); all zero = ideal.
   RobotEffectsParams effects;
 
@@ -86,16 +86,16 @@ struct TrialLogRow {
 
 struct TrialResult {
   Outcome outcome = Outcome::kRunning;  // OutcomeName() gives its text form
-  std::string detail;               // why (e.g. the warning or the failing value)
+  std::string detail;                   // why (e.g. the warning or the failing value)
   DiskTrialMetrics metrics;
-  double follow_time_s = 0;         // duration of the follow phase, s
-  double sim_time_s = 0;            // total simulated time, s
+  double follow_time_s = 0;  // duration of the follow phase, s
+  double sim_time_s = 0;     // total simulated time, s
   double wall_time_s = 0;
-  double hold_height_m = 0;         // tool site height held after the approach
-  double swept_deg = 0;             // swept-angle goals: signed swept angle at the end, deg
-  double end_arc_mm = 0;            // with an edge: arc position reached (where it was lost), mm
+  double hold_height_m = 0;  // tool site height held after the approach
+  double swept_deg = 0;      // swept-angle goals: signed swept angle at the end, deg
+  double end_arc_mm = 0;     // with an edge: arc position reached (where it was lost), mm
   int iterations = 0;
-  std::vector<TrialLogRow> log;     // filled when requested
+  std::vector<TrialLogRow> log;  // filled when requested
 };
 
 // The controller behind mjcb_control for one mjData.
@@ -157,7 +157,7 @@ class ContourTrial : public ControlCallback {
   std::unique_ptr<ToolServo> servo_;
   int pressure_instance_ = -1, pressure_adr_ = -1, ft_adr_ = -1, tool_site_ = -1;
   TrialPhase phase_ = TrialPhase::kApproach;
-  bool active_ = false;  // the servo is bound; the callback may act
+  bool active_ = false;         // the servo is bound; the callback may act
   bool transfer_done_ = false;  // over the landing point
   double ft_tare_n_ = 0;
   int tare_samples_ = 0;
@@ -181,7 +181,7 @@ class ContourTrial : public ControlCallback {
   TrialResult result_;
   std::unique_ptr<ScopedControl> registration_;
   bool external_policy_ = false, awaiting_step_ = false;
-  Vec3 iteration_tool_{};              // measured tool position at the waiting iteration
+  Vec3 iteration_tool_{};  // measured tool position at the waiting iteration
 };
 
 // Loads nothing: runs one trial on an existing model with its own mjData.

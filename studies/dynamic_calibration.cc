@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-
 #include <nlohmann/json.hpp>
 
 #include "calibration/nelder_mead.h"
@@ -16,9 +15,9 @@ std::vector<WanderTarget> PublishedWanderTargets() {
   return {{1.5, 1.36, 0.11}, {2.5, -1, 0.21}, {3.5, 1.89, 0.31}};
 }
 
-bool FitWander(const std::string& scene, const std::vector<WanderTarget>& targets,
-               double step_mm, int seeds, int max_evaluations, double noise0, double lag0,
-               WanderFit* fit, std::string* error) {
+bool FitWander(const std::string& scene, const std::vector<WanderTarget>& targets, double step_mm,
+               int seeds, int max_evaluations, double noise0, double lag0, WanderFit* fit,
+               std::string* error) {
   const auto variants = ToolModelVariants::Read(scene, error);
   if (!variants) return false;
   bool failed = false;
@@ -77,8 +76,8 @@ std::string CalibrationParamsJson(const PneumaticFit& fit, const WanderFit* wand
     j["targets"][t.name] = {{"published", t.target}, {"model", t.model}};
   }
   if (wander) {
-    j["wander"] = {{"noise_pa", wander->noise_pa}, {"lag_ms", wander->lag_ms},
-                   {"cost", wander->cost}};
+    j["wander"] = {
+        {"noise_pa", wander->noise_pa}, {"lag_ms", wander->lag_ms}, {"cost", wander->cost}};
   }
   return j.dump(2) + "\n";
 }

@@ -31,9 +31,8 @@ struct WanderFit {
 // Fits noise_pa and lag_ms from (noise0, lag0). `scene` is a disk scene with the tool; it is
 // read once, and each evaluation compiles its tool variant in memory (studies/tool_variants.h).
 // False + *error on read or load failure.
-bool FitWander(const std::string& scene, const std::vector<WanderTarget>& targets,
-               double step_mm, int seeds,
-               int max_evaluations, double noise0, double lag0, WanderFit* fit,
+bool FitWander(const std::string& scene, const std::vector<WanderTarget>& targets, double step_mm,
+               int seeds, int max_evaluations, double noise0, double lag0, WanderFit* fit,
                std::string* error);
 
 // params.json of ssc calibrate: the static fit (cost, parameters, targets published vs model)

@@ -102,13 +102,13 @@ void WriteRow(std::ofstream& f, double offset_mm, double angle_deg, const ProbeR
   std::snprintf(line, sizeof(line),
                 "%.4f,%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,"
                 "%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%d\n",
-                offset_mm, angle_deg, r.x_m * 1e3, r.y_m * 1e3, r.filtered_pa[0],
-                r.filtered_pa[1], r.filtered_pa[2], r.filtered_pa[3], r.pbar_pa, r.dpx_pa,
-                r.dpy_pa, std::hypot(r.dpx_pa, r.dpy_pa), r.g_world_rad * deg,
-                r.travel_world_rad * deg, r.static_pa[0], r.static_pa[1], r.static_pa[2],
-                r.static_pa[3], r.static_pbar_pa, r.sealed_area_mm2[0], r.sealed_area_mm2[1],
-                r.sealed_area_mm2[2], r.sealed_area_mm2[3], r.leak_area_mm2[0],
-                r.leak_area_mm2[1], r.leak_area_mm2[2], r.leak_area_mm2[3], r.lip_contacts);
+                offset_mm, angle_deg, r.x_m * 1e3, r.y_m * 1e3, r.filtered_pa[0], r.filtered_pa[1],
+                r.filtered_pa[2], r.filtered_pa[3], r.pbar_pa, r.dpx_pa, r.dpy_pa,
+                std::hypot(r.dpx_pa, r.dpy_pa), r.g_world_rad * deg, r.travel_world_rad * deg,
+                r.static_pa[0], r.static_pa[1], r.static_pa[2], r.static_pa[3], r.static_pbar_pa,
+                r.sealed_area_mm2[0], r.sealed_area_mm2[1], r.sealed_area_mm2[2],
+                r.sealed_area_mm2[3], r.leak_area_mm2[0], r.leak_area_mm2[1], r.leak_area_mm2[2],
+                r.leak_area_mm2[3], r.lip_contacts);
   f << line;
 }
 
@@ -125,7 +125,8 @@ bool RunProbeStudy(EdgeProbe3d* probe, const ProbeStudySpec& spec,
   std::ofstream edge(result->edge_csv);
   WriteHeader(edge);
   for (double off = spec.from_mm; off <= spec.to_mm + 1e-9; off += spec.step_mm) {
-    const ProbeReading r = probe->Read(-off * 1e-3, 0.0, 0.0, surface_z, compression, spec.settle_s);
+    const ProbeReading r =
+        probe->Read(-off * 1e-3, 0.0, 0.0, surface_z, compression, spec.settle_s);
     WriteRow(edge, off, 0.0, r);
     if (edge_row) edge_row(off, r);
   }
@@ -136,8 +137,8 @@ bool RunProbeStudy(EdgeProbe3d* probe, const ProbeStudySpec& spec,
   for (double a = 0; a < 360 - 1e-9; a += spec.disk_step_deg) {
     const double th = a * M_PI / 180;
     const double r_m = radius - spec.disk_inset_mm * 1e-3;
-    const ProbeReading r = probe->Read(cx + r_m * std::cos(th), r_m * std::sin(th), 0.0,
-                                       surface_z, compression, spec.settle_s);
+    const ProbeReading r = probe->Read(cx + r_m * std::cos(th), r_m * std::sin(th), 0.0, surface_z,
+                                       compression, spec.settle_s);
     WriteRow(disk, spec.disk_inset_mm, a, r);
     // Counter-clockwise tangent at angle th is th + 90 deg.
     const double err = std::remainder(r.travel_world_rad - (th + M_PI / 2), 2 * M_PI) * 180 / M_PI;

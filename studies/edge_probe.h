@@ -9,9 +9,9 @@
 #include <memory>
 #include <string>
 
-#include "runtime/mujoco_model.h"
-#include "plugin/chamber_pressure_sensor.h"
 #include "geometry/dimensions.h"
+#include "plugin/chamber_pressure_sensor.h"
+#include "runtime/mujoco_model.h"
 
 namespace ssc {
 

@@ -19,13 +19,21 @@ std::vector<FidelitySetting> FidelitySettings() {
     c[key] = value;
     return c;
   };
-  std::vector<FidelitySetting> s = {
-      {"reference: 16 rays, 32 lip segments, 0.25 ms, RK4", {with("rays_per_chamber", "16"), 32},
-       0.00025, mjINT_RK4, true, false},
-      {"default: 4 rays, 160 Hz, 2 ms, implicitfast", {quiet, 0}, 0.002, mjINT_IMPLICITFAST,
-       false, true}};
+  std::vector<FidelitySetting> s = {{"reference: 16 rays, 32 lip segments, 0.25 ms, RK4",
+                                     {with("rays_per_chamber", "16"), 32},
+                                     0.00025,
+                                     mjINT_RK4,
+                                     true,
+                                     false},
+                                    {"default: 4 rays, 160 Hz, 2 ms, implicitfast",
+                                     {quiet, 0},
+                                     0.002,
+                                     mjINT_IMPLICITFAST,
+                                     false,
+                                     true}};
   for (int rays : {1, 2, 8, 16}) {
-    s.push_back({std::to_string(rays) + " rays", {with("rays_per_chamber", std::to_string(rays)), 0}});
+    s.push_back(
+        {std::to_string(rays) + " rays", {with("rays_per_chamber", std::to_string(rays)), 0}});
   }
   for (const char* hz : {"40", "80", "320"}) {
     s.push_back({std::string(hz) + " Hz sensor", {with("sample_rate_hz", hz), 0}});
@@ -86,7 +94,8 @@ bool RunFidelityTable(const TrialConfig& trial_config, const TrialResult& trial,
     ReplayComparison r;
     const auto t0 = std::chrono::steady_clock::now();
     if (!ReplayLog(m.get(), path, kToolCentreOffsetM, &r, error)) return false;
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (s.reference) reference = r.sim_pa;
     const std::array<double, 2> e = PressureRmsError(r.sim_pa, reference);
     add({s.name, s.timestep_s * 1e3, wall / (path.t_s.back() - path.t_s.front()), e[0], e[1],

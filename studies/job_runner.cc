@@ -147,8 +147,8 @@ std::string ReceiveBytes(const MPI_Status& probed) {
   int n = 0;
   MPI_Get_count(&probed, MPI_BYTE, &n);
   std::string bytes(static_cast<std::size_t>(n), '\0');
-  MPI_Recv(n ? &bytes[0] : nullptr, n, MPI_BYTE, probed.MPI_SOURCE, probed.MPI_TAG,
-           MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  MPI_Recv(n ? &bytes[0] : nullptr, n, MPI_BYTE, probed.MPI_SOURCE, probed.MPI_TAG, MPI_COMM_WORLD,
+           MPI_STATUS_IGNORE);
   return bytes;
 }
 
@@ -237,8 +237,7 @@ std::vector<std::size_t> HandoutOrder(const JobSet& jobs) {
   return order;
 }
 
-JobRunStats RunJobs(const JobSet& jobs, const JobRunnerOptions& options,
-                    const DeliverFn& deliver) {
+JobRunStats RunJobs(const JobSet& jobs, const JobRunnerOptions& options, const DeliverFn& deliver) {
   JobRunStats stats;
   stats.total = jobs.count;
   stats.threads = std::max(1, options.threads);
@@ -291,7 +290,10 @@ JobRunStats RunJobs(const JobSet& jobs, const JobRunnerOptions& options,
     int ends_sent = 0, remote_running = 0;
     auto answer_request = [&](int to) {
       const std::size_t next = take();
-      if (next == kNone) ++ends_sent; else ++remote_running;
+      if (next == kNone)
+        ++ends_sent;
+      else
+        ++remote_running;
       SendJob(to, next);
     };
 #endif
@@ -379,9 +381,8 @@ JobRunStats RunJobs(const JobSet& jobs, const JobRunnerOptions& options,
 std::vector<std::string> RunJobsCollect(const JobSet& jobs, const JobRunnerOptions& options,
                                         JobRunStats* stats) {
   std::vector<std::string> results(jobs.count);
-  const JobRunStats s = RunJobs(jobs, options, [&](std::size_t i, const std::string& r) {
-    results[i] = r;
-  });
+  const JobRunStats s =
+      RunJobs(jobs, options, [&](std::size_t i, const std::string& r) { results[i] = r; });
   if (stats) *stats = s;
   return results;
 }
@@ -397,8 +398,8 @@ bool JobRunnerHasMpi() {
 void InitJobRunnerMpi(int* argc, char*** argv) {
 #ifdef SSC_HAVE_MPI
   // Open MPI's launcher sets these; a plain start stays a single process without MPI.
-  const bool launched = std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") ||
-                        std::getenv("PMIX_RANK");
+  const bool launched =
+      std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || std::getenv("PMIX_RANK");
   if (!launched) return;
   int provided = 0;
   MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);

@@ -56,8 +56,7 @@ using DeliverFn = std::function<void(std::size_t index, const std::string& resul
 // Runs every job that `skip` does not exclude. Collective under MPI: every rank calls it with
 // the same JobSet.count and options. `deliver` runs on rank 0 (and, with results_on_all_ranks,
 // on every rank after all jobs finished, in the same order).
-JobRunStats RunJobs(const JobSet& jobs, const JobRunnerOptions& options,
-                    const DeliverFn& deliver);
+JobRunStats RunJobs(const JobSet& jobs, const JobRunnerOptions& options, const DeliverFn& deliver);
 
 // The same, collecting the results by job index (empty for skipped jobs): on rank 0, and on
 // every rank with options.results_on_all_ranks (e.g. an objective summed on every rank).

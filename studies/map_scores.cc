@@ -10,9 +10,12 @@ namespace ssc {
 
 const char* MapClassName(MapClass c) {
   switch (c) {
-    case MapClass::kThreeOfThree: return "3";
-    case MapClass::kTwoOfThree: return "2";
-    case MapClass::kAtMostOne: return "<=1";
+    case MapClass::kThreeOfThree:
+      return "3";
+    case MapClass::kTwoOfThree:
+      return "2";
+    case MapClass::kAtMostOne:
+      return "<=1";
   }
   return "?";
 }
@@ -40,9 +43,12 @@ double ClassProbability(MapClass c, double p) {
   p = std::clamp(p, 0.0, 1.0);
   const double three = p * p * p, two = 3 * p * p * (1 - p);
   switch (c) {
-    case MapClass::kThreeOfThree: return three;
-    case MapClass::kTwoOfThree: return two;
-    case MapClass::kAtMostOne: return std::max(0.0, 1.0 - three - two);
+    case MapClass::kThreeOfThree:
+      return three;
+    case MapClass::kTwoOfThree:
+      return two;
+    case MapClass::kAtMostOne:
+      return std::max(0.0, 1.0 - three - two);
   }
   return 0;
 }
@@ -91,8 +97,9 @@ bool ScoreMap(const std::vector<MapCell>& cells, const std::vector<CellTrials>& 
     c.p_success = static_cast<double>(c.successes) / c.trials;
     c.p_interval = WilsonInterval(c.successes, c.trials);
     c.expected_agreement = ClassProbability(c.cell.published, c.p_success);
-    c.opposite = (c.cell.published == MapClass::kThreeOfThree && c.p_success <= 1.0 / 3.0 + 1e-12) ||
-                 (c.cell.published == MapClass::kAtMostOne && c.p_success >= 0.9 - 1e-12);
+    c.opposite =
+        (c.cell.published == MapClass::kThreeOfThree && c.p_success <= 1.0 / 3.0 + 1e-12) ||
+        (c.cell.published == MapClass::kAtMostOne && c.p_success >= 0.9 - 1e-12);
     const std::array<std::pair<int, const char*>, 5> modes = {
         {{c.failure_off_edge, OutcomeName(Outcome::kFailureOffEdge)},
          {c.failure_grasp, OutcomeName(Outcome::kFailureGrasp)},

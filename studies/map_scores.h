@@ -41,7 +41,7 @@ struct CellTrials {
 
 struct CellScore {
   MapCell cell;
-  int successes_of_3 = 0;        // among repeats 0..2
+  int successes_of_3 = 0;  // among repeats 0..2
   MapClass twin_class = MapClass::kAtMostOne;
   bool class_match = false;
   int successes = 0, trials = 0;  // over all N repeats
@@ -58,8 +58,8 @@ struct CellScore {
 struct MapScore {
   std::vector<CellScore> cells;
   int cells_scored = 0;
-  double class_match = 0;          // fraction of cells
-  double expected_agreement = 0;   // mean over cells
+  double class_match = 0;         // fraction of cells
+  double expected_agreement = 0;  // mean over cells
   int opposite = 0;
   // The fit's map term: mean over cells of -log(max(P(class), floor)), floor 0.01.
   double log_loss = 0;

@@ -1,13 +1,13 @@
 #include "studies/object_step_cost.h"
 
+#include <mujoco/mujoco.h>
+
 #include <algorithm>
 #include <chrono>
 #include <limits>
 
-#include <mujoco/mujoco.h>
-
-#include "runtime/mujoco_model.h"
 #include "plugin/chamber_pressure_sensor.h"
+#include "runtime/mujoco_model.h"
 
 namespace ssc {
 

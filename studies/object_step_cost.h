@@ -13,19 +13,19 @@ namespace ssc {
 
 struct StepCostOptions {
   int warmup_steps = 200;
-  int steps = 2000;             // timed steps (4 s at the 2 ms step)
-  int repeats = 3;              // runs from the start; the fastest run's mean is reported, as
-                                // other processes on a shared machine only ever add time
-  double speed_m_s = 0.010;     // cup speed along the edge
-  double press_m = 0.001;       // lip plane below the top face (about 1.5 N on a flat face)
+  int steps = 2000;          // timed steps (4 s at the 2 ms step)
+  int repeats = 3;           // runs from the start; the fastest run's mean is reported, as
+                             // other processes on a shared machine only ever add time
+  double speed_m_s = 0.010;  // cup speed along the edge
+  double press_m = 0.001;    // lip plane below the top face (about 1.5 N on a flat face)
 };
 
 struct StepCost {
   std::string object;
-  int object_geoms = 0;       // geoms in group 2
-  double step_us = 0;         // mean wall time per mj_step (fastest run)
-  double contacts = 0;        // mean contacts per step
-  double sim_s = 0;           // simulated time timed
+  int object_geoms = 0;  // geoms in group 2
+  double step_us = 0;    // mean wall time per mj_step (fastest run)
+  double contacts = 0;   // mean contacts per step
+  double sim_s = 0;      // simulated time timed
 };
 
 // Loads `probe_scene` (written for `spec`) and measures; nullopt with *error on failure.

@@ -17,13 +17,13 @@ namespace ssc {
 
 struct ObjectStudySpec {
   std::vector<ObjectSpec> objects;
-  int seeds = 1;               // trials per object: seeds seed, seed + 1, ...
+  int seeds = 1;  // trials per object: seeds seed, seed + 1, ...
   std::uint64_t seed = 1;
-  bool arm_scenes = false;     // the UR-10 scenes instead of the light gantry ones
-  ContourLawParams law;        // the published primitive-geometry controller: dL 0.5 mm
+  bool arm_scenes = false;  // the UR-10 scenes instead of the light gantry ones
+  ContourLawParams law;     // the published primitive-geometry controller: dL 0.5 mm
   int threads = 1;
-  std::string out_dir;         // scenes in OUT/scenes, paths in OUT/paths
-  bool write_only = false;     // only the scenes and contours
+  std::string out_dir;      // scenes in OUT/scenes, paths in OUT/paths
+  bool write_only = false;  // only the scenes and contours
 };
 
 struct ObjectStudySummary {
@@ -40,8 +40,7 @@ bool RunObjectStudy(const ObjectStudySpec& spec,
 
 // Objects by comma-separated names, or all of them for "all". False + *error naming the
 // unknown or repeated name.
-bool ObjectsByNames(const std::string& names, std::vector<ObjectSpec>* objects,
-                    std::string* error);
+bool ObjectsByNames(const std::string& names, std::vector<ObjectSpec>* objects, std::string* error);
 
 }  // namespace ssc
 

@@ -67,10 +67,10 @@ std::string ObjectTableRow(const ObjectTrialRow& r) {
   }
   std::snprintf(buf, sizeof(buf),
                 "%s,%s,%g,%llu,%s,%.3f,%.3f,%.2f,%.2f,%.2f,%.1f,%.1f,%.2f,%d,%.1f,%s",
-                r.object.c_str(), r.kind.c_str(), r.param,
-                static_cast<unsigned long long>(r.seed), OutcomeName(r.result.outcome),
-                r.result.metrics.contour_mean_mm, r.result.metrics.contour_max_mm, r.end_arc_mm,
-                r.end_swept_deg, r.end_fillet_radius_mm, r.result.metrics.s_mm, r.result.follow_time_s,
+                r.object.c_str(), r.kind.c_str(), r.param, static_cast<unsigned long long>(r.seed),
+                OutcomeName(r.result.outcome), r.result.metrics.contour_mean_mm,
+                r.result.metrics.contour_max_mm, r.end_arc_mm, r.end_swept_deg,
+                r.end_fillet_radius_mm, r.result.metrics.s_mm, r.result.follow_time_s,
                 r.result.metrics.speed_mm_s, r.result.iterations, r.step_cost_us, detail.c_str());
   return buf;
 }

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "runtime/trial.h"
 #include "objects/object_spec.h"
+#include "runtime/trial.h"
 
 namespace ssc {
 
@@ -22,10 +22,10 @@ struct ObjectTrialRow {
   double param = 0;
   std::uint64_t seed = 0;
   TrialResult result;
-  double end_arc_mm = -1;        // open contours: tracked arc position at the end, mm
-  double end_swept_deg = 0;      // closed contours: swept angle at the end, deg (signed)
+  double end_arc_mm = -1;            // open contours: tracked arc position at the end, mm
+  double end_swept_deg = 0;          // closed contours: swept angle at the end, deg (signed)
   double end_fillet_radius_mm = -1;  // fillet only: radius where tracking ended, mm
-  double step_cost_us = 0;            // wall time per physics step of this trial
+  double step_cost_us = 0;           // wall time per physics step of this trial
 };
 
 // Runs one object trial on `model` (a scene written by WriteObjectScenes).

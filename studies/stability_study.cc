@@ -84,8 +84,8 @@ std::string StabilityCsv(const StabilityResult& result) {
   csv << "integrator,timestep_ms,outcome,r_mean_mm,s_mm,wall_s,stable,unchanged\n";
   for (const StabilityRow& r : result.rows) {
     csv << r.integrator << ',' << r.timestep_ms << ',' << OutcomeName(r.outcome) << ','
-        << r.r_mean_mm << ',' << r.s_mm << ',' << r.wall_s << ',' << r.stable << ','
-        << r.unchanged << '\n';
+        << r.r_mean_mm << ',' << r.s_mm << ',' << r.wall_s << ',' << r.stable << ',' << r.unchanged
+        << '\n';
   }
   return csv.str();
 }

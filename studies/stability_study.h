@@ -13,9 +13,9 @@
 namespace ssc {
 
 struct StabilitySpec {
-  TrialConfig config;                              // the trial (e.g. dL 5 mm)
+  TrialConfig config;  // the trial (e.g. dL 5 mm)
   std::vector<double> steps_ms = {0.5, 1, 2, 4, 8, 16};
-  double dr_tol_mm = 0.3, s_tol = 0.05;            // mean radius (mm), path length (relative)
+  double dr_tol_mm = 0.3, s_tol = 0.05;  // mean radius (mm), path length (relative)
   int threads = 1;
 };
 
@@ -28,8 +28,8 @@ struct StabilityRow {
 };
 
 struct StabilityResult {
-  StabilityRow reference;                 // RK4, 0.5 ms
-  std::vector<StabilityRow> rows;         // integrator by integrator, steps in the given order
+  StabilityRow reference;          // RK4, 0.5 ms
+  std::vector<StabilityRow> rows;  // integrator by integrator, steps in the given order
   std::vector<std::pair<std::string, double>> largest_unchanged_ms;  // per integrator
 };
 

@@ -4,9 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <sstream>
-
 #include <nlopt.hpp>
+#include <sstream>
 
 #include "studies/validation.h"
 
@@ -89,15 +88,17 @@ bool EvaluateDynamic(const mjModel* m, const DynamicFitSpec& spec, const TrialCo
         continue;
       for (const MapTrial& r : results[i]) {
         if (r.outcome != OutcomeName(Outcome::kSuccess)) continue;
-        sum += t.metric == MetricTarget::kDr ? r.dr_mm
-                                            : (t.metric == MetricTarget::kSigmaR ? r.sigma_r_mm : r.s_c);
+        sum += t.metric == MetricTarget::kDr
+                   ? r.dr_mm
+                   : (t.metric == MetricTarget::kSigmaR ? r.sigma_r_mm : r.s_c);
         ++n;
       }
     }
     t.model = n > 0 ? sum / n : std::numeric_limits<double>::quiet_NaN();
     // No successful trial: the target cannot be measured; charge a large but finite residual.
     const double res = n > 0 ? (t.model - t.published) / t.tolerance : 5.0;
-    metric_cost += std::min(res * res, 25.0);  // capped: one hopeless target cannot outweigh the map
+    metric_cost +=
+        std::min(res * res, 25.0);  // capped: one hopeless target cannot outweigh the map
   }
   metric_cost /= static_cast<double>(targets->size());
   *cost = score->log_loss + spec.metric_weight * metric_cost;
@@ -133,7 +134,8 @@ bool FitDynamic(const mjModel* m, const DynamicFitSpec& spec,
   auto config_at = [&](const std::vector<double>& x) {
     TrialConfig c = spec.base;
     for (std::size_t i = 0; i < params.size(); ++i)
-      *params[i]->field(&c) = params[i]->min + std::clamp(x[i], 0.0, 1.0) * (params[i]->max - params[i]->min);
+      *params[i]->field(&c) =
+          params[i]->min + std::clamp(x[i], 0.0, 1.0) * (params[i]->max - params[i]->min);
     return c;
   };
   int evaluations = 0;
@@ -161,7 +163,8 @@ bool FitDynamic(const mjModel* m, const DynamicFitSpec& spec,
       os << "eval " << evaluations << ": cost " << cost << " (class match "
          << 100 * score.class_match << " %, agreement " << score.expected_agreement << ", opposite "
          << score.opposite << ")";
-      for (std::size_t i = 0; i < params.size(); ++i) os << ' ' << params[i]->key << '=' << *params[i]->field(const_cast<TrialConfig*>(&c));
+      for (std::size_t i = 0; i < params.size(); ++i)
+        os << ' ' << params[i]->key << '=' << *params[i]->field(const_cast<TrialConfig*>(&c));
       log(os.str());
     }
     return cost;
@@ -172,11 +175,9 @@ bool FitDynamic(const mjModel* m, const DynamicFitSpec& spec,
   opt.set_upper_bounds(std::vector<double>(params.size(), 1.0));
   opt.set_maxeval(spec.max_evaluations);
   opt.set_initial_step(std::vector<double>(params.size(), 0.25));
-  opt.set_min_objective(
-      [](const std::vector<double>& x, std::vector<double>&, void* data) {
-        return (*static_cast<decltype(objective)*>(data))(x);
-      },
-      &objective);
+  opt.set_min_objective([](const std::vector<double>& x, std::vector<double>&,
+                           void* data) { return (*static_cast<decltype(objective)*>(data))(x); },
+                        &objective);
   std::vector<double> x = x0;
   double f = 0;
   try {

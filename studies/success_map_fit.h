@@ -29,11 +29,11 @@ const std::vector<DynamicParameter>& DynamicParameters();
 
 // One Fig. 6 target at dL 5 mm (the map's cells; metrics of the successful trials).
 struct MetricTarget {
-  std::string name;   // e.g. "dr_mm beta 1.5 P_ref 40"
+  std::string name;  // e.g. "dr_mm beta 1.5 P_ref 40"
   double beta, pref_pa;
   enum Metric { kDr, kSigmaR, kSc } metric;
   double published, tolerance;
-  double model = 0;    // the twin's mean over successful trials (NaN if none succeeded)
+  double model = 0;  // the twin's mean over successful trials (NaN if none succeeded)
 };
 std::vector<MetricTarget> PublishedMetricTargets();
 // The published outcomes beside the map (calibration targets in smart-suction-cup.md): the pilot
@@ -42,10 +42,10 @@ std::vector<MetricTarget> PublishedMetricTargets();
 std::vector<MapCell> PublishedOutcomeCells();
 
 struct DynamicFitSpec {
-  TrialConfig base;                  // the starting point (its values are the start)
-  std::vector<std::string> keys;     // parameters to fit (DynamicParameters keys)
-  std::vector<MapCell> cells;        // the training map
-  int seeds = 3;                     // trials per cell per evaluation
+  TrialConfig base;               // the starting point (its values are the start)
+  std::vector<std::string> keys;  // parameters to fit (DynamicParameters keys)
+  std::vector<MapCell> cells;     // the training map
+  int seeds = 3;                  // trials per cell per evaluation
   std::uint64_t seed = 1;
   int threads = 1;
   int max_evaluations = 40;
@@ -57,10 +57,10 @@ struct DynamicFitSpec {
 
 struct DynamicFitResult {
   TrialConfig best;
-  std::vector<double> values;        // fitted values of spec.keys
+  std::vector<double> values;  // fitted values of spec.keys
   double cost = 0, start_cost = 0;
-  MapScore score;                    // of the best point (its seeds)
-  std::vector<MetricTarget> targets; // at the best point
+  MapScore score;                     // of the best point (its seeds)
+  std::vector<MetricTarget> targets;  // at the best point
   int evaluations = 0;
   double wall_s = 0;
 };

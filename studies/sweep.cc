@@ -10,8 +10,8 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "runtime/mujoco_model.h"
 #include "common/strict_number.h"
+#include "runtime/mujoco_model.h"
 #include "studies/job_runner.h"
 #include "studies/sweep_io.h"
 #include "studies/trial_io.h"
@@ -156,8 +156,10 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
       return false;
     }
     if (existing.dropped > 0) {
-      std::fprintf(stderr, "sweep: dropped %d torn or malformed line(s) from %s; those trials "
-                   "run again\n", existing.dropped, spec.out_csv.c_str());
+      std::fprintf(stderr,
+                   "sweep: dropped %d torn or malformed line(s) from %s; those trials "
+                   "run again\n",
+                   existing.dropped, spec.out_csv.c_str());
     }
     for (const SweepRowKey& k : existing.rows) {
       done.insert(MakeKey(k.pref_pa, k.beta, k.step_mm, k.repeat));

@@ -1,8 +1,8 @@
 // Parameter sweeps: a grid of P_ref x beta x step x repeats, run by the job runner
 // (studies/job_runner.h: threads, and MPI ranks under mpirun), one CSV row per trial appended
-// and flushed by rank 0 as each trial ends (in the runner's handout order). Re-running the same sweep resumes: rows
-// already in the CSV (same pref, beta, step, repeat) are skipped. Seeds depend only on the base
-// seed and the grid point, so any thread count gives the same rows.
+// and flushed by rank 0 as each trial ends (in the runner's handout order). Re-running the same
+// sweep resumes: rows already in the CSV (same pref, beta, step, repeat) are skipped. Seeds depend
+// only on the base seed and the grid point, so any thread count gives the same rows.
 #ifndef SSC_STUDIES_SWEEP_H_
 #define SSC_STUDIES_SWEEP_H_
 
@@ -17,8 +17,8 @@
 namespace ssc {
 
 struct SweepSpec {
-  std::string scene_name;           // written into each row
-  TrialConfig base;                 // everything but P_ref, beta, step, seed
+  std::string scene_name;  // written into each row
+  TrialConfig base;        // everything but P_ref, beta, step, seed
   std::vector<double> pref_pa, beta, step_mm;
   // Explicit grid points (P_ref Pa, beta, step mm), e.g. a published map's cells; when set,
   // they replace the product of the three lists above.
@@ -38,10 +38,10 @@ struct SweepSummary {
   int total = 0, skipped = 0, ran = 0;
   double wall_s = 0;
   int ranks = 1, threads = 1;
-  std::vector<double> rank_busy_s;     // trial time summed per rank (rank 0's view)
-  double balance_max_over_mean = 1;    // max / mean of rank_busy_s
+  std::vector<double> rank_busy_s;   // trial time summed per rank (rank 0's view)
+  double balance_max_over_mean = 1;  // max / mean of rank_busy_s
   double longest_trial_s = 0;
-  bool interrupted = false;            // SIGINT/SIGTERM: finished rows kept, re-run to resume
+  bool interrupted = false;  // SIGINT/SIGTERM: finished rows kept, re-run to resume
 };
 
 // Seed of one grid point (stable across thread counts and runs).
@@ -65,8 +65,9 @@ class ScopedTrialErrorGuard {
 TrialResult RunGuardedTrial(const mjModel* m, const TrialConfig& config);
 
 // Runs the sweep on `m` (shared read-only by the threads). Collective under MPI: every rank
-// calls it; rank 0 writes the CSV. `progress` (optional) is called on rank 0 after each row. False + *error on I/O or spec errors; trial
-// failures, instabilities and MuJoCo errors are rows, not errors.
+// calls it; rank 0 writes the CSV. `progress` (optional) is called on rank 0 after each row. False
+// + *error on I/O or spec errors; trial failures, instabilities and MuJoCo errors are rows, not
+// errors.
 bool RunSweep(const mjModel* m, const SweepSpec& spec,
               const std::function<void(const SweepProgress&)>& progress, SweepSummary* summary,
               std::string* error);

@@ -80,7 +80,8 @@ std::string ToolXmlWithConfig(const std::string& tool_xml, const PluginConfig& c
   tinyxml2::XMLElement* instance =
       doc.Parse(tool_xml.c_str()) == tinyxml2::XML_SUCCESS ? PressureInstance(&doc) : nullptr;
   if (instance == nullptr) {
-    *error = std::string("no <plugin plugin=\"") + kPressurePlugin + "\"><instance> in the tool model";
+    *error =
+        std::string("no <plugin plugin=\"") + kPressurePlugin + "\"><instance> in the tool model";
     return "";
   }
   for (const auto& [key, value] : config) {
@@ -227,7 +228,8 @@ std::string ToolWithLipSegments(const std::string& tool_xml, int segments, std::
     char buf[160];
     XMLElement* body = cup->InsertNewChildElement("body");
     body->SetAttribute("name", ("ssc_lip_" + std::to_string(i)).c_str());
-    std::snprintf(buf, sizeof(buf), "%.6f %.6f %.6f", radius * std::cos(a), radius * std::sin(a), z);
+    std::snprintf(buf, sizeof(buf), "%.6f %.6f %.6f", radius * std::cos(a), radius * std::sin(a),
+                  z);
     body->SetAttribute("pos", buf);
     XMLElement* joint = body->InsertNewChildElement("joint");
     joint->SetAttribute("name", ("ssc_lip_" + std::to_string(i)).c_str());

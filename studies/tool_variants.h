@@ -31,8 +31,7 @@ class ToolModelVariants {
  public:
   // Reads `scene_path` and the files it refers to (recursively). Null + *error when a file
   // cannot be read or no file holds the ssc.chamber_pressure plugin instance.
-  static std::unique_ptr<ToolModelVariants> Read(const std::string& scene_path,
-                                                 std::string* error);
+  static std::unique_ptr<ToolModelVariants> Read(const std::string& scene_path, std::string* error);
   // The scene with the variant tool, compiled in memory. Null + *error (compiler or plugin
   // message, e.g. a config value out of range) on failure.
   ModelPtr Compile(const ToolVariant& variant, std::string* error) const;

@@ -3,9 +3,8 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 namespace ssc {
 namespace {
@@ -38,9 +37,9 @@ bool WriteTrialLogCsv(const std::string& path, const TrialResult& result, std::s
     f << Num(r.t_s, 7) << ',' << Num(r.tool_m[0], 8) << ',' << Num(r.tool_m[1], 8) << ','
       << Num(r.tool_m[2], 8);
     for (double p : r.p_pa) f << ',' << Num(p);
-    f << ',' << Num(r.pbar_pa) << ',' << Num(r.dpx_pa) << ',' << Num(r.dpy_pa) << ','
-      << Num(r.cf) << ',' << Num(r.step_x_m) << ',' << Num(r.step_y_m) << ','
-      << Num(r.ft_normal_n) << ',' << PhaseName(r.phase) << ',' << (r.iteration ? 1 : 0) << '\n';
+    f << ',' << Num(r.pbar_pa) << ',' << Num(r.dpx_pa) << ',' << Num(r.dpy_pa) << ',' << Num(r.cf)
+      << ',' << Num(r.step_x_m) << ',' << Num(r.step_y_m) << ',' << Num(r.ft_normal_n) << ','
+      << PhaseName(r.phase) << ',' << (r.iteration ? 1 : 0) << '\n';
   }
   if (!f) {
     *error = path + ": write failed";
@@ -49,8 +48,8 @@ bool WriteTrialLogCsv(const std::string& path, const TrialResult& result, std::s
   return true;
 }
 
-bool WriteTrialSummaryJson(const std::string& path, const std::string& scene,
-                           const TrialConfig& c, const TrialResult& r, std::string* error) {
+bool WriteTrialSummaryJson(const std::string& path, const std::string& scene, const TrialConfig& c,
+                           const TrialResult& r, std::string* error) {
   std::ofstream f(path);
   if (!f) {
     *error = path + ": cannot write";
@@ -115,13 +114,12 @@ std::string SweepCsvRow(const std::string& scene, const TrialConfig& c, int repe
                         const TrialResult& r) {
   const DiskTrialMetrics& m = r.metrics;
   std::ostringstream os;
-  os << scene << ',' << Num(c.law.p_ref_pa) << ',' << Num(c.law.beta) << ','
-     << Num(c.law.step_mm) << ',' << repeat << ',' << c.seed << ',' << OutcomeName(r.outcome) << ','
-     << Num(m.s_mm) << ',' << Num(m.r_mean_mm) << ',' << Num(m.dr_mm) << ','
-     << Num(m.sigma_r_mm) << ',' << Num(m.s_c) << ',' << Num(m.duration_s) << ','
-     << Num(m.speed_mm_s) << ',' << Num(m.speed_body_d_s) << ',' << Num(m.contour_mean_mm)
-     << ',' << Num(m.contour_max_mm) << ',' << Num(r.swept_deg) << ',' << r.iterations << ','
-     << Num(r.sim_time_s) << ',' << CsvText(r.detail);
+  os << scene << ',' << Num(c.law.p_ref_pa) << ',' << Num(c.law.beta) << ',' << Num(c.law.step_mm)
+     << ',' << repeat << ',' << c.seed << ',' << OutcomeName(r.outcome) << ',' << Num(m.s_mm) << ','
+     << Num(m.r_mean_mm) << ',' << Num(m.dr_mm) << ',' << Num(m.sigma_r_mm) << ',' << Num(m.s_c)
+     << ',' << Num(m.duration_s) << ',' << Num(m.speed_mm_s) << ',' << Num(m.speed_body_d_s) << ','
+     << Num(m.contour_mean_mm) << ',' << Num(m.contour_max_mm) << ',' << Num(r.swept_deg) << ','
+     << r.iterations << ',' << Num(r.sim_time_s) << ',' << CsvText(r.detail);
   return os.str();
 }
 

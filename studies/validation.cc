@@ -4,11 +4,10 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <tuple>
-
-#include <nlohmann/json.hpp>
 
 #include "controller/pure/robot_effects.h"
 #include "studies/job_runner.h"
@@ -70,8 +69,10 @@ bool ReadTrialOutcomes(const std::string& path,
     const std::vector<std::string> c = SplitComma(line);
     if (c.size() <= col["outcome"] || c[col["outcome"]].empty()) continue;  // torn: rerun
     double pref = 0, beta = 0, step = 0, rep = 0;
-    if (!ReadNumber(c[col["pref_pa"]], 0, 1e9, &pref) || !ReadNumber(c[col["beta"]], 0, 1e9, &beta) ||
-        !ReadNumber(c[col["step_mm"]], 0, 1e9, &step) || !ReadNumber(c[col["repeat"]], 0, 1e9, &rep))
+    if (!ReadNumber(c[col["pref_pa"]], 0, 1e9, &pref) ||
+        !ReadNumber(c[col["beta"]], 0, 1e9, &beta) ||
+        !ReadNumber(c[col["step_mm"]], 0, 1e9, &step) ||
+        !ReadNumber(c[col["repeat"]], 0, 1e9, &rep))
       continue;
     (*outcomes)[KeyOf(step, beta, pref)][static_cast<int>(rep)] = c[col["outcome"]];
   }

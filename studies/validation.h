@@ -27,7 +27,7 @@ struct ValidateSpec {
   int seeds = 10;          // trials per cell (>= 3: the first 3 give the class match)
   std::uint64_t seed = 1;  // base seed, as `ssc sweep --seed`
   int threads = 1;
-  std::string out_dir;     // trials.csv (resumable), cells.csv, validate.json
+  std::string out_dir;  // trials.csv (resumable), cells.csv, validate.json
 };
 
 // Runs and scores. Rank 0 writes the files and fills *score; other ranks only run trials.

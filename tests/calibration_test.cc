@@ -1,6 +1,6 @@
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "calibration/nelder_mead.h"
 #include "calibration/pneumatic_fit.h"

@@ -1,12 +1,11 @@
 // The twin against robot logs written exactly as the lab records them (tests/lab_log_generator):
 // every form must open unchanged, land the disk where the lab had it, and replay must recover
 // what was changed; a replay that misses every object is an error, never a report.
-#include <cmath>
-#include <filesystem>
-
+#include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <gtest/gtest.h>
+#include <cmath>
+#include <filesystem>
 
 #include "compare/comparison.h"
 #include "lab_log_generator.h"
@@ -39,8 +38,8 @@ const Fixture& Shared() {
 }
 
 std::string TempDir(const std::string& tag) {
-  const fs::path p = fs::temp_directory_path() /
-                     ("ssc_compare_" + tag + "_" + std::to_string(::getpid()));
+  const fs::path p =
+      fs::temp_directory_path() / ("ssc_compare_" + tag + "_" + std::to_string(::getpid()));
   fs::remove_all(p);
   fs::create_directories(p);
   return p.string();
@@ -51,8 +50,8 @@ testing::LabForms Generate(const std::string& tag, const LabSetup& setup,
   const Fixture& f = Shared();
   testing::LabForms forms;
   std::string error;
-  EXPECT_TRUE(testing::WriteLabForms(f.trial, f.config, f.disk, setup, perturbation,
-                                     TempDir(tag), &forms, &error))
+  EXPECT_TRUE(testing::WriteLabForms(f.trial, f.config, f.disk, setup, perturbation, TempDir(tag),
+                                     &forms, &error))
       << error;
   return forms;
 }
@@ -153,8 +152,7 @@ TEST(CompareTest, AReplayThatMissesEveryObjectIsAnError) {
   EXPECT_NE(error.find("never comes within reach"), std::string::npos) << error;
   EXPECT_NE(error.find("closest approach"), std::string::npos) << error;
   EXPECT_NE(error.find("to 'disk'"), std::string::npos) << error;
-  EXPECT_NE(error.find("log poses in base_link, object pose from --object-pose"),
-            std::string::npos)
+  EXPECT_NE(error.find("log poses in base_link, object pose from --object-pose"), std::string::npos)
       << error;
   EXPECT_FALSE(fs::exists(fs::path(o.out_dir) / "report.json"));  // no report of 0 Pa
   // The same pose given right: replay runs.
@@ -174,8 +172,8 @@ TEST(CompareTest, ClosedLoopTakesItsParametersFromTheMatAlone) {
   const TrialResult run = RunTrial(f.gantry.get(), c, true, &error);
   ASSERT_EQ(run.outcome, Outcome::kSuccess) << run.detail;
   testing::LabForms forms;
-  ASSERT_TRUE(testing::WriteLabForms(run, c, f.disk, LabSetup(), LogPerturbation(),
-                                     TempDir("loop"), &forms, &error))
+  ASSERT_TRUE(testing::WriteLabForms(run, c, f.disk, LabSetup(), LogPerturbation(), TempDir("loop"),
+                                     &forms, &error))
       << error;
   CompareOptions o;
   o.loop_config.seed = 9;  // another noise realisation of the same controller

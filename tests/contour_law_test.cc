@@ -1,8 +1,8 @@
 #include "controller/pure/contour_law.h"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace ssc {
 namespace {
@@ -18,10 +18,10 @@ void ExpectDir(const std::array<double, 2>& v, const std::array<double, 2>& want
 TEST(ContourLawTest, SidePressuresAndDifferentials) {
   // Chambers 1..4 = SE, NE, NW, SW.
   const ContourStep s = ComputeContourStep({10, 20, 60, 110}, ContourLawParams{});
-  EXPECT_DOUBLE_EQ(s.p_south_pa, 60);   // (10 + 110) / 2
-  EXPECT_DOUBLE_EQ(s.p_north_pa, 40);   // (20 + 60) / 2
-  EXPECT_DOUBLE_EQ(s.p_west_pa, 85);    // (60 + 110) / 2
-  EXPECT_DOUBLE_EQ(s.p_east_pa, 15);    // (10 + 20) / 2
+  EXPECT_DOUBLE_EQ(s.p_south_pa, 60);  // (10 + 110) / 2
+  EXPECT_DOUBLE_EQ(s.p_north_pa, 40);  // (20 + 60) / 2
+  EXPECT_DOUBLE_EQ(s.p_west_pa, 85);   // (60 + 110) / 2
+  EXPECT_DOUBLE_EQ(s.p_east_pa, 15);   // (10 + 20) / 2
   EXPECT_DOUBLE_EQ(s.dpx_pa, -20);
   EXPECT_DOUBLE_EQ(s.dpy_pa, 70);
   EXPECT_DOUBLE_EQ(s.p_mean_pa, 50);
@@ -56,7 +56,7 @@ TEST(ContourLawTest, CorrectionFactorBoundariesAndExtrapolation) {
   EXPECT_NEAR(CorrectionFactor(100, p), 0.0, 1e-12);
   EXPECT_NEAR(CorrectionFactor(15000, p), -2.0, 1e-12);
   EXPECT_NEAR(CorrectionFactor(std::sqrt(10.0 * 100.0), p), 1.0, 1e-12);  // half way in log
-  EXPECT_NEAR(CorrectionFactor(1, p), 4.0, 1e-12);                         // extrapolated
+  EXPECT_NEAR(CorrectionFactor(1, p), 4.0, 1e-12);                        // extrapolated
   EXPECT_NEAR(CorrectionFactor(15000 * (15000 / 100.0), p), -4.0, 1e-9);
   EXPECT_TRUE(std::isfinite(CorrectionFactor(-5, p)));
   EXPECT_GT(CorrectionFactor(-5, p), 2.0);
@@ -78,7 +78,7 @@ TEST(ContourLawTest, StepCombinesTangentAndCorrection) {
   // steers south (+x): both parts of the correction carry their sign.
   const ContourStep south = ComputeContourStep({100, 0, 0, 100}, p);
   ASSERT_TRUE(south.moving);
-  EXPECT_NEAR(south.step_m[0], 5e-3 * cf / n, 1e-12);  // south component
+  EXPECT_NEAR(south.step_m[0], 5e-3 * cf / n, 1e-12);   // south component
   EXPECT_NEAR(south.step_m[1], 5e-3 * 1.0 / n, 1e-12);  // west component
   // Above P_ref (mean 1000 Pa) c_f < 0 steers away from the object: north, for the object south.
   const ContourStep deep = ComputeContourStep({2000, 0, 0, 2000}, p);
@@ -89,7 +89,7 @@ TEST(ContourLawTest, StepCombinesTangentAndCorrection) {
 TEST(ContourLawTest, DeadBandAndZeroDifferential) {
   ContourLawParams p;
   // Differentials of exactly P_n do not move; just above do.
-  EXPECT_FALSE(ComputeContourStep({0, 0, 10, 10}, p).moving);   // dPy = 10 = P_n
+  EXPECT_FALSE(ComputeContourStep({0, 0, 10, 10}, p).moving);  // dPy = 10 = P_n
   EXPECT_TRUE(ComputeContourStep({0, 0, 10.5, 10.5}, p).moving);
   p.dead_band = false;
   EXPECT_TRUE(ComputeContourStep({0, 0, 1, 1}, p).moving);

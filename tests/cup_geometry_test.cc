@@ -1,8 +1,8 @@
 #include "plugin/pneumatics/cup_geometry.h"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace ssc {
 namespace {
@@ -57,8 +57,7 @@ TEST(CupGeometryTest, HoveringLipLeaksItsCurtainUntilTheOpeningLimits) {
   for (double g_mm : {0.1, 0.5, 1.0, 2.0}) {
     const double g = g_mm * 1e-3;
     const double curtain = 2 * kPi * r * (g + geo.lip_roughness_gap_m);
-    EXPECT_NEAR(TotalLeak(geo, ProbeFlatPlate(geo, g)), curtain, 1e-3 * curtain)
-        << g_mm << " mm";
+    EXPECT_NEAR(TotalLeak(geo, ProbeFlatPlate(geo, g)), curtain, 1e-3 * curtain) << g_mm << " mm";
   }
   // Far from any surface the whole opening is open.
   EXPECT_NEAR(TotalLeak(geo, ProbeFlatPlate(geo, 20e-3)),

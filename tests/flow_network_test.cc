@@ -1,12 +1,13 @@
 // The pneumatic model alone: no MuJoCo.
+#include "plugin/pneumatics/flow_network.h"
+
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-#include <gtest/gtest.h>
-
 #include "plugin/pneumatics/cup_geometry.h"
-#include "plugin/pneumatics/flow_network.h"
 
 namespace ssc {
 namespace {
@@ -61,7 +62,8 @@ double ClosedFormTap(const PneumaticParams& p, double chamber_pa, double a) {
 
 TEST(FlowNetworkTest, SealedCupReachesThePumpsMaximumVacuum) {
   // No leak: no flow anywhere, so the pump sits at its blocked vacuum and every chamber with it.
-  PneumaticParams other = Sharp();  // a different pump, so the answer is not the default by coincidence
+  PneumaticParams other =
+      Sharp();  // a different pump, so the answer is not the default by coincidence
   other.pump_max_vacuum_pa = 61000;
   other.pump_free_flow_m3_s = 3.1e-4;
   for (const PneumaticParams& p : {Sharp(), other}) {
@@ -272,7 +274,8 @@ TEST(FlowNetworkTest, SymmetricUnderChamberRotation) {
   // Mirror symmetry of the ring (1 2 3 4 -> 4 3 2 1).
   const std::array<double, 4> mirrored = {leak[3], leak[2], leak[1], leak[0]};
   const FlowSolution m = SolveFlowNetwork(PneumaticParams{}, mirrored);
-  for (int i = 0; i < 4; ++i) EXPECT_NEAR(m.tap_pa[3 - i], base.tap_pa[i], 1e-6 * (1 + base.tap_pa[i]));
+  for (int i = 0; i < 4; ++i)
+    EXPECT_NEAR(m.tap_pa[3 - i], base.tap_pa[i], 1e-6 * (1 + base.tap_pa[i]));
 }
 
 TEST(FlowNetworkTest, MassBalanceHoldsAtEveryNode) {
@@ -300,7 +303,8 @@ TEST(FlowNetworkTest, WarmStartDoesNotChangeTheAnswer) {
   const FlowSolution cold = SolveFlowNetwork(PneumaticParams{}, leak);
   const double warm[5] = {30000, 1, 5000, 7, 12000};
   const FlowSolution hot = SolveFlowNetwork(PneumaticParams{}, leak, warm);
-  for (int i = 0; i < 4; ++i) EXPECT_NEAR(hot.tap_pa[i], cold.tap_pa[i], 1e-6 * (1 + cold.tap_pa[i]));
+  for (int i = 0; i < 4; ++i)
+    EXPECT_NEAR(hot.tap_pa[i], cold.tap_pa[i], 1e-6 * (1 + cold.tap_pa[i]));
 }
 
 // The published disk results give points of the static curve mean P vs how far the cup centre

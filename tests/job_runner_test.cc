@@ -1,5 +1,8 @@
 // The study job runner on threads (MPI runs are tested by tests/mpi_sweep_test.sh): longest-
 // first handout, every job delivered exactly once in handout order, resume by skip, interruption.
+#include "studies/job_runner.h"
+
+#include <gtest/gtest.h>
 #include <signal.h>
 
 #include <atomic>
@@ -8,10 +11,6 @@
 #include <string>
 #include <thread>
 #include <vector>
-
-#include <gtest/gtest.h>
-
-#include "studies/job_runner.h"
 
 namespace ssc {
 namespace {
@@ -109,9 +108,8 @@ TEST(JobRunnerTest, NothingToRunWhenEveryJobIsSkipped) {
   JobRunnerOptions options;
   options.threads = 2;
   int delivered = 0;
-  const JobRunStats stats = RunJobs(jobs, options, [&](std::size_t, const std::string&) {
-    ++delivered;
-  });
+  const JobRunStats stats =
+      RunJobs(jobs, options, [&](std::size_t, const std::string&) { ++delivered; });
   EXPECT_EQ(delivered, 0);
   EXPECT_EQ(stats.skipped, 3u);
   EXPECT_EQ(stats.ran, 0u);

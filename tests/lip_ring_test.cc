@@ -1,10 +1,10 @@
 // The lip ring's bending alone: no MuJoCo.
 #include "plugin/pneumatics/lip_ring.h"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 namespace ssc {
 namespace {

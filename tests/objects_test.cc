@@ -2,6 +2,10 @@
 // trial set-ups, the fillet profile, the written MJCF against the analytic shapes (rays from
 // above), rays against contacts on concave objects, the per-scene cost, and trials on a few
 // objects through the set-up data.
+#include <gtest/gtest-spi.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -10,13 +14,9 @@
 #include <sstream>
 #include <string>
 
-#include <gtest/gtest-spi.h>
-#include <gtest/gtest.h>
-#include <unistd.h>
-
-#include "runtime/mujoco_model.h"
 #include "objects/object_mjcf.h"
 #include "objects/object_spec.h"
+#include "runtime/mujoco_model.h"
 #include "studies/object_step_cost.h"
 #include "studies/object_trials.h"
 
@@ -103,8 +103,8 @@ TEST(ContourPathTest, LengthsOfArcsSpiralsAndSegments) {
   for (int i = 0; i < n; ++i) {
     const double t0 = 2 * kPi * i / n, t1 = 2 * kPi * (i + 1) / n;
     const double r0 = 0.025 + 0.035 * t0 / (2 * kPi), r1 = 0.025 + 0.035 * t1 / (2 * kPi);
-    chords += std::hypot(r1 * std::cos(t1) - r0 * std::cos(t0),
-                         r1 * std::sin(t1) - r0 * std::sin(t0));
+    chords +=
+        std::hypot(r1 * std::cos(t1) - r0 * std::cos(t0), r1 * std::sin(t1) - r0 * std::sin(t0));
   }
   EXPECT_NEAR(spiral.Length(), chords, 1e-8);
   EXPECT_NEAR(volute.Length(), chords + 0.035, 1e-8);
@@ -272,8 +272,8 @@ TEST(ObjectFilesTest, EveryFileLoadsAndOutputIsDeterministic) {
     }
   }
   // A sample of each kind loads; the object file alone holds only the object's geoms.
-  for (const char* name : {"disk_r35", "hole_d04", "corner_a300", "volute", "semisquare_strip",
-                           "fillet"}) {
+  for (const char* name :
+       {"disk_r35", "hole_d04", "corner_a300", "volute", "semisquare_strip", "fillet"}) {
     const ObjectFiles f = ObjectFileNames(name);
     const Loaded object = Load(FileOf(name));
     ASSERT_TRUE(object.m);
@@ -408,8 +408,7 @@ TEST(ObjectGeometryTest, FilletSurfaceFollowsTheRadiusProfile) {
 // the rays) placed with its bottom 0.1 mm below the top face: where the ray says "top face", it
 // touches; where the ray finds no surface within the lip's 3 mm reach, it touches nothing.
 // Returns the disagreements.
-int RayContactDisagreements(const std::string& object_file, const ObjectSpec& spec,
-                            int* checked) {
+int RayContactDisagreements(const std::string& object_file, const ObjectSpec& spec, int* checked) {
   const fs::path scene = fs::path(object_file).parent_path() /
                          (fs::path(object_file).stem().string() + "_sphere_probe.xml");
   std::ofstream(scene) << "<mujoco><include file=\"" << fs::path(object_file).filename().string()
@@ -486,10 +485,10 @@ TEST(RaysAndContactsTest, TheCheckCatchesAConcaveMesh) {
     }
     base += 2 * k;
   }
-  std::ofstream(file) << "<mujoco><asset><mesh name=\"plate\" vertex=\"" << vertex
-                      << "\" face=\"" << face << "\" inertia=\"convex\"/></asset>"
-                      << "<worldbody><body pos=\""
-                      << kWorkspaceX << " 0 0\"><geom type=\"mesh\" mesh=\"plate\" group=\"2\"/>"
+  std::ofstream(file) << "<mujoco><asset><mesh name=\"plate\" vertex=\"" << vertex << "\" face=\""
+                      << face << "\" inertia=\"convex\"/></asset>"
+                      << "<worldbody><body pos=\"" << kWorkspaceX
+                      << " 0 0\"><geom type=\"mesh\" mesh=\"plate\" group=\"2\"/>"
                       << "</body></worldbody></mujoco>";
   int checked = 0;
   int disagree = 0;
@@ -538,9 +537,9 @@ TEST(RaysAndContactsTest, LipSegmentsAgreeWithRays) {
           }
           const double z = SurfaceZ(l, x, y);
           ++checked;
-          EXPECT_EQ(contact, AtTop(z)) << c.name << " segment " << g << " at ("
-                                       << (x - kWorkspaceX) / kMm << ", " << y / kMm
-                                       << ") mm, ray z " << z;
+          EXPECT_EQ(contact, AtTop(z))
+              << c.name << " segment " << g << " at (" << (x - kWorkspaceX) / kMm << ", " << y / kMm
+              << ") mm, ray z " << z;
         }
       }
     }
@@ -557,9 +556,9 @@ TEST(ObjectStepCostTest, MeasuresTheProbeScenes) {
   options.steps = 100;
   for (const char* name : {"disk_r35", "hole_d10"}) {
     std::string error;
-    const auto cost = MeasureStepCost(
-        ObjectByName(name), (SceneDir() / ObjectFileNames(name).probe_scene).string(), options,
-        &error);
+    const auto cost =
+        MeasureStepCost(ObjectByName(name),
+                        (SceneDir() / ObjectFileNames(name).probe_scene).string(), options, &error);
     ASSERT_TRUE(cost) << error;
     EXPECT_GT(cost->step_us, 0);
     EXPECT_GT(cost->contacts, 4) << name;  // the pressed lip touches

@@ -1,7 +1,5 @@
 // The plugin's config-key table: strict parsing of every key, defaults from the pure structs,
 // and docs/plugin.md generated from the table.
-#include "plugin/chamber_pressure_config.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +8,8 @@
 #include <set>
 #include <sstream>
 #include <string>
+
+#include "plugin/chamber_pressure_config.h"
 
 namespace ssc {
 namespace {
@@ -44,9 +44,13 @@ TEST(PluginConfigTest, EveryKeyOnceAndDefaultsAreTheStructDefaults) {
 
 TEST(PluginConfigTest, ValuesReachTheirMembersInSiUnits) {
   std::string error;
-  const auto c = Parse({{"opening_radius_mm", "6"}, {"pump_free_flow_lpm", "18"},
-                        {"lag_ms", "4"}, {"ray_groups", "0 3"}, {"seed", "12"},
-                        {"lip_shear_n_per_mm", "1.5"}, {"lip_tilt_nmm_per_deg", "5"}},
+  const auto c = Parse({{"opening_radius_mm", "6"},
+                        {"pump_free_flow_lpm", "18"},
+                        {"lag_ms", "4"},
+                        {"ray_groups", "0 3"},
+                        {"seed", "12"},
+                        {"lip_shear_n_per_mm", "1.5"},
+                        {"lip_tilt_nmm_per_deg", "5"}},
                        &error);
   ASSERT_TRUE(c) << error;
   EXPECT_DOUBLE_EQ(c->geometry.opening_radius_m, 6e-3);
@@ -65,14 +69,14 @@ TEST(PluginConfigTest, BadValuesNameKeyValueAndRange) {
     const char* value;
     const char* expect;
   };
-  for (const Case& c : {Case{"noise_pa", "0x10", "[0, 10000]"}, Case{"noise_pa", "inf", "noise_pa"},
-                        Case{"noise_pa", "6 Pa", "decimal"}, Case{"open_depth_mm", "-1", "[0.05, 10] mm"},
-                        Case{"port_area_mm2", "0", "(0, 10000] mm^2"},
-                        Case{"rays_per_chamber", "2.5", "whole number"},
-                        Case{"seed", "-1", "seed"}, Case{"ray_groups", "0 9", "ray_groups"},
-                        Case{"ray_groups", "0 0", "twice"}, Case{"ray_groups", "0 x", "ray_groups"},
-                        Case{"ray_groups", "4", "lip_geom_group"},
-                        Case{"average_samples", "65", "[1, 64]"}}) {
+  for (const Case& c :
+       {Case{"noise_pa", "0x10", "[0, 10000]"}, Case{"noise_pa", "inf", "noise_pa"},
+        Case{"noise_pa", "6 Pa", "decimal"}, Case{"open_depth_mm", "-1", "[0.05, 10] mm"},
+        Case{"port_area_mm2", "0", "(0, 10000] mm^2"},
+        Case{"rays_per_chamber", "2.5", "whole number"}, Case{"seed", "-1", "seed"},
+        Case{"ray_groups", "0 9", "ray_groups"}, Case{"ray_groups", "0 0", "twice"},
+        Case{"ray_groups", "0 x", "ray_groups"}, Case{"ray_groups", "4", "lip_geom_group"},
+        Case{"average_samples", "65", "[1, 64]"}}) {
     std::string error;
     EXPECT_FALSE(Parse({{c.key, c.value}}, &error)) << c.key << "=" << c.value;
     EXPECT_NE(error.find(c.key), std::string::npos) << error;

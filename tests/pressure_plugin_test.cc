@@ -1,5 +1,8 @@
 // The pressure sensor plugin inside MuJoCo: the cup held by a mocap body over a plate edge
 // (scenes/probe_edge.xml).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -7,13 +10,10 @@
 #include <sstream>
 #include <string>
 #include <utility>
-#include <unistd.h>
 
-#include <gtest/gtest.h>
-
-#include "studies/edge_probe.h"
-#include "runtime/mujoco_model.h"
 #include "geometry/dimensions.h"
+#include "runtime/mujoco_model.h"
+#include "studies/edge_probe.h"
 #include "studies/tool_variants.h"
 
 namespace ssc {
@@ -190,18 +190,12 @@ TEST(PressurePluginTest, BadConfigFailsTheLoadNamingKeyValueAndRange) {
     const char* expect;  // must appear in the message
   };
   const Case cases[] = {
-      {"open_depth_mm", "-1", "[0.05, 10] mm"},
-      {"lip_shear_n_per_mm", "-0.5", "[0, 100] N/mm"},
-      {"port_area_mm2", "-3", "(0, 10000] mm^2"},
-      {"noise_pa", "nan", "noise_pa"},
-      {"rays_per_chamber", "2.5", "whole number"},
-      {"sample_rate_hz", "fast", "sample_rate_hz"},
-      {"ray_groups", "0 9", "ray_groups"},
-      {"ray_groups", "4", "lip_geom_group"},
-      {"unknown_key", "1", "unknown_key"},
-      {"noise_pa", "", "empty value"},
-      {"noise_pa", "0x10", "[0, 10000] Pa"},
-      {"sample_rate_hz", "1e400", "sample_rate_hz"},
+      {"open_depth_mm", "-1", "[0.05, 10] mm"},    {"lip_shear_n_per_mm", "-0.5", "[0, 100] N/mm"},
+      {"port_area_mm2", "-3", "(0, 10000] mm^2"},  {"noise_pa", "nan", "noise_pa"},
+      {"rays_per_chamber", "2.5", "whole number"}, {"sample_rate_hz", "fast", "sample_rate_hz"},
+      {"ray_groups", "0 9", "ray_groups"},         {"ray_groups", "4", "lip_geom_group"},
+      {"unknown_key", "1", "unknown_key"},         {"noise_pa", "", "empty value"},
+      {"noise_pa", "0x10", "[0, 10000] Pa"},       {"sample_rate_hz", "1e400", "sample_rate_hz"},
   };
   for (const Case& c : cases) {
     const std::string error = LoadWithConfig(c.key, c.value);
@@ -245,7 +239,8 @@ TEST(PressurePluginTest, MissingSiteOrLipIsReported) {
   EXPECT_NE(no_lip.find(kChamberPressurePluginName), std::string::npos) << no_lip;
   EXPECT_NE(no_lip.find("found 0 lip segment geoms (group 5)"), std::string::npos) << no_lip;
   // A site that does not exist is MuJoCo's compiler error; it must still fail the load.
-  const std::string no_site = LoadEdited("objname=\"ssc_tool_site\"/>", "objname=\"no_such_site\"/>");
+  const std::string no_site =
+      LoadEdited("objname=\"ssc_tool_site\"/>", "objname=\"no_such_site\"/>");
   EXPECT_NE(no_site.find("no_such_site"), std::string::npos) << no_site;
 }
 

@@ -1,10 +1,10 @@
 // The robot effects, each on its own (controller/pure/robot_effects.h), against hand values.
 #include "controller/pure/robot_effects.h"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "controller/pure/contour_law.h"
 

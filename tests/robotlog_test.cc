@@ -1,6 +1,7 @@
 // Robot logs: the lab's formats exactly as its logger and MAT saver write them (both logger
 // versions), the plain CSV, the processing steps on signals with a known answer, every bad-log
 // case with the file, line and column it must name, and seeded perturbations of valid files.
+#include <gtest/gtest.h>
 #include <matio.h>
 #include <unistd.h>
 
@@ -11,8 +12,6 @@
 #include <random>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "robotlog/robot_log.h"
 #include "robotlog/synthetic_log.h"
@@ -82,7 +81,6 @@ void ExpectSameStream(const Stream& a, const Stream& b, const char* what) {
     }
   }
 }
-
 
 // The disk benchmark script's arguments and a short edgeFollowing_history.
 LabRunArgs DiskArgs() {
@@ -320,8 +318,8 @@ TEST(RobotLogTest, MatAsSavematWritesItReadsBack) {
   MatWrite(mat, "diskRadius", MAT_C_INT64, MAT_T_INT64, 1, 1, &radius);
   MatWrite(mat, "d_lat", MAT_C_DOUBLE, MAT_T_DOUBLE, 1, 1, &d_lat);
   MatWrite(mat, "beta", MAT_C_DOUBLE, MAT_T_DOUBLE, 1, 1, &beta);
-  double history[2 * 14] = {0.5, 0.75, -0.6, -0.6, 0.1, 0.1, 1, 1, 0, 0, 0, 0, 0, 0,
-                            1, 1, 0, 0, -1.1, -1.2, -5, -6, -7, -8, -9, -10, -11, -12};
+  double history[2 * 14] = {0.5, 0.75, -0.6, -0.6, 0.1,  0.1,  1,  1,  0,  0,  0,  0,   0,   0,
+                            1,   1,    0,    0,    -1.1, -1.2, -5, -6, -7, -8, -9, -10, -11, -12};
   MatWrite(mat, "edgeFollowing_history", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, 14, history);
   char note[] = "a note";
   MatWrite(mat, "note", MAT_C_CHAR, MAT_T_UINT8, 1, 6, note);
@@ -474,8 +472,8 @@ TEST(RobotLogTest, InAirOffsetIsSubtractedAsTheHostDid) {
   EXPECT_DOUBLE_EQ(p.offset_pa[1], 101020);
   ASSERT_EQ(p.t_s.size(), 300u);
   for (int c = 0; c < 4; ++c) {
-    EXPECT_NEAR(p.p_pa[150][c], 0, 1e-9) << c;                       // in air: no vacuum
-    EXPECT_NEAR(p.p_pa[250][c], c == 3 ? 2000 : 1000, 1e-9) << c;    // positive = vacuum
+    EXPECT_NEAR(p.p_pa[150][c], 0, 1e-9) << c;                     // in air: no vacuum
+    EXPECT_NEAR(p.p_pa[250][c], c == 3 ? 2000 : 1000, 1e-9) << c;  // positive = vacuum
   }
   // A window that is not in air (the cup sealed at 40 kPa) is refused at its first sample.
   o.trial_start_s = 2.505;
@@ -718,12 +716,12 @@ TEST(RobotLogTest, BadUnitsAndFilesInARecording) {
   ExpectError(LoadWith(dir, &Recording::pressure, PressureRows(t0, 20000, 3000, "1e5")), 3, 1,
               "us read as ns");
   // Spacing right (1 ms) but the recording lasts 0.3 s.
-  ExpectError(LoadWith(dir, &Recording::pressure, PressureRows(t0, 1000000, 300, "1e5")), 301,
-              1, "shorter than 0.5 s");
+  ExpectError(LoadWith(dir, &Recording::pressure, PressureRows(t0, 1000000, 300, "1e5")), 301, 1,
+              "shorter than 0.5 s");
   // Stamps in microseconds since the epoch (1970), right spacing.
-  ExpectError(LoadWith(dir, &Recording::pressure,
-                       PressureRows(1700000000000000LL, 10000000, 100, "1e5")),
-              2, 1, "not ROS time in ns");
+  ExpectError(
+      LoadWith(dir, &Recording::pressure, PressureRows(1700000000000000LL, 10000000, 100, "1e5")),
+      2, 1, "not ROS time in ns");
   const std::string pose_h =
       "ROStimestamp,/endEffectorPose.pose.orientation.w,/endEffectorPose.pose.orientation.x,"
       "/endEffectorPose.pose.orientation.y,/endEffectorPose.pose.orientation.z,"
@@ -752,8 +750,7 @@ TEST(RobotLogTest, BadUnitsAndFilesInARecording) {
   LoadError e;
   EXPECT_FALSE(LoadTopicCsvRecording(r.pressure, &back, &e));
   EXPECT_EQ(e.file, r.pressure);
-  EXPECT_NE(e.message.find("no file of topic /endEffectorPose"), std::string::npos)
-      << e.ToString();
+  EXPECT_NE(e.message.find("no file of topic /endEffectorPose"), std::string::npos) << e.ToString();
   EXPECT_FALSE(LoadTopicCsvRecording(dir / "nowhere", &back, &e));
   EXPECT_NE(e.message.find("no such file or folder"), std::string::npos);
   r = WriteRecording(dir);
@@ -804,8 +801,7 @@ TEST(RobotLogTest, BadPlainLogsNameLineAndColumn) {
       {h + ok_row + "0.01,0.1,0.2,0.3,1,0,0,0,101325,20,30,40\n", 3, 9, "absolute pressure"},
       {h + "0,0.1,0.2,0.3,1,0,0,0,10,20,-900,-9000\n", 2, 12, "vacuum written negative"},
       {"t_s,x_m,y_m,z_m,qw,qx,qy,qz,p1_kpa,p2_pa,p3_pa,p4_pa\n" + ok_row, 1, 9, "unknown column"},
-      {"t_s,x_m,y_m,z_m,qw,qx,qy,p1_pa,p2_pa,p3_pa,p4_pa\n" + ok_row, 1, 12,
-       "missing column 'qz'"},
+      {"t_s,x_m,y_m,z_m,qw,qx,qy,p1_pa,p2_pa,p3_pa,p4_pa\n" + ok_row, 1, 12, "missing column 'qz'"},
       {"t_s,x_m,y_m,z_m,qw,qx,qy,qz,p1_pa,p2_pa,p3_pa,p4_pa,x_m\n", 1, 13, "appears twice"},
       {h.substr(0, h.size() - 1) + ",fx_n\n", 1, 14, "missing column 'fy_n'"},
       {ok_row, 1, 1, "header row"},
@@ -846,8 +842,8 @@ TEST(RobotLogTest, BadMatFilesNameVariableRowAndColumn) {
   TempDir dir("bad_mat");
   const std::string path = dir / "bad.mat";
   // Starts from a good file each time and replaces one variable.
-  auto check = [&](const char* name, matio_classes cls, matio_types type, size_t rows,
-                   size_t cols, void* data, int line, int column, const std::string& words) {
+  auto check = [&](const char* name, matio_classes cls, matio_types type, size_t rows, size_t cols,
+                   void* data, int line, int column, const std::string& words) {
     std::string error;
     RobotLog good = MakeRobotLog(TwinRun(), LogPerturbation());
     good.args = DiskArgs();
@@ -868,8 +864,7 @@ TEST(RobotLogTest, BadMatFilesNameVariableRowAndColumn) {
   check("endEffectorPose_data", MAT_C_DOUBLE, MAT_T_DOUBLE, 0, 0, nullptr, 0, 0,
         "'endEffectorPose_data': missing");
   double transposed[6 * 2] = {0};
-  check("SensorPacket_data", MAT_C_DOUBLE, MAT_T_DOUBLE, 6, 2, transposed, 0, 0,
-        "expected N x 6");
+  check("SensorPacket_data", MAT_C_DOUBLE, MAT_T_DOUBLE, 6, 2, transposed, 0, 0, "expected N x 6");
   char text[] = "abcdef";
   check("SensorPacket_data", MAT_C_CHAR, MAT_T_UINT8, 1, 6, text, 0, 0, "real numeric matrix");
   const double t0 = 1.6e18;
@@ -879,8 +874,7 @@ TEST(RobotLogTest, BadMatFilesNameVariableRowAndColumn) {
   // The .mat reader's own check (the stream check behind it says "non-monotonic time").
   check("SensorPacket_data", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, 6, backwards, 2, 1,
         "non-monotonic time stamp");
-  double seconds[2 * 6] = {1.7e9 + 0.5, 1.7e9 + 0.51, 1, 1, 1e5, 1e5, 1e5, 1e5, 1e5, 1e5,
-                           1e5, 1e5};
+  double seconds[2 * 6] = {1.7e9 + 0.5, 1.7e9 + 0.51, 1, 1, 1e5, 1e5, 1e5, 1e5, 1e5, 1e5, 1e5, 1e5};
   check("SensorPacket_data", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, 6, seconds, 1, 1,
         "integer number of ns");
   double gauge[2 * 6] = {t0, t0 + 1e7, 1, 1, 1e5, 1e5, 1e5, 1e5, 1e5, 250, 1e5, 1e5};
@@ -892,8 +886,7 @@ TEST(RobotLogTest, BadMatFilesNameVariableRowAndColumn) {
     us[i] = 1.7e18 + 20000.0 * static_cast<double>(i);
     us[3000 + i] = 4;
   }
-  check("SensorPacket_data", MAT_C_DOUBLE, MAT_T_DOUBLE, 3000, 6, us.data(), 2, 1,
-        "us read as ns");
+  check("SensorPacket_data", MAT_C_DOUBLE, MAT_T_DOUBLE, 3000, 6, us.data(), 2, 1, "us read as ns");
   double empty_ft[1] = {0};
   check("netftdata_data", MAT_C_DOUBLE, MAT_T_DOUBLE, 0, 7, empty_ft, 0, 0, "empty stream");
   double bad_history[2 * 14] = {1, 0.5};  // time goes back on row 2
@@ -981,9 +974,15 @@ std::string Perturb(const std::string& text, std::mt19937* rng) {
   const size_t n = lines.size();
   const size_t i = pick(1, n - 1);
   switch ((*rng)() % 8) {
-    case 0: std::swap(lines[i], lines[i + 1]); break;
-    case 1: lines.insert(lines.begin() + static_cast<long>(i), lines[i]); break;
-    case 2: lines.erase(lines.begin() + static_cast<long>(i)); break;
+    case 0:
+      std::swap(lines[i], lines[i + 1]);
+      break;
+    case 1:
+      lines.insert(lines.begin() + static_cast<long>(i), lines[i]);
+      break;
+    case 2:
+      lines.erase(lines.begin() + static_cast<long>(i));
+      break;
     case 3: {  // one character of a row changed
       const std::string alphabet = "0123456789.-e+ ,xn";
       std::string& l = lines[i];
@@ -1002,8 +1001,12 @@ std::string Perturb(const std::string& text, std::mt19937* rng) {
       if (comma != std::string::npos) l.erase(comma);
       break;
     }
-    case 6: lines[i] += ",1"; break;
-    default: lines.resize(i); break;
+    case 6:
+      lines[i] += ",1";
+      break;
+    default:
+      lines.resize(i);
+      break;
   }
   std::string out;
   for (const std::string& l : lines) out += l + "\n";
@@ -1065,8 +1068,9 @@ TEST(RobotLogTest, SeededPerturbationsOfValidLogsReachTheRowChecks) {
         }
       }
       for (const auto& row : log.tool_pose.rows) {
-        ASSERT_NEAR(std::sqrt(row[0] * row[0] + row[1] * row[1] + row[2] * row[2] +
-                              row[3] * row[3]), 1.0, kQuaternionNormTolerance);
+        ASSERT_NEAR(
+            std::sqrt(row[0] * row[0] + row[1] * row[1] + row[2] * row[2] + row[3] * row[3]), 1.0,
+            kQuaternionNormTolerance);
         for (int k = 4; k < 7; ++k) ASSERT_LE(std::fabs(row[k]), kPositionMaxM);
       }
     }

@@ -1,8 +1,8 @@
 #include "plugin/pneumatics/sensor_chain.h"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace ssc {
 namespace {

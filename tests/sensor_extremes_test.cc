@@ -1,17 +1,17 @@
 // The sensor at its extremes: in air, fully sealed, sliding off a corner, crossing the edge of a
 // sheet thinner than the seal distance, and a surface passing the seal distance below the lip.
 // No NaN, and no jump between consecutive samples larger than the stated bound.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 
-#include <gtest/gtest.h>
-#include <unistd.h>
-
-#include "runtime/mujoco_model.h"
-#include "plugin/chamber_pressure_sensor.h"
 #include "geometry/dimensions.h"
+#include "plugin/chamber_pressure_sensor.h"
+#include "runtime/mujoco_model.h"
 
 namespace ssc {
 namespace {
@@ -25,11 +25,15 @@ std::string Scene() {
   fs::create_directories(dir);
   const fs::path path = dir / "extremes.xml";
   std::ofstream(path)
-      << "<mujoco><compiler angle=\"radian\"/><option timestep=\"0.001\" integrator=\"implicitfast\"/>"
-      << "<asset><model name=\"ssc_tool\" file=\"" << SourceDir() << "/models/ssc_tool.xml\"/></asset>"
+      << "<mujoco><compiler angle=\"radian\"/><option timestep=\"0.001\" "
+         "integrator=\"implicitfast\"/>"
+      << "<asset><model name=\"ssc_tool\" file=\"" << SourceDir()
+      << "/models/ssc_tool.xml\"/></asset>"
       << "<worldbody><geom name=\"table\" type=\"plane\" size=\"1 1 0.01\"/>"
-      << "<geom name=\"plate\" type=\"box\" size=\"0.05 0.05 0.005\" pos=\"-0.05 -0.05 0.005\" group=\"2\"/>"
-      << "<geom name=\"sheet\" type=\"box\" size=\"0.05 0.05 0.00015\" pos=\"0.15 0 0.00985\" group=\"2\"/>"
+      << "<geom name=\"plate\" type=\"box\" size=\"0.05 0.05 0.005\" pos=\"-0.05 -0.05 0.005\" "
+         "group=\"2\"/>"
+      << "<geom name=\"sheet\" type=\"box\" size=\"0.05 0.05 0.00015\" pos=\"0.15 0 0.00985\" "
+         "group=\"2\"/>"
       << "<body name=\"probe\" mocap=\"true\" pos=\"0 0 0.3\" quat=\"0 0.70710678 -0.70710678 0\">"
       << "<attach model=\"ssc_tool\" body=\"ssc_tool\" prefix=\"\"/></body></worldbody></mujoco>";
   return path.string();
@@ -87,18 +91,23 @@ TEST(SensorExtremesTest, InAirAndFullySealed) {
   const SweepRecord air = Sweep([](double) { return std::array<double, 3>{0.3, 0.3, 0.2}; }, 0.3);
   EXPECT_TRUE(air.finite);
   EXPECT_LT(air.pbar.back(), 5.0);
-  const SweepRecord sealed =
-      Sweep([](double) { return std::array<double, 3>{-0.03, -0.03, kLipPlaneOnPlate}; }, 0.3);
+  const SweepRecord sealed = Sweep(
+      [](double) {
+        return std::array<double, 3>{-0.03, -0.03, kLipPlaneOnPlate};
+      },
+      0.3);
   EXPECT_TRUE(sealed.finite);
   EXPECT_GT(sealed.pbar.back(), 10000.0);
 }
 
 TEST(SensorExtremesTest, SlidingOffACornerIsSmooth) {
   // Diagonally out over the plate's corner at 20 mm/s: 0.125 mm per 160 Hz sample.
-  const SweepRecord r = Sweep([](double s) {
-    const double t = -0.012 + 0.024 * s;
-    return std::array<double, 3>{t, t, kLipPlaneOnPlate};
-  }, 1.2);
+  const SweepRecord r = Sweep(
+      [](double s) {
+        const double t = -0.012 + 0.024 * s;
+        return std::array<double, 3>{t, t, kLipPlaneOnPlate};
+      },
+      1.2);
   EXPECT_TRUE(r.finite);
   EXPECT_GT(r.pbar.front(), 10000.0);
   EXPECT_LT(r.pbar.back(), 5.0);
@@ -107,9 +116,11 @@ TEST(SensorExtremesTest, SlidingOffACornerIsSmooth) {
 
 TEST(SensorExtremesTest, EdgeOfASheetThinnerThanTheSealDistance) {
   // Across the edge of a 0.3 mm sheet (seal distance 0.5 mm) at 20 mm/s; the lip presses 1 mm.
-  const SweepRecord r = Sweep([](double s) {
-    return std::array<double, 3>{0.1 + 0.012 - 0.024 * s, 0.0, kLipPlaneOnPlate};
-  }, 1.2);
+  const SweepRecord r = Sweep(
+      [](double s) {
+        return std::array<double, 3>{0.1 + 0.012 - 0.024 * s, 0.0, kLipPlaneOnPlate};
+      },
+      1.2);
   EXPECT_TRUE(r.finite);
   EXPECT_GT(r.pbar.front(), 10000.0);
   EXPECT_LT(r.pbar.back(), 5.0);
@@ -120,9 +131,11 @@ TEST(SensorExtremesTest, SurfacePassingTheSealDistanceBelowTheLip) {
   // Lowering the cup over the plate from 4 mm above to 1 mm into it at 10 mm/s. The seal
   // distance (2.75 mm) is where a hovering lip's curtain (perimeter x gap) equals the opening's
   // area, so the leak is continuous through it: no step beyond the smooth bound either.
-  const SweepRecord r = Sweep([](double s) {
-    return std::array<double, 3>{-0.03, -0.03, 0.010 + 0.004 - 0.005 * s};
-  }, 0.5);
+  const SweepRecord r = Sweep(
+      [](double s) {
+        return std::array<double, 3>{-0.03, -0.03, 0.010 + 0.004 - 0.005 * s};
+      },
+      0.5);
   EXPECT_TRUE(r.finite);
   EXPECT_LT(r.pbar.front(), 5.0);
   EXPECT_GT(r.pbar.back(), 10000.0);

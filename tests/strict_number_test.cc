@@ -2,7 +2,6 @@
 #include "common/strict_number.h"
 
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <filesystem>
@@ -90,15 +89,23 @@ TEST(CommandLineTest, TypedOptionsKeepDefaultsAndRejectStrayInput) {
   EXPECT_EQ(pref, 100);
   EXPECT_EQ(steps, (std::vector<double>{2.5, 5}));
   EXPECT_EQ(ParseArgs(make(&pref, &steps, &n, &flag).get(),
-                {"--pref", "150", "--step=1,2", "--repeats", "7", "--no-plot"}), -1);
+                      {"--pref", "150", "--step=1,2", "--repeats", "7", "--no-plot"}),
+            -1);
   EXPECT_EQ(pref, 150);
   EXPECT_EQ(steps, (std::vector<double>{1, 2}));
   EXPECT_EQ(n, 7);
   EXPECT_TRUE(flag);
-  for (const std::vector<std::string>& bad : std::vector<std::vector<std::string>>{
-           {"stray"}, {"--pref"}, {"--pref", "0x10"}, {"--pref", "1", "--pref", "2"},
-           {"--repeats", "2.5"}, {"--repeats", "0"}, {"--step", "1,"}, {"--step", "1,1"},
-           {"--unknown", "1"}, {"--pref", ""}}) {
+  for (const std::vector<std::string>& bad :
+       std::vector<std::vector<std::string>>{{"stray"},
+                                             {"--pref"},
+                                             {"--pref", "0x10"},
+                                             {"--pref", "1", "--pref", "2"},
+                                             {"--repeats", "2.5"},
+                                             {"--repeats", "0"},
+                                             {"--step", "1,"},
+                                             {"--step", "1,1"},
+                                             {"--unknown", "1"},
+                                             {"--pref", ""}}) {
     EXPECT_EQ(ParseArgs(make(&pref, &steps, &n, &flag).get(), bad), 2) << bad[0];
   }
 }

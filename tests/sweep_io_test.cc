@@ -23,7 +23,8 @@ const std::string kRow1 =
 const std::string kRow2 =
     "gantry,100,2,7.5,1,12,failure_II,20.1,30.0,-5.0,1.0,0.1,3.0,6.0,0.2,1.0,3.0,40.0,9,8.0,\"x\"";
 const std::string kRow3 =
-    "gantry,150,2,7.5,0,13,success,209.7,32.6,-2.4,0.8,0.7,29.5,7.1,0.3,0.7,2.4,359.8,51,31.0,\"y\"";
+    "gantry,150,2,7.5,0,13,success,209.7,32.6,-2.4,0.8,0.7,29.5,7.1,0.3,0.7,2.4,359.8,51,31.0,"
+    "\"y\"";
 
 class SweepIoTest : public ::testing::Test {
  protected:

@@ -20,9 +20,10 @@ std::string SceneWithTimestep(const std::string& dt) {
   std::ifstream in(SourceDir() + "/scenes/disk_benchmark_gantry.xml");
   std::stringstream buf;
   buf << in.rdbuf();
-  const std::string xml = std::regex_replace(buf.str(), std::regex(R"(timestep="[^"]*")"),
-                                             "timestep=\"" + dt + "\"");
-  const std::string path = SourceDir() + "/scenes/.timestep_test_" + std::to_string(::getpid()) + ".xml";
+  const std::string xml =
+      std::regex_replace(buf.str(), std::regex(R"(timestep="[^"]*")"), "timestep=\"" + dt + "\"");
+  const std::string path =
+      SourceDir() + "/scenes/.timestep_test_" + std::to_string(::getpid()) + ".xml";
   std::ofstream(path) << xml;
   return path;
 }

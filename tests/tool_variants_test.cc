@@ -1,13 +1,13 @@
 #include "studies/tool_variants.h"
 
-#include <filesystem>
-#include <fstream>
-
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "runtime/mujoco_model.h"
+#include <filesystem>
+#include <fstream>
+
 #include "plugin/chamber_pressure_sensor.h"
+#include "runtime/mujoco_model.h"
 
 namespace ssc {
 namespace {
@@ -48,8 +48,8 @@ TEST(ToolVariantsTest, VariantsCompileInMemoryWithTheirConfig) {
   fs::copy_file(SourceDir() + "/models/ur10.xml", dir / "models" / "ur10.xml");
   fs::copy_file(SourceDir() + "/models/ssc_tool.xml", dir / "models" / "ssc_tool.xml");
   std::string error;
-  const auto variants = ToolModelVariants::Read((dir / "scenes" / "disk_benchmark.xml").string(),
-                                                &error);
+  const auto variants =
+      ToolModelVariants::Read((dir / "scenes" / "disk_benchmark.xml").string(), &error);
   ModelPtr from_file = LoadModel((dir / "scenes" / "disk_benchmark.xml").string(), &error);
   fs::remove_all(dir);
   ASSERT_TRUE(variants) << error;

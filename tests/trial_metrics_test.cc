@@ -1,8 +1,8 @@
 #include "controller/pure/trial_metrics.h"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "controller/pure/trial_goal.h"
 #include "controller/pure/trial_outcome.h"
@@ -88,16 +88,17 @@ TEST(TrialOutcomeTest, ClassifiesEachEnd) {
   };
   EXPECT_EQ(cls({100, 0, 0, 100}, 1.5, false, 10), Outcome::kRunning);
   EXPECT_EQ(cls({100, 0, 0, 100}, 1.5, true, 10), Outcome::kSuccess);
-  EXPECT_EQ(cls({1, 2, 3, 4}, 1.5, false, 10), Outcome::kFailureOffEdge);       // mean 2.5 < 5
-  EXPECT_EQ(cls({5, 5, 5, 5}, 1.5, false, 10), Outcome::kRunning);              // mean 5: not below
+  EXPECT_EQ(cls({1, 2, 3, 4}, 1.5, false, 10), Outcome::kFailureOffEdge);  // mean 2.5 < 5
+  EXPECT_EQ(cls({5, 5, 5, 5}, 1.5, false, 10), Outcome::kRunning);         // mean 5: not below
   EXPECT_EQ(cls({20000, 20000, 20000, 20000}, 1.5, false, 10), Outcome::kFailureGrasp);
   EXPECT_EQ(cls({20000, 20000, 20000, 9000}, 1.5, false, 10), Outcome::kRunning);  // not all
-  EXPECT_EQ(cls({100, 0, 0, 100}, 101, true, 10), Outcome::kUnstable);  // before success
+  EXPECT_EQ(cls({100, 0, 0, 100}, 101, true, 10), Outcome::kUnstable);             // before success
   EXPECT_EQ(cls({NAN, 0, 0, 100}, 1.5, false, 10), Outcome::kUnstable);
   EXPECT_EQ(cls({100, 0, 0, 100}, 1.5, false, 101), Outcome::kTimeout);
   // A lost goal ends the trial before success and before the pressure failures.
-  EXPECT_EQ(ClassifySample(t, {20000, 20000, 20000, 20000}, 1.5, GoalStatus::kLost, 10, 100).outcome,
-            Outcome::kLostEdge);
+  EXPECT_EQ(
+      ClassifySample(t, {20000, 20000, 20000, 20000}, 1.5, GoalStatus::kLost, 10, 100).outcome,
+      Outcome::kLostEdge);
   EXPECT_STREQ(OutcomeName(Outcome::kFailureOffEdge), "failure_I");
   EXPECT_STREQ(OutcomeName(Outcome::kFailureGrasp), "failure_II");
   EXPECT_STREQ(OutcomeName(Outcome::kLostEdge), "lost_edge");
@@ -229,8 +230,9 @@ TEST(TrialOutcomeTest, ThresholdsAtTheirEdges) {
   EXPECT_EQ(cls({0, 0, 0, 19.6}), Outcome::kFailureOffEdge);  // the mean decides: 4.9 Pa
   EXPECT_EQ(cls({0, 0, 0, 20.4}), Outcome::kRunning);         // 5.1 Pa
   // Success is checked before the failures: a reached goal on a sealed cup is a success.
-  EXPECT_EQ(ClassifySample(t, {20000, 20000, 20000, 20000}, 1.5, GoalStatus::kReached, 10, 100).outcome,
-            Outcome::kSuccess);
+  EXPECT_EQ(
+      ClassifySample(t, {20000, 20000, 20000, 20000}, 1.5, GoalStatus::kReached, 10, 100).outcome,
+      Outcome::kSuccess);
 }
 
 TEST(TrialGoalTest, LoopIsReachedAt355DegreesNotBefore) {

@@ -1,22 +1,21 @@
 // Contour-following trials on the disk benchmark: controller outcomes of the published
 // experiments, forced failures, and the control-callback dispatch.
+#include "runtime/trial.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <thread>
-
-#include <unistd.h>
-
-#include <gtest/gtest.h>
 
 #include "runtime/control_dispatch.h"
 #include "runtime/mujoco_model.h"
 #include "studies/sweep.h"
-#include "runtime/trial.h"
 #include "studies/trial_io.h"
-
-#include <nlohmann/json.hpp>
 
 namespace ssc {
 namespace {
@@ -112,7 +111,7 @@ TEST(TrialTest, StartingOffTheObjectIsFailureOne) {
 TEST(TrialTest, PushedOntoTheSurfaceIsFailureTwo) {
   TrialConfig c;
   c.target.start = {0.65, 0.0};  // stay on the disk centre: the cup seals
-  c.target.goal.band_m = 0;  // under test: the pressure failure, not the band of following
+  c.target.goal.band_m = 0;      // under test: the pressure failure, not the band of following
   const TrialResult r = Trial(100, 2.0, 2.5, 1, c);
   EXPECT_EQ(r.outcome, Outcome::kFailureGrasp) << r.detail;
   EXPECT_NE(r.detail.find("all chambers above 10000 Pa"), std::string::npos) << r.detail;
@@ -193,7 +192,8 @@ TEST(TrialIoTest, SummaryJsonEscapesTextAndRoundTrips) {
 }
 
 TEST(SweepTest, ParallelSweepGivesTheSameRowsAsSerialAndResumes) {
-  const auto dir = std::filesystem::temp_directory_path() / ("ssc_sweep_" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("ssc_sweep_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   SweepSpec spec;
   spec.scene_name = "disk_benchmark_gantry";
@@ -243,8 +243,12 @@ TEST(ControlDispatchTest, EachDataReachesItsOwnControllerAcrossThreads) {
   {
     ScopedControl ra(a, &ca), rb(b, &cb);
     ASSERT_TRUE(ra.ok() && rb.ok());
-    std::thread ta([&] { for (int i = 0; i < 200; ++i) mj_step(m, a); });
-    std::thread tb([&] { for (int i = 0; i < 300; ++i) mj_step(m, b); });
+    std::thread ta([&] {
+      for (int i = 0; i < 200; ++i) mj_step(m, a);
+    });
+    std::thread tb([&] {
+      for (int i = 0; i < 300; ++i) mj_step(m, b);
+    });
     ta.join();
     tb.join();
     for (int i = 0; i < 50; ++i) mj_step(m, none);

@@ -1,12 +1,12 @@
 // The UR-10 model: kinematics against the published DH numbers, and the position servos
 // holding a Cartesian pose when still.
-#include <cmath>
-
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "geometry/dimensions.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/trial.h"
-#include "geometry/dimensions.h"
 
 namespace ssc {
 namespace {

@@ -1,17 +1,18 @@
 // Scoring a published success map (studies/map_scores.h) and `ssc validate`'s study
 // (studies/validation.h) on maps whose scores are known.
+#include "studies/validation.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <random>
 
-#include <gtest/gtest.h>
-#include <unistd.h>
-
 #include "runtime/mujoco_model.h"
 #include "studies/map_scores.h"
-#include "studies/validation.h"
 
 namespace ssc {
 namespace {
@@ -55,10 +56,10 @@ TEST(MapScoresTest, ASyntheticMapScoresAsComputedByHand) {
                                       {5, 4, 100, MapClass::kAtMostOne}};
   const std::string S = "success", I = "failure_I", II = "failure_II";
   std::vector<CellTrials> trials(4);
-  trials[0].outcomes = {S, S, S, S};          // p 1: class 3 = published, agreement 1
+  trials[0].outcomes = {S, S, S, S};                     // p 1: class 3 = published, agreement 1
   trials[1].outcomes = {S, S, S, S, S, S, S, S, S, II};  // p 0.9 vs <=1: opposite
-  trials[2].outcomes = {S, I, S, I};          // first 3: 2 of 3 = published; p 0.5: 0.375
-  trials[3].outcomes = {S, I, II, II};        // class <=1 = published; p 0.25
+  trials[2].outcomes = {S, I, S, I};    // first 3: 2 of 3 = published; p 0.5: 0.375
+  trials[3].outcomes = {S, I, II, II};  // class <=1 = published; p 0.25
   MapScore score;
   std::string error;
   ASSERT_TRUE(ScoreMap(cells, trials, &score, &error)) << error;
@@ -134,14 +135,14 @@ TEST(ValidationStudyTest, ATinyMapGetsTheKnownScores) {
   std::string error;
   ModelPtr model = LoadModel(SourceDir() + "/scenes/disk_benchmark_gantry.xml", &error);
   ASSERT_TRUE(model) << error;
-  const std::string dir =
-      (std::filesystem::temp_directory_path() / ("ssc_validation_test_" + std::to_string(::getpid())))
-          .string();
+  const std::string dir = (std::filesystem::temp_directory_path() /
+                           ("ssc_validation_test_" + std::to_string(::getpid())))
+                              .string();
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   ValidateSpec spec;
-  spec.map_path = WriteFile("ssc_tiny_map.csv",
-                            "step_mm,beta,pref_pa,successes_of_3\n5,2,100,3\n5,0,100,3\n");
+  spec.map_path =
+      WriteFile("ssc_tiny_map.csv", "step_mm,beta,pref_pa,successes_of_3\n5,2,100,3\n5,0,100,3\n");
   spec.scene_name = "disk_benchmark_gantry";
   ASSERT_TRUE(ParseRobotEffects("off", &spec.base.effects, &error));
   spec.base.control_period_s = 0.15;

@@ -1,14 +1,14 @@
 // The wander calibration's machinery on a tiny budget: trials run with the candidate sensor
 // chain, the reported cost is the objective of the reported model, and Nelder-Mead improves on
 // its initial simplex.
-#include <cmath>
-#include <filesystem>
-
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "studies/dynamic_calibration.h"
+#include <cmath>
+#include <filesystem>
+
 #include "runtime/mujoco_model.h"
+#include "studies/dynamic_calibration.h"
 
 namespace ssc {
 namespace {
@@ -18,10 +18,12 @@ TEST(WanderFitTest, FitsOnATinyBudgetAndImprovesOnTheInitialSimplex) {
   std::string error;
   WanderFit start, fit;
   // Budget 1: only the initial simplex is evaluated.
-  ASSERT_TRUE(FitWander(SourceDir() + "/scenes/disk_benchmark_gantry.xml", targets, 5.0, 1,
-                        1, 6.0, 20.0, &start, &error)) << error;
-  ASSERT_TRUE(FitWander(SourceDir() + "/scenes/disk_benchmark_gantry.xml", targets, 5.0, 1,
-                        6, 6.0, 20.0, &fit, &error)) << error;
+  ASSERT_TRUE(FitWander(SourceDir() + "/scenes/disk_benchmark_gantry.xml", targets, 5.0, 1, 1, 6.0,
+                        20.0, &start, &error))
+      << error;
+  ASSERT_TRUE(FitWander(SourceDir() + "/scenes/disk_benchmark_gantry.xml", targets, 5.0, 1, 6, 6.0,
+                        20.0, &fit, &error))
+      << error;
   ASSERT_EQ(fit.model.size(), 1u);
   EXPECT_TRUE(std::isfinite(fit.model[0].sigma_r_mm) && std::isfinite(fit.model[0].s_c));
   EXPECT_GT(fit.noise_pa, 0);

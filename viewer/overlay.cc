@@ -108,8 +108,8 @@ void PressureFigures::Reset() {
   pressures_.flg_extend = 0;  // fixed decades; Add() sets the time range
   const char* names[8] = {"P1 SE", "P2 NE", "P3 NW", "P4 SW", "mean", "P_n", "P_ref", "P_g"};
   for (int i = 0; i < 8; ++i) std::snprintf(pressures_.linename[i], 100, "%s", names[i]);
-  const float colours[8][3] = {{1, 0.3f, 0.3f}, {0.3f, 1, 0.3f}, {0.4f, 0.6f, 1}, {1, 1, 0.3f},
-                               {1, 1, 1},      {0.6f, 0.6f, 0.6f}, {0, 1, 1}, {1, 0, 1}};
+  const float colours[8][3] = {{1, 0.3f, 0.3f}, {0.3f, 1, 0.3f},    {0.4f, 0.6f, 1}, {1, 1, 0.3f},
+                               {1, 1, 1},       {0.6f, 0.6f, 0.6f}, {0, 1, 1},       {1, 0, 1}};
   for (int i = 0; i < 8; ++i)
     for (int k = 0; k < 3; ++k) pressures_.linergb[i][k] = colours[i][k];
   std::snprintf(correction_.title, sizeof(correction_.title), "correction factor c_f");
@@ -174,9 +174,11 @@ std::string TrialStatusText(const ContourTrial& trial, const OverlayValues& v, d
   char sealed[160] = "sealed area: (no sample yet)";
   if (sample && sample->time_s >= 0) {
     const double quarter = sensor->config().geometry.ChamberOpeningArea();
-    std::snprintf(sealed, sizeof(sealed), "sealed area  1 SE %3.0f%%  2 NE %3.0f%%  3 NW %3.0f%%  4 SW %3.0f%%",
-                  100 * sample->sealed_area_m2[0] / quarter, 100 * sample->sealed_area_m2[1] / quarter,
-                  100 * sample->sealed_area_m2[2] / quarter, 100 * sample->sealed_area_m2[3] / quarter);
+    std::snprintf(
+        sealed, sizeof(sealed),
+        "sealed area  1 SE %3.0f%%  2 NE %3.0f%%  3 NW %3.0f%%  4 SW %3.0f%%",
+        100 * sample->sealed_area_m2[0] / quarter, 100 * sample->sealed_area_m2[1] / quarter,
+        100 * sample->sealed_area_m2[2] / quarter, 100 * sample->sealed_area_m2[3] / quarter);
   }
   char timing[96];
   if (rtf >= 0) {
@@ -195,10 +197,10 @@ std::string TrialStatusText(const ContourTrial& trial, const OverlayValues& v, d
                 "iterations %d   swept %.0f deg   path points %zu\n"
                 "%s\n"
                 "%s",
-                c.law.p_ref_pa, c.law.beta, c.law.step_mm,
-                static_cast<unsigned long long>(c.seed), PhaseName(v.phase), OutcomeName(r.outcome),
-                v.p_pa[0], v.p_pa[1], v.p_pa[2], v.p_pa[3], v.mean_pa, v.dpx_pa, v.dpy_pa, v.cf,
-                v.iterations, trial.phase() == TrialPhase::kDone ? r.swept_deg : trial.swept_deg(),
+                c.law.p_ref_pa, c.law.beta, c.law.step_mm, static_cast<unsigned long long>(c.seed),
+                PhaseName(v.phase), OutcomeName(r.outcome), v.p_pa[0], v.p_pa[1], v.p_pa[2],
+                v.p_pa[3], v.mean_pa, v.dpx_pa, v.dpy_pa, v.cf, v.iterations,
+                trial.phase() == TrialPhase::kDone ? r.swept_deg : trial.swept_deg(),
                 trial.path().size(), sealed, timing);
   return buf;
 }

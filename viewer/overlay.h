@@ -3,13 +3,13 @@
 #ifndef SSC_VIEWER_OVERLAY_H_
 #define SSC_VIEWER_OVERLAY_H_
 
+#include <mujoco/mujoco.h>
+
 #include <array>
 #include <string>
 
-#include <mujoco/mujoco.h>
-
-#include "runtime/trial.h"
 #include "plugin/chamber_pressure_sensor.h"
+#include "runtime/trial.h"
 
 namespace ssc {
 

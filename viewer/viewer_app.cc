@@ -72,19 +72,43 @@ void OnKey(GLFWwindow* w, int key, int, int action, int) {
   auto* s = static_cast<Session*>(glfwGetWindowUserPointer(w));
   ContourLawParams& law = s->trial->mutable_config().law;
   switch (key) {
-    case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(w, 1); break;
-    case GLFW_KEY_SPACE: s->paused = !s->paused; break;
-    case GLFW_KEY_RIGHT: s->step_once = true; break;
-    case GLFW_KEY_MINUS: s->speed = std::max(1.0 / 64, s->speed / 2); break;
-    case GLFW_KEY_EQUAL: s->speed = std::min(64.0, s->speed * 2); break;
+    case GLFW_KEY_ESCAPE:
+      glfwSetWindowShouldClose(w, 1);
+      break;
+    case GLFW_KEY_SPACE:
+      s->paused = !s->paused;
+      break;
+    case GLFW_KEY_RIGHT:
+      s->step_once = true;
+      break;
+    case GLFW_KEY_MINUS:
+      s->speed = std::max(1.0 / 64, s->speed / 2);
+      break;
+    case GLFW_KEY_EQUAL:
+      s->speed = std::min(64.0, s->speed * 2);
+      break;
     case GLFW_KEY_BACKSPACE:
-    case GLFW_KEY_R: Restart(s); break;
-    case GLFW_KEY_P: law.p_ref_pa = std::min(law.p_grasp_pa * 0.9, law.p_ref_pa * 1.25); break;
-    case GLFW_KEY_O: law.p_ref_pa = std::max(law.p_noise_pa * 1.1, law.p_ref_pa / 1.25); break;
-    case GLFW_KEY_B: law.beta = std::min(100.0, law.beta + 0.5); break;
-    case GLFW_KEY_V: law.beta = std::max(0.0, law.beta - 0.5); break;
-    case GLFW_KEY_L: law.step_mm = std::min(100.0, law.step_mm + 0.5); break;
-    case GLFW_KEY_K: law.step_mm = std::max(0.5, law.step_mm - 0.5); break;
+    case GLFW_KEY_R:
+      Restart(s);
+      break;
+    case GLFW_KEY_P:
+      law.p_ref_pa = std::min(law.p_grasp_pa * 0.9, law.p_ref_pa * 1.25);
+      break;
+    case GLFW_KEY_O:
+      law.p_ref_pa = std::max(law.p_noise_pa * 1.1, law.p_ref_pa / 1.25);
+      break;
+    case GLFW_KEY_B:
+      law.beta = std::min(100.0, law.beta + 0.5);
+      break;
+    case GLFW_KEY_V:
+      law.beta = std::max(0.0, law.beta - 0.5);
+      break;
+    case GLFW_KEY_L:
+      law.step_mm = std::min(100.0, law.step_mm + 0.5);
+      break;
+    case GLFW_KEY_K:
+      law.step_mm = std::max(0.5, law.step_mm - 0.5);
+      break;
     case GLFW_KEY_T:  // arm overview -> cup close-up -> free camera -> overview
       if (s->tracking && !s->close_up && s->arm_base_body >= 0) {
         s->close_up = true;
@@ -95,8 +119,11 @@ void OnKey(GLFWwindow* w, int key, int, int action, int) {
         s->close_up = false;
       }
       break;
-    case GLFW_KEY_F1: s->help = !s->help; break;
-    default: break;
+    case GLFW_KEY_F1:
+      s->help = !s->help;
+      break;
+    default:
+      break;
   }
 }
 
@@ -139,7 +166,8 @@ void Render(Session* s, mjrRect viewport, double rtf) {
   // top left.
   const int fw = viewport.width * 3 / 8, fh = viewport.height * 5 / 9;
   const int ch = viewport.height - fh;
-  mjrRect top = {viewport.left + viewport.width - fw, viewport.bottom + viewport.height - fh, fw, fh};
+  mjrRect top = {viewport.left + viewport.width - fw, viewport.bottom + viewport.height - fh, fw,
+                 fh};
   mjrRect below = {top.left, viewport.bottom, fw, std::min(ch, viewport.height / 3)};
   mjr_figure(top, &s->figures.pressures(), &s->con);
   mjr_figure(below, &s->figures.correction(), &s->con);
@@ -162,7 +190,8 @@ void StepOnce(Session* s) {
   }
 }
 
-bool WritePng(const std::string& path, int width, int height, const std::vector<unsigned char>& rgb) {
+bool WritePng(const std::string& path, int width, int height,
+              const std::vector<unsigned char>& rgb) {
   // OpenGL rows run bottom-up; PNG rows top-down.
   std::vector<unsigned char> flipped(rgb.size());
   const size_t row = static_cast<size_t>(width) * 3;
@@ -180,8 +209,9 @@ void ListScenes() {
   for (const auto& e : std::filesystem::directory_iterator(SourceDir() + "/scenes", ec)) {
     if (e.path().extension() == ".xml") std::printf(" %s", e.path().stem().c_str());
   }
-  std::printf("\ntest objects by name: disk_d02..disk_d14, disk_r35, hole_d02..hole_d14, "
-              "corner_aNNN, volute, semicircle_strip, semisquare_strip, fillet\n");
+  std::printf(
+      "\ntest objects by name: disk_d02..disk_d14, disk_r35, hole_d02..hole_d14, "
+      "corner_aNNN, volute, semicircle_strip, semisquare_strip, fillet\n");
 }
 
 }  // namespace
@@ -189,8 +219,9 @@ void ListScenes() {
 int RunViewer(const ViewerOptions& options) {
   const char* display = std::getenv("DISPLAY");
   if (display == nullptr || display[0] == '\0') {
-    std::fprintf(stderr, "ssc view: no display (DISPLAY is not set); for a screenshot on a "
-                         "headless machine run: xvfb-run -a ssc view --screenshot FILE.png\n");
+    std::fprintf(stderr,
+                 "ssc view: no display (DISPLAY is not set); for a screenshot on a "
+                 "headless machine run: xvfb-run -a ssc view --screenshot FILE.png\n");
     return 3;
   }
   if (!glfwInit()) {
@@ -266,8 +297,8 @@ int RunViewer(const ViewerOptions& options) {
     } else {
       const mjtNum* p = s->d->site_xpos + 3 * s->tool_site;
       std::printf("wrote %s (%dx%d) at t = %.4f s; phase %s; tool at %.9f %.9f %.9f m\n",
-                  options.screenshot.c_str(), w, h, s->d->time, PhaseName(s->trial->phase()),
-                  p[0], p[1], p[2]);
+                  options.screenshot.c_str(), w, h, s->d->time, PhaseName(s->trial->phase()), p[0],
+                  p[1], p[2]);
       std::printf("%s\n", OverlayValuesLine(CurrentOverlayValues(*s->trial, s->d)).c_str());
     }
   } else {

@@ -11,11 +11,11 @@ namespace ssc {
 
 struct ViewerOptions {
   std::string scene_path;
-  TrialConfig config;         // the trial the controller runs
-  std::string screenshot;     // non-empty: render off-screen after `time_s` and exit
-  double time_s = 5.0;        // simulated seconds before the screenshot
+  TrialConfig config;      // the trial the controller runs
+  std::string screenshot;  // non-empty: render off-screen after `time_s` and exit
+  double time_s = 5.0;     // simulated seconds before the screenshot
   int width = 1280, height = 720;
-  double speed = 1.0;         // simulated seconds per wall second (slow motion < 1)
+  double speed = 1.0;  // simulated seconds per wall second (slow motion < 1)
 };
 
 // Returns the process exit code. Without a display: one line on stderr and exit code 3.

@@ -7,14 +7,14 @@
 
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
-#include "calibration/pneumatic_fit.h"
-#include "studies/dynamic_calibration.h"
-#include "studies/success_map_fit.h"
-#include "studies/validation.h"
 #include "apps/ssc/trial_options.h"
+#include "calibration/pneumatic_fit.h"
 #include "controller/pure/robot_effects.h"
 #include "runtime/mujoco_model.h"
+#include "studies/dynamic_calibration.h"
+#include "studies/success_map_fit.h"
 #include "studies/tool_variants.h"
+#include "studies/validation.h"
 
 namespace ssc {
 
@@ -31,13 +31,15 @@ int RunCalibrateCommand(int argc, char** argv) {
   long seeds = 2, evals = 30;
   bool wander = false;
   std::string out_dir = "out/calibrate";
-  cmd.Number("start-scale", &scale, "multiply the four starting values by this (tests the fit)",
-             "", NumberRange::Closed(1e-3, 1e3));
-  cmd.Flag("wander", &wander, "also fit sensor noise and lag to the published sigma_r and s_c vs "
-                              "beta (disk trials; about a minute)");
+  cmd.Number("start-scale", &scale, "multiply the four starting values by this (tests the fit)", "",
+             NumberRange::Closed(1e-3, 1e3));
+  cmd.Flag("wander", &wander,
+           "also fit sensor noise and lag to the published sigma_r and s_c vs "
+           "beta (disk trials; about a minute)");
   cmd.Number("wander-step", &wander_step, "step dL of the wander trials (not published)", "mm",
              NumberRange::Positive(100));
-  cmd.Integer("wander-seeds", &seeds, "trials per beta per evaluation", NumberRange::Closed(1, 100));
+  cmd.Integer("wander-seeds", &seeds, "trials per beta per evaluation",
+              NumberRange::Closed(1, 100));
   cmd.Integer("wander-evals", &evals, "Nelder-Mead evaluations for the wander fit",
               NumberRange::Closed(3, 10000));
   bool dynamic = false;
@@ -50,8 +52,15 @@ int RunCalibrateCommand(int argc, char** argv) {
   cmd.Flag("dynamic", &dynamic,
            "fit the real loop and the robot effects (docs/fidelity.md) to the published success "
            "map at dL 5 mm and the Fig. 6 targets, on the gantry scene; skips the static fit");
-  cmd.Text("dynamic-keys", &dyn_keys, "comma-separated parameters to fit (" +
-           [] { std::string s; for (const auto& p : DynamicParameters()) s += std::string(s.empty() ? "" : ", ") + p.key + " [" + std::to_string(p.min).substr(0, 4) + ", " + std::to_string(p.max).substr(0, 4) + "] " + p.unit; return s; }() + ")");
+  cmd.Text(
+      "dynamic-keys", &dyn_keys, "comma-separated parameters to fit (" + [] {
+        std::string s;
+        for (const auto& p : DynamicParameters())
+          s += std::string(s.empty() ? "" : ", ") + p.key + " [" +
+               std::to_string(p.min).substr(0, 4) + ", " + std::to_string(p.max).substr(0, 4) +
+               "] " + p.unit;
+        return s;
+      }() + ")");
   cmd.Integer("dynamic-evals", &dyn_evals, "evaluation budget (each runs seeds x cells trials)",
               NumberRange::Closed(1, 100000));
   cmd.Integer("dynamic-seeds", &dyn_seeds, "trials per cell per evaluation (common seeds)",
@@ -95,11 +104,14 @@ int RunCalibrateCommand(int argc, char** argv) {
     const std::filesystem::path out = out_dir;
     std::ofstream evals_log(out / "dynamic_evals.txt");
     DynamicFitResult fit;
-    if (!FitDynamic(model.get(), spec, [&](const std::string& line) {
-          std::printf("%s\n", line.c_str());
-          std::fflush(stdout);
-          evals_log << line << '\n' << std::flush;
-        }, &fit, &error)) {
+    if (!FitDynamic(
+            model.get(), spec,
+            [&](const std::string& line) {
+              std::printf("%s\n", line.c_str());
+              std::fflush(stdout);
+              evals_log << line << '\n' << std::flush;
+            },
+            &fit, &error)) {
       std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
       return 1;
     }
@@ -163,12 +175,16 @@ int RunCalibrateCommand(int argc, char** argv) {
       std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
       return 1;
     }
-    std::printf("\nwander fit (dL %.1f mm, %ld seeds, %d evaluations): noise_pa %.3g, lag_ms %.3g, "
-                "cost %.3g\n", step, seeds, w.evaluations, w.noise_pa, w.lag_ms, w.cost);
+    std::printf(
+        "\nwander fit (dL %.1f mm, %ld seeds, %d evaluations): noise_pa %.3g, lag_ms %.3g, "
+        "cost %.3g\n",
+        step, seeds, w.evaluations, w.noise_pa, w.lag_ms, w.cost);
     std::printf("%6s %18s %18s\n", "beta", "sigma_r mm (pub)", "s_c (pub)");
     for (size_t i = 0; i < targets.size(); ++i) {
       std::printf("%6.1f %8.2f (%5s) %8.3f (%5.2f)\n", targets[i].beta, w.model[i].sigma_r_mm,
-                  targets[i].sigma_r_mm >= 0 ? std::to_string(targets[i].sigma_r_mm).substr(0, 4).c_str() : "-",
+                  targets[i].sigma_r_mm >= 0
+                      ? std::to_string(targets[i].sigma_r_mm).substr(0, 4).c_str()
+                      : "-",
                   w.model[i].s_c, targets[i].s_c);
     }
     // The calibrated tool model with the sensor chain's fit too.

@@ -16,8 +16,8 @@
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
 #include "runtime/mujoco_model.h"
-#include "studies/sweep.h"
 #include "studies/fidelity_table.h"
+#include "studies/sweep.h"
 
 namespace ssc {
 
@@ -34,7 +34,8 @@ int RunChartsCommand(int argc, char** argv) {
   spec.step_mm = {1, 2.5, 5, 7.5, 10, 12.5};
   long repeats = 3, threads = std::max(1u, std::thread::hardware_concurrency());
   std::string out_dir = "out/charts";
-  cmd.NumberList("pref", &spec.pref_pa, "P_ref values", "Pa", NumberRange::Positive(1e6).OpenHigh());
+  cmd.NumberList("pref", &spec.pref_pa, "P_ref values", "Pa",
+                 NumberRange::Positive(1e6).OpenHigh());
   cmd.NumberList("beta", &spec.beta, "beta values", "", NumberRange::Closed(0, 100));
   cmd.NumberList("step", &spec.step_mm, "step lengths", "mm", NumberRange::Positive(100));
   cmd.Integer("repeats", &repeats, "trials per point", NumberRange::Closed(1, 1000));

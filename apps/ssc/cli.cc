@@ -1,15 +1,14 @@
 #include "apps/ssc/cli.h"
 
+#include <mujoco/mujoco.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <system_error>
-
-#include <CLI/CLI.hpp>
-#include <mujoco/mujoco.h>
 
 #ifndef SSC_VERSION
 #define SSC_VERSION "unknown"
@@ -35,8 +34,8 @@ bool PrepareOutputDir(const std::string& dir, std::string* error) {
   }
   fs::create_directories(p, ec);
   if (ec || !fs::is_directory(p)) {
-    *error = "cannot create directory '" + dir + "': " +
-             (ec ? ec.message() : std::string("not a directory"));
+    *error = "cannot create directory '" + dir +
+             "': " + (ec ? ec.message() : std::string("not a directory"));
     return false;
   }
   if (access(dir.c_str(), W_OK | X_OK) != 0) {
@@ -129,8 +128,8 @@ void Command::Seed(const std::string& name, std::uint64_t* target, const std::st
 }
 
 void Command::NumberList(const std::string& name, std::vector<double>* target,
-                         const std::string& help, const std::string& unit,
-                         const NumberRange& range, bool allow_repeats) {
+                         const std::string& help, const std::string& unit, const NumberRange& range,
+                         bool allow_repeats) {
   std::string def;
   for (double v : *target) def += (def.empty() ? "" : ",") + FormatNumber(v);
   AddValue(name,
@@ -138,16 +137,15 @@ void Command::NumberList(const std::string& name, std::vector<double>* target,
                range.ToString(),
            "LIST", def);
   std::string* text = &texts_.back();
-  converters_.push_back(
-      [this, name, text, target, range, allow_repeats](std::string* error) {
-        if (!Given(name)) return true;
-        std::string e;
-        if (!ParseNumberList(*text, range, !allow_repeats, target, &e)) {
-          *error = "--" + name + ": " + e;
-          return false;
-        }
-        return true;
-      });
+  converters_.push_back([this, name, text, target, range, allow_repeats](std::string* error) {
+    if (!Given(name)) return true;
+    std::string e;
+    if (!ParseNumberList(*text, range, !allow_repeats, target, &e)) {
+      *error = "--" + name + ": " + e;
+      return false;
+    }
+    return true;
+  });
 }
 
 void Command::Text(const std::string& name, std::string* target, const std::string& help) {

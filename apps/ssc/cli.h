@@ -75,15 +75,15 @@ class Command {
   const std::string& name() const { return name_; }
 
  private:
-  CLI::Option* AddValue(const std::string& name, const std::string& help,
-                        const std::string& type, const std::string& default_text);
+  CLI::Option* AddValue(const std::string& name, const std::string& help, const std::string& type,
+                        const std::string& default_text);
 
   std::string name_;
   std::unique_ptr<CLI::App> app_;
   std::deque<std::string> texts_;  // raw text of value options (stable addresses)
   std::vector<std::function<bool(std::string*)>> converters_;  // run in order after parsing
   std::vector<std::function<std::string()>> checks_;           // then these
-  std::vector<std::function<bool(std::string*)>> outputs_;      // then the output locations
+  std::vector<std::function<bool(std::string*)>> outputs_;     // then the output locations
 };
 
 }  // namespace ssc::cli

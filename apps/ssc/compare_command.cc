@@ -62,8 +62,8 @@ int RunCompareCommand(int argc, char** argv) {
   cmd.Check([&o]() -> std::string {
     if (o.object_pose.empty()) return "";
     if (o.object_pose.size() != 3 && o.object_pose.size() != 4) {
-      return "--object-pose takes x,y,z or x,y,z,yaw (got " +
-             std::to_string(o.object_pose.size()) + " numbers)";
+      return "--object-pose takes x,y,z or x,y,z,yaw (got " + std::to_string(o.object_pose.size()) +
+             " numbers)";
     }
     for (int k = 0; k < 3; ++k) {
       if (std::fabs(o.object_pose[k]) > 5) {
@@ -96,28 +96,31 @@ int RunCompareCommand(int argc, char** argv) {
     std::printf("chamber %d: RMS %.1f Pa (%.3f in log10), correlation %.3f, mean ratio %.3f\n",
                 k + 1, c.rms_pa[k], c.rms_log10[k], c.correlation[k], c.mean_ratio[k]);
   }
-  std::printf("mean P: RMS %.1f Pa, bias %.1f Pa; direction error RMS %.1f deg (median %.1f, "
-              "%d samples)\n", c.pbar_rms_pa, c.pbar_bias_pa, c.direction_rms_deg,
-              c.direction_median_deg, c.direction_samples);
+  std::printf(
+      "mean P: RMS %.1f Pa, bias %.1f Pa; direction error RMS %.1f deg (median %.1f, "
+      "%d samples)\n",
+      c.pbar_rms_pa, c.pbar_bias_pa, c.direction_rms_deg, c.direction_median_deg,
+      c.direction_samples);
   if (r.history.ran) {
     const HistoryComparison& h = r.history;
-    std::printf("history: %d iterations (log time = history + %.3f s, %.2f mm); r_p median "
-                "%.1f deg, r_p_final %.1f deg, F_normal RMS %.2f N, P1 RMS %.1f Pa\n",
-                h.iterations, h.time_offset_s, h.match_rms_mm, h.r_p_median_deg,
-                h.r_p_final_median_deg, h.f_normal_rms_n, h.p_rms_pa[0]);
+    std::printf(
+        "history: %d iterations (log time = history + %.3f s, %.2f mm); r_p median "
+        "%.1f deg, r_p_final %.1f deg, F_normal RMS %.2f N, P1 RMS %.1f Pa\n",
+        h.iterations, h.time_offset_s, h.match_rms_mm, h.r_p_median_deg, h.r_p_final_median_deg,
+        h.f_normal_rms_n, h.p_rms_pa[0]);
   } else if (!r.history_warning.empty()) {
     std::fprintf(stderr, "ssc compare: warning: history not compared: %s\n",
                  r.history_warning.c_str());
   }
   if (r.closed.ran) {
     const ClosedLoopComparison& cl = r.closed;
-    std::printf("closed loop (%s): twin %s; dr %.2f vs %.2f mm (log), sigma_r %.2f vs %.2f mm, "
-                "s_c %.3f vs %.3f, duration %.1f vs %.1f s; path distance mean %.2f, max %.2f "
-                "mm\n",
-                cl.parameters.c_str(), cl.twin_outcome.c_str(), cl.twin.dr_mm, cl.log.dr_mm,
-                cl.twin.sigma_r_mm, cl.log.sigma_r_mm, cl.twin.s_c, cl.log.s_c,
-                cl.twin.duration_s, cl.log.duration_s, cl.path_distance_mean_mm,
-                cl.path_distance_max_mm);
+    std::printf(
+        "closed loop (%s): twin %s; dr %.2f vs %.2f mm (log), sigma_r %.2f vs %.2f mm, "
+        "s_c %.3f vs %.3f, duration %.1f vs %.1f s; path distance mean %.2f, max %.2f "
+        "mm\n",
+        cl.parameters.c_str(), cl.twin_outcome.c_str(), cl.twin.dr_mm, cl.log.dr_mm,
+        cl.twin.sigma_r_mm, cl.log.sigma_r_mm, cl.twin.s_c, cl.log.s_c, cl.twin.duration_s,
+        cl.log.duration_s, cl.path_distance_mean_mm, cl.path_distance_max_mm);
   }
   const std::filesystem::path out = o.out_dir;
   std::printf("wrote %s\n", (out / "report.md").c_str());

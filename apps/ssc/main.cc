@@ -41,8 +41,9 @@ const Command kCommands[] = {
 };
 
 void PrintUsage() {
-  std::printf("usage: ssc <command> [options]   (ssc <command> --help for its options)\n"
-              "       ssc --version\n\n");
+  std::printf(
+      "usage: ssc <command> [options]   (ssc <command> --help for its options)\n"
+      "       ssc --version\n\n");
   std::printf("Smart Suction Cup digital twin (MuJoCo %s).\n\ncommands:\n", mj_versionString());
   for (const Command& c : kCommands) std::printf("  %-10s %s\n", c.name, c.summary);
 }

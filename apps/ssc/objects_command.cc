@@ -61,8 +61,7 @@ int RunObjectsCommand(int argc, char** argv) {
     return 1;
   }
   const std::filesystem::path out = out_dir;
-  std::printf("wrote %zu objects' scenes into %s\n", spec.objects.size(),
-              (out / "scenes").c_str());
+  std::printf("wrote %zu objects' scenes into %s\n", spec.objects.size(), (out / "scenes").c_str());
   if (write_only) return 0;
   std::printf("wrote %s\n", summary.table_csv.c_str());
   if (!summary.fillet_line.empty()) {

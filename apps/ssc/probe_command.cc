@@ -12,10 +12,11 @@
 namespace ssc {
 
 int RunProbe(int argc, char** argv) {
-  cli::Command cmd("probe",
-                   "Moves the cup kinematically (mocap, no arm) across a straight edge and around a\n"
-                   "35 mm disk at a fixed inset, and writes edge.csv, disk.csv and probe.png: chamber\n"
-                   "pressures, mean P, differentials and the direction the reference formulas give.");
+  cli::Command cmd(
+      "probe",
+      "Moves the cup kinematically (mocap, no arm) across a straight edge and around a\n"
+      "35 mm disk at a fixed inset, and writes edge.csv, disk.csv and probe.png: chamber\n"
+      "pressures, mean P, differentials and the direction the reference formulas give.");
   std::string scene_name = "probe_edge", out_dir = "out/probe", note;
   double from = -6, to = 7, step = 0.25, compression = 1.0, settle = 0.1, inset = 2.5,
          disk_step = 15;
@@ -36,7 +37,8 @@ int RunProbe(int argc, char** argv) {
   cmd.Text("seed-note", &note, "free text copied to the console (for logs)");
   cmd.Flag("no-plot", &no_plot, "skip the PNG plot");
   cmd.Check([&]() -> std::string {
-    if (to < from) return "--to (" + FormatNumber(to) + ") must be >= --from (" + FormatNumber(from) + ")";
+    if (to < from)
+      return "--to (" + FormatNumber(to) + ") must be >= --from (" + FormatNumber(from) + ")";
     if ((to - from) / step > 100000) return "--from/--to/--step give more than 100000 placements";
     return "";
   });
@@ -58,18 +60,24 @@ int RunProbe(int argc, char** argv) {
   spec.disk_step_deg = disk_step;
   spec.out_dir = out_dir;
   std::printf("straight edge (cup centre inside the edge by offset):\n");
-  std::printf("  offset_mm    pbar_pa   |dP|_pa  travel_deg  (travel 90 = along the edge, north)\n");
+  std::printf(
+      "  offset_mm    pbar_pa   |dP|_pa  travel_deg  (travel 90 = along the edge, north)\n");
   ProbeStudyResult result;
-  const bool ok = RunProbeStudy(probe.get(), spec, [](double off, const ProbeReading& r) {
-    std::printf("  %8.2f %10.2f %9.2f %10.1f\n", off, r.pbar_pa, std::hypot(r.dpx_pa, r.dpy_pa),
-                r.travel_world_rad * 180 / M_PI);
-  }, &result, &error);
+  const bool ok = RunProbeStudy(
+      probe.get(), spec,
+      [](double off, const ProbeReading& r) {
+        std::printf("  %8.2f %10.2f %9.2f %10.1f\n", off, r.pbar_pa, std::hypot(r.dpx_pa, r.dpy_pa),
+                    r.travel_world_rad * 180 / M_PI);
+      },
+      &result, &error);
   if (!ok) {
     std::fprintf(stderr, "ssc probe: %s\n", error.c_str());
     return 1;
   }
-  std::printf("disk (radius 35 mm, inset %.2f mm): worst direction error vs the CCW tangent "
-              "%.1f deg\n", inset, result.worst_direction_deg);
+  std::printf(
+      "disk (radius 35 mm, inset %.2f mm): worst direction error vs the CCW tangent "
+      "%.1f deg\n",
+      inset, result.worst_direction_deg);
   std::printf("wrote %s and %s\n", result.edge_csv.c_str(), result.disk_csv.c_str());
   if (!no_plot) {
     const std::string png = (std::filesystem::path(out_dir) / "probe.png").string();

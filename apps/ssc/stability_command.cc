@@ -13,11 +13,12 @@
 namespace ssc {
 
 int RunStabilityCommand(int argc, char** argv) {
-  cli::Command cmd("stability",
-                   "Runs the same disk trial with every integrator over a range of time steps and\n"
-                   "reports, per integrator, the largest step at which the trial stays stable and its\n"
-                   "outcome, mean radius and path length stay within tolerance of a 0.5 ms RK4 reference.\n"
-                   "Writes OUT/stability.csv.");
+  cli::Command cmd(
+      "stability",
+      "Runs the same disk trial with every integrator over a range of time steps and\n"
+      "reports, per integrator, the largest step at which the trial stays stable and its\n"
+      "outcome, mean radius and path length stay within tolerance of a 0.5 ms RK4 reference.\n"
+      "Writes OUT/stability.csv.");
   std::string scene_name = "disk_benchmark_gantry", out_dir = "out/stability";
   std::vector<double> steps_ms = {0.5, 1, 2, 4, 8, 16};
   double dl = 5, dr_tol = 0.3, s_tol = 0.05;
@@ -48,8 +49,8 @@ int RunStabilityCommand(int argc, char** argv) {
   const StabilityRow& ref = result.reference;
   std::printf("reference (RK4, 0.5 ms): %s, r_mean %.2f mm, s %.1f mm\n", OutcomeName(ref.outcome),
               ref.r_mean_mm, ref.s_mm);
-  std::printf("%-13s %8s %-11s %9s %8s %7s  stable unchanged\n", "integrator", "dt (ms)",
-              "outcome", "r_mean", "s (mm)", "wall s");
+  std::printf("%-13s %8s %-11s %9s %8s %7s  stable unchanged\n", "integrator", "dt (ms)", "outcome",
+              "r_mean", "s (mm)", "wall s");
   for (const auto& [name, largest_ms] : result.largest_unchanged_ms) {
     for (const StabilityRow& r : result.rows) {
       if (r.integrator != name) continue;

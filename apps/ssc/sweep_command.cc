@@ -31,7 +31,8 @@ int RunSweepCommand(int argc, char** argv) {
   bool no_plot = false, no_progress = false;
   TrialSettings settings;
   cmd.Text("scene", &spec.scene_name, "scene (name under scenes/ or a path)");
-  cmd.NumberList("pref", &spec.pref_pa, "P_ref values", "Pa", NumberRange::Positive(1e6).OpenHigh());
+  cmd.NumberList("pref", &spec.pref_pa, "P_ref values", "Pa",
+                 NumberRange::Positive(1e6).OpenHigh());
   cmd.NumberList("beta", &spec.beta, "beta values", "", NumberRange::Closed(0, 100));
   cmd.NumberList("step", &spec.step_mm, "step lengths dL", "mm", NumberRange::Positive(100));
   cmd.Integer("repeats", &repeats, "trials per grid point", NumberRange::Closed(1, 1000));
@@ -81,22 +82,24 @@ int RunSweepCommand(int argc, char** argv) {
   }
   if (bar) std::fprintf(stderr, "\n");
   if (!rank0) return summary.interrupted ? 130 : 0;
-  std::printf("sweep: %d trials (%d already in %s, %d run) in %.1f s wall on %d rank(s) x %d "
-              "threads (%.2f trials/s)\n",
-              summary.total, summary.skipped, spec.out_csv.c_str(), summary.ran, summary.wall_s,
-              summary.ranks, summary.threads,
-              summary.wall_s > 0 ? summary.ran / summary.wall_s : 0.0);
+  std::printf(
+      "sweep: %d trials (%d already in %s, %d run) in %.1f s wall on %d rank(s) x %d "
+      "threads (%.2f trials/s)\n",
+      summary.total, summary.skipped, spec.out_csv.c_str(), summary.ran, summary.wall_s,
+      summary.ranks, summary.threads, summary.wall_s > 0 ? summary.ran / summary.wall_s : 0.0);
   double busy = 0;
   for (double b : summary.rank_busy_s) busy += b;
-  std::printf("load: %.1f trial-s busy, longest trial %.2f s; rank busy max/mean %.3f (",
-              busy, summary.longest_trial_s, summary.balance_max_over_mean);
+  std::printf("load: %.1f trial-s busy, longest trial %.2f s; rank busy max/mean %.3f (", busy,
+              summary.longest_trial_s, summary.balance_max_over_mean);
   for (size_t r = 0; r < summary.rank_busy_s.size(); ++r) {
     std::printf("%s%.1f", r ? " " : "", summary.rank_busy_s[r]);
   }
   std::printf(" s)\n");
   if (summary.interrupted) {
-    std::fprintf(stderr, "ssc sweep: interrupted; %d finished rows kept in %s, re-run the same "
-                         "command to resume\n", summary.ran, spec.out_csv.c_str());
+    std::fprintf(stderr,
+                 "ssc sweep: interrupted; %d finished rows kept in %s, re-run the same "
+                 "command to resume\n",
+                 summary.ran, spec.out_csv.c_str());
     return 130;
   }
   if (!no_plot) {

@@ -6,17 +6,18 @@
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
 #include "apps/ssc/trial_options.h"
-#include "runtime/mujoco_model.h"
 #include "compare/twin_log.h"
-#include "studies/trial_io.h"
 #include "geometry/dimensions.h"
+#include "runtime/mujoco_model.h"
+#include "studies/trial_io.h"
 
 namespace ssc {
 
 int RunTrialCommand(int argc, char** argv) {
-  cli::Command cmd("trial",
-                   "Runs one disk trial headless: approach to the start-up force, move 32 mm toward\n"
-                   "the edge, follow it; prints the outcome and metrics, writes the log.");
+  cli::Command cmd(
+      "trial",
+      "Runs one disk trial headless: approach to the start-up force, move 32 mm toward\n"
+      "the edge, follow it; prints the outcome and metrics, writes the log.");
   TrialConfig config;
   TrialSettings settings;
   std::string scene_name = "disk_benchmark", out_dir = "out/trial", robot_log_dir;
@@ -45,7 +46,8 @@ int RunTrialCommand(int argc, char** argv) {
   if (cmd.Given("stop-at")) {
     // A partial run, for comparing with `ssc view --screenshot --time T` (same steps).
     DataPtr data = MakeData(model.get(), &error);
-    auto trial = data ? ContourTrial::Create(model.get(), data.get(), config, false, &error) : nullptr;
+    auto trial =
+        data ? ContourTrial::Create(model.get(), data.get(), config, false, &error) : nullptr;
     if (!trial) {
       std::fprintf(stderr, "ssc trial: %s\n", error.c_str());
       return 1;
@@ -64,14 +66,16 @@ int RunTrialCommand(int argc, char** argv) {
               config.law.p_ref_pa, config.law.beta, config.law.step_mm,
               static_cast<unsigned long long>(config.seed));
   std::printf("outcome: %s (%s)\n", OutcomeName(r.outcome), r.detail.c_str());
-  std::printf("path s = %.1f mm, s_c = %.1f %%, r_mean = %.2f mm, dr = %.2f mm, sigma_r = %.2f mm\n",
-              m.s_mm, m.s_c * 100, m.r_mean_mm, m.dr_mm, m.sigma_r_mm);
+  std::printf(
+      "path s = %.1f mm, s_c = %.1f %%, r_mean = %.2f mm, dr = %.2f mm, sigma_r = %.2f mm\n",
+      m.s_mm, m.s_c * 100, m.r_mean_mm, m.dr_mm, m.sigma_r_mm);
   std::printf("contour distance mean %.2f mm, max %.2f mm; swept %.0f deg in %d iterations\n",
               m.contour_mean_mm, m.contour_max_mm, r.swept_deg, r.iterations);
-  std::printf("follow %.1f s, speed %.1f mm/s (%.2f body diameters/s); %.1f s simulated in "
-              "%.2f s wall (%.0fx real time)\n",
-              m.duration_s, m.speed_mm_s, m.speed_body_d_s, r.sim_time_s, r.wall_time_s,
-              r.wall_time_s > 0 ? r.sim_time_s / r.wall_time_s : 0.0);
+  std::printf(
+      "follow %.1f s, speed %.1f mm/s (%.2f body diameters/s); %.1f s simulated in "
+      "%.2f s wall (%.0fx real time)\n",
+      m.duration_s, m.speed_mm_s, m.speed_body_d_s, r.sim_time_s, r.wall_time_s,
+      r.wall_time_s > 0 ? r.sim_time_s / r.wall_time_s : 0.0);
   const std::filesystem::path out = out_dir;
   if (!WriteTrialLogCsv((out / "trial.csv").string(), r, &error) ||
       !WriteTrialSummaryJson((out / "summary.json").string(), scene, config, r, &error)) {

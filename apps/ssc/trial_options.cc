@@ -19,8 +19,8 @@ void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* c, TrialSettings* s)
               NumberRange::Closed(0, 5));
   cmd->Number("timeout", &c->timeout_s, "follow-phase time limit, simulated", "s",
               NumberRange::Positive(3600));
-  cmd->Number("approach-force", &c->approach_force_n, "start-up compression read on the F/T",
-              "N", NumberRange::Positive(50));
+  cmd->Number("approach-force", &c->approach_force_n, "start-up compression read on the F/T", "N",
+              NumberRange::Positive(50));
   cmd->Number("start-offset", &s->start_offset_mm,
               "disk: start point distance east of the disk centre", "mm",
               NumberRange::Closed(0, 1000));
@@ -41,7 +41,8 @@ void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* c, TrialSettings* s)
             "take a step even when both differentials are below P_n");
   cmd->Text("effects", &s->effects,
             "robot effects (docs/fidelity.md): 'default', 'off', or key=value,... over the "
-            "defaults; defaults " + FormatRobotEffects(c->effects));
+            "defaults; defaults " +
+                FormatRobotEffects(c->effects));
   cmd->Check([c, s]() {
     std::string error;
     if (!ParseRobotEffects(s->effects, &c->effects, &error)) return error;

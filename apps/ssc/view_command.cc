@@ -1,24 +1,24 @@
 // ssc view: the interactive viewer, or an off-screen screenshot.
 #include <cstdio>
+#include <filesystem>
 
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "apps/ssc/trial_options.h"
-#include <filesystem>
-
-#include "runtime/mujoco_model.h"
 #include "objects/object_mjcf.h"
+#include "runtime/mujoco_model.h"
 #include "studies/object_trials.h"
 #include "viewer/viewer_app.h"
 
 namespace ssc {
 
 int RunViewCommand(int argc, char** argv) {
-  cli::Command cmd("view",
-                   "ssc view [SCENE] [options]: the twin in a window with the trial controller running\n"
-                   "(the same mjcb_control callback as headless trials: same seed, same trajectory).\n"
-                   "SCENE: a name under scenes/ (default disk_benchmark), a path, or a test object by\n"
-                   "name (disk_d10, hole_d06, corner_a090, volute, semicircle_strip, fillet, ...).");
+  cli::Command cmd(
+      "view",
+      "ssc view [SCENE] [options]: the twin in a window with the trial controller running\n"
+      "(the same mjcb_control callback as headless trials: same seed, same trajectory).\n"
+      "SCENE: a name under scenes/ (default disk_benchmark), a path, or a test object by\n"
+      "name (disk_d10, hole_d06, corner_a090, volute, semicircle_strip, fillet, ...).");
   ViewerOptions v;
   TrialSettings settings;
   std::string scene = "disk_benchmark";
@@ -28,7 +28,8 @@ int RunViewCommand(int argc, char** argv) {
   cmd.Seed("seed", &v.config.seed, "sensor noise seed");
   cmd.Number("speed", &v.speed, "simulated seconds per wall second at start (- / = change it)", "",
              NumberRange::Positive(1000));
-  cmd.OutputFile("screenshot", &v.screenshot, "render off-screen to this PNG after --time and exit");
+  cmd.OutputFile("screenshot", &v.screenshot,
+                 "render off-screen to this PNG after --time and exit");
   cmd.Number("time", &v.time_s, "simulated seconds before the screenshot", "s",
              NumberRange::Closed(0, 3600));
   cmd.Integer("width", &width, "image width, px", NumberRange::Closed(16, 8192));
@@ -44,8 +45,10 @@ int RunViewCommand(int argc, char** argv) {
     // the trial set up for that object.
     const ObjectSpec spec = ObjectByName(scene);
     if (spec.name.empty()) {
-      std::fprintf(stderr, "ssc view: '%s' is neither a scene file, a scene under scenes/, nor a "
-                           "test object (ssc objects --help lists them)\n", scene.c_str());
+      std::fprintf(stderr,
+                   "ssc view: '%s' is neither a scene file, a scene under scenes/, nor a "
+                   "test object (ssc objects --help lists them)\n",
+                   scene.c_str());
       return 2;
     }
     const std::string dir = (std::filesystem::path("out") / "objects" / "scenes").string();
@@ -53,7 +56,9 @@ int RunViewCommand(int argc, char** argv) {
       std::fprintf(stderr, "ssc view: %s\n", error.c_str());
       return 1;
     }
-    v.scene_path = std::filesystem::absolute(std::filesystem::path(dir) / ObjectFileNames(spec.name).arm_scene).string();
+    v.scene_path =
+        std::filesystem::absolute(std::filesystem::path(dir) / ObjectFileNames(spec.name).arm_scene)
+            .string();
     const ContourLawParams law = v.config.law;
     const std::uint64_t run_seed = v.config.seed;
     v.config = ObjectTrialConfig(spec, law, run_seed);

@@ -49,9 +49,8 @@ ContourStep ComputeContourStep(const std::array<double, 4>& p, const ContourLawP
   s.g = {-s.dpx_pa, s.dpy_pa};
   s.cf = CorrectionFactor(s.p_mean_pa, params);
   const double g_norm = std::hypot(s.g[0], s.g[1]);
-  const bool outside_dead_band =
-      !params.dead_band ||
-      std::fabs(s.dpx_pa) > params.p_noise_pa || std::fabs(s.dpy_pa) > params.p_noise_pa;
+  const bool outside_dead_band = !params.dead_band || std::fabs(s.dpx_pa) > params.p_noise_pa ||
+                                 std::fabs(s.dpy_pa) > params.p_noise_pa;
   if (!(g_norm > 0) || !std::isfinite(g_norm) || !outside_dead_band) return s;
   s.correction = {s.g[0] / g_norm, s.g[1] / g_norm};
   // Seen from above, +z_tool points away from the viewer, so "turn clockwise as seen from above"

@@ -43,7 +43,7 @@ struct ContourLawParams {
 // Everything the law computes in one iteration (for logging and overlays).
 struct ContourStep {
   double p_south_pa = 0, p_north_pa = 0, p_west_pa = 0, p_east_pa = 0;
-  double dpx_pa = 0, dpy_pa = 0;       // P_N - P_S, P_W - P_E
+  double dpx_pa = 0, dpy_pa = 0;  // P_N - P_S, P_W - P_E
   double p_mean_pa = 0;
   std::array<double, 2> g{};           // toward the object, tool frame (Pa)
   std::array<double, 2> along_edge{};  // v_hat, unit, tool frame

@@ -76,7 +76,8 @@ bool ParseRobotEffects(const std::string& text, RobotEffectsParams* p, std::stri
       if (key == k.key) found = &k;
     if (found == nullptr) {
       std::string names;
-      for (const EffectKey& k : EffectKeys()) names += std::string(names.empty() ? "" : ", ") + k.key;
+      for (const EffectKey& k : EffectKeys())
+        names += std::string(names.empty() ? "" : ", ") + k.key;
       *error = "effects: unknown key '" + key + "' (keys: " + names + ")";
       return false;
     }
@@ -130,7 +131,8 @@ std::string RobotEffectsParams::Validate(double period_s) const {
   if (!In(lip.tilt_decades, 0, 1)) return Bad("lip tilt_decades", lip.tilt_decades, "[0, 1]");
   if (!In(chambers.gain_spread, 0, 0.3))
     return Bad("chamber gain_spread", chambers.gain_spread, "[0, 0.3]");
-  if (!In(chambers.drift_pa, 0, 50)) return Bad("chamber drift_pa", chambers.drift_pa, "[0, 50] Pa");
+  if (!In(chambers.drift_pa, 0, 50))
+    return Bad("chamber drift_pa", chambers.drift_pa, "[0, 50] Pa");
   if (!In(chambers.drift_relative, 0, 0.5))
     return Bad("chamber drift_relative", chambers.drift_relative, "[0, 0.5]");
   if (!In(chambers.drift_time_s, 1e-3, 10))
@@ -146,7 +148,8 @@ bool RobotEffectsParams::AnyOn() const {
 double IterationPeriod(const LoopTimingParams& p, double period_s, std::uint64_t seed,
                        std::uint64_t index) {
   if (p.jitter_s <= 0) return period_s;
-  return period_s + p.jitter_s * EffectUniform(seed, EffectCounter(EffectStream::kJitter, index), 0);
+  return period_s +
+         p.jitter_s * EffectUniform(seed, EffectCounter(EffectStream::kJitter, index), 0);
 }
 
 void AdvanceLipShear(const LipShearParams& p, const std::array<double, 2>& body_move_m,
@@ -193,7 +196,8 @@ void ResetChamberSpread(const ChamberSpreadParams& p, std::uint64_t seed, Chambe
   }
   // Start the slow noise in its stationary distribution.
   const std::uint64_t c = EffectCounter(EffectStream::kDrift, s->draws++);
-  for (int i = 0; i < 4; ++i) s->drift_pa[static_cast<std::size_t>(i)] = p.drift_pa * EffectGaussian(seed, c, i);
+  for (int i = 0; i < 4; ++i)
+    s->drift_pa[static_cast<std::size_t>(i)] = p.drift_pa * EffectGaussian(seed, c, i);
   s->drift_rel = p.drift_relative * EffectGaussian(seed, c, 4);
 }
 

@@ -99,9 +99,8 @@ GoalStatus GoalTracker::status() const {
 std::string GoalTracker::Detail() const {
   std::ostringstream os;
   if (left_band_) {
-    os << "left the " << goal_.band_m * 1e3 << " mm band about the edge at ("
-       << left_at_[0] * 1e3 << ", " << left_at_[1] * 1e3 << ") mm, "
-       << arc_m_ * 1e3 << " mm along it";
+    os << "left the " << goal_.band_m * 1e3 << " mm band about the edge at (" << left_at_[0] * 1e3
+       << ", " << left_at_[1] * 1e3 << ") mm, " << arc_m_ * 1e3 << " mm along it";
     return os.str();
   }
   if (goal_.band_m > 0 && !edge_) return "a band of following needs the edge";

@@ -26,7 +26,7 @@
 
 namespace ssc {
 
-inline constexpr double kLoopSweepDeg = 355;      // the implementation's "one loop"
+inline constexpr double kLoopSweepDeg = 355;       // the implementation's "one loop"
 inline constexpr double kArcTrackWindowM = 0.010;  // largest move of the tracked arc position
 // The band of following: the edge stays under the cup body (its radius), m.
 inline constexpr double kFollowBandM = 0.5e-3 * kCupBodyDiameterMm;
@@ -37,7 +37,7 @@ struct TrialGoal {
   Point2 centre{kWorkspaceX, kWorkspaceY};  // kSweptAngle: the swept angle is measured about it
   double sweep_deg = kLoopSweepDeg;         // kSweptAngle: signed, > 0 counter-clockwise
   double goal_arc_m = 0;                    // kGoalPoint: arc position of the goal on the edge
-  double band_m = 0;          // > 0: the cup centre must stay this close to the tracked edge
+  double band_m = 0;           // > 0: the cup centre must stay this close to the tracked edge
   std::string never_followed;  // non-empty: why this goal never counts as followed
 
   static TrialGoal SweptAngle(const Point2& centre, double sweep_deg);
@@ -62,8 +62,8 @@ class GoalTracker {
   bool reached() const { return status() == GoalStatus::kReached; }
   // Why the goal is reached or lost, with the deciding value ("swept 356.1 deg").
   std::string Detail() const;
-  double swept_deg() const { return sweep_.swept_deg(); }  // signed, 0 for kGoalPoint goals
-  double arc_m() const { return arc_m_; }                  // tracked arc position (edge given)
+  double swept_deg() const { return sweep_.swept_deg(); }    // signed, 0 for kGoalPoint goals
+  double arc_m() const { return arc_m_; }                    // tracked arc position (edge given)
   double max_distance_m() const { return max_distance_m_; }  // from the tracked edge so far
 
  private:

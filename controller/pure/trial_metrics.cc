@@ -46,9 +46,8 @@ DiskTrialMetrics ComputeDiskMetrics(const std::vector<Point2>& path, const std::
   if (t.size() == path.size() && t.size() >= 2) m.duration_s = t.back() - t.front();
   m.speed_mm_s = m.duration_s > 0 ? m.s_mm / m.duration_s : 0;
   m.speed_body_d_s = m.speed_mm_s / kCupBodyDiameterMm;
-  const auto err = ContourError(path, [&](double x, double y) {
-    return std::fabs(std::hypot(x - c[0], y - c[1]) - radius);
-  });
+  const auto err = ContourError(
+      path, [&](double x, double y) { return std::fabs(std::hypot(x - c[0], y - c[1]) - radius); });
   m.contour_mean_mm = err[0] * 1e3;
   m.contour_max_mm = err[1] * 1e3;
   return m;

@@ -14,16 +14,16 @@
 namespace ssc {
 
 struct DiskTrialMetrics {
-  double s_mm = 0;              // path length
-  double r_mean_mm = 0;         // mean distance from the centre
-  double dr_mm = 0;             // r_mean - R
-  double sigma_r_mm = 0;        // standard deviation of the radius about r_mean
-  double s_c = 0;               // s / (2 pi R) - 1
+  double s_mm = 0;        // path length
+  double r_mean_mm = 0;   // mean distance from the centre
+  double dr_mm = 0;       // r_mean - R
+  double sigma_r_mm = 0;  // standard deviation of the radius about r_mean
+  double s_c = 0;         // s / (2 pi R) - 1
   double duration_s = 0;
-  double speed_mm_s = 0;        // s / duration
-  double speed_body_d_s = 0;    // speed in cup body diameters (23 mm) per second
-  double contour_mean_mm = 0;   // mean distance from the true contour
-  double contour_max_mm = 0;    // max distance from the true contour
+  double speed_mm_s = 0;       // s / duration
+  double speed_body_d_s = 0;   // speed in cup body diameters (23 mm) per second
+  double contour_mean_mm = 0;  // mean distance from the true contour
+  double contour_max_mm = 0;   // max distance from the true contour
 };
 
 // Unsigned distance (m) of a point from the true contour.

@@ -7,13 +7,20 @@ namespace ssc {
 
 const char* OutcomeName(Outcome outcome) {
   switch (outcome) {
-    case Outcome::kRunning: return "running";
-    case Outcome::kSuccess: return "success";
-    case Outcome::kFailureOffEdge: return "failure_I";
-    case Outcome::kFailureGrasp: return "failure_II";
-    case Outcome::kTimeout: return "timeout";
-    case Outcome::kUnstable: return "unstable";
-    case Outcome::kLostEdge: return "lost_edge";
+    case Outcome::kRunning:
+      return "running";
+    case Outcome::kSuccess:
+      return "success";
+    case Outcome::kFailureOffEdge:
+      return "failure_I";
+    case Outcome::kFailureGrasp:
+      return "failure_II";
+    case Outcome::kTimeout:
+      return "timeout";
+    case Outcome::kUnstable:
+      return "unstable";
+    case Outcome::kLostEdge:
+      return "lost_edge";
   }
   return "?";
 }

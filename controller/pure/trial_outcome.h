@@ -11,15 +11,21 @@
 namespace ssc {
 
 struct TrialThresholds {
-  double off_edge_pa = 5.0;           // failure I below this mean vacuum (disk script: 5 Pa)
-  double grasp_pa = 10000.0;          // failure II when ALL four chambers exceed this
-  double max_contact_force_n = 100.0; // safety: unstable beyond this |F/T| force
+  double off_edge_pa = 5.0;            // failure I below this mean vacuum (disk script: 5 Pa)
+  double grasp_pa = 10000.0;           // failure II when ALL four chambers exceed this
+  double max_contact_force_n = 100.0;  // safety: unstable beyond this |F/T| force
 };
 
 // kLostEdge: the trial's goal can no longer count as followed: the cup centre left the band
 // about the edge, or it circled a feature its opening covers whole (trial_goal.h).
 enum class Outcome {
-  kRunning, kSuccess, kFailureOffEdge, kFailureGrasp, kTimeout, kUnstable, kLostEdge
+  kRunning,
+  kSuccess,
+  kFailureOffEdge,
+  kFailureGrasp,
+  kTimeout,
+  kUnstable,
+  kLostEdge
 };
 
 // The text form, as written in tables and summaries: "running", "success", "failure_I",

@@ -21,11 +21,10 @@ std::string CupGeometry::Validate() const {
     os << "open_depth = " << open_depth_m * 1e3 << " mm is out of range [0.05, 10] mm";
   } else if (!std::isfinite(lip_roughness_gap_m) || lip_roughness_gap_m < 0 ||
              lip_roughness_gap_m > 1e-3) {
-    os << "lip_roughness_gap = " << lip_roughness_gap_m * 1e6
-       << " um is out of range [0, 1000] um";
+    os << "lip_roughness_gap = " << lip_roughness_gap_m * 1e6 << " um is out of range [0, 1000] um";
   } else if (rays_per_chamber < 1 || rays_per_chamber > kMaxRaysPerChamber) {
-    os << "rays_per_chamber = " << rays_per_chamber << " is out of range [1, "
-       << kMaxRaysPerChamber << "]";
+    os << "rays_per_chamber = " << rays_per_chamber << " is out of range [1, " << kMaxRaysPerChamber
+       << "]";
   }
   return os.str();
 }
@@ -54,8 +53,7 @@ void StretchSampleRadii(double r0_m, double r1_m, double radius_out_m[kSamplesPe
 
 void AddStretch(double r0_m, double r1_m, const double gap_m[kSamplesPerStretch],
                 OpeningWedge* wedge) {
-  const double area =
-      0.5 * wedge->dtheta_rad * (r1_m * r1_m - r0_m * r0_m) / kSamplesPerStretch;
+  const double area = 0.5 * wedge->dtheta_rad * (r1_m * r1_m - r0_m * r0_m) / kSamplesPerStretch;
   if (area <= 0) return;
   for (int k = 0; k < kSamplesPerStretch && wedge->n_samples < kMaxWedgeSamples; ++k) {
     wedge->samples[wedge->n_samples++] = {area, gap_m[k]};
@@ -137,10 +135,11 @@ EdgeProbe ProbeField(const CupGeometry& geometry, DepthAt depth_at, JumpsAlong j
       constexpr int kPieces = 3;  // per stretch: 3 x kSamplesPerStretch samples
       for (int s = 0; s + 1 < n_cuts; ++s) {
         for (int p = 0; p < kPieces; ++p) {
-          const double r0 = std::sqrt(cuts[s] * cuts[s] +
-                                      (cuts[s + 1] * cuts[s + 1] - cuts[s] * cuts[s]) * p / kPieces);
-          const double r1 = std::sqrt(cuts[s] * cuts[s] + (cuts[s + 1] * cuts[s + 1] -
-                                                           cuts[s] * cuts[s]) * (p + 1) / kPieces);
+          const double r0 = std::sqrt(
+              cuts[s] * cuts[s] + (cuts[s + 1] * cuts[s + 1] - cuts[s] * cuts[s]) * p / kPieces);
+          const double r1 =
+              std::sqrt(cuts[s] * cuts[s] +
+                        (cuts[s + 1] * cuts[s + 1] - cuts[s] * cuts[s]) * (p + 1) / kPieces);
           double rs[kSamplesPerStretch], gaps[kSamplesPerStretch];
           StretchSampleRadii(r0, r1, rs);
           for (int k = 0; k < kSamplesPerStretch; ++k) {

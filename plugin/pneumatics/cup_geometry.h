@@ -23,14 +23,14 @@ inline constexpr int kMaxLipSegments = 256;
 inline constexpr int kMaxCrossings = 8;  // surface crossings followed along one radial ray
 
 struct CupGeometry {
-  double opening_radius_m = 5.5e-3;   // internal (opening) radius, published 11 mm diameter
-  double open_depth_m = 2.75e-3;      // a surface this much deeper than the air's path lets the
-                                      // air across freely; shallower layers throttle it in
-                                      // proportion (opening radius / 2: then a layer of gap g
-                                      // over the whole opening passes what the lip curtain at
-                                      // gap g does)
-  double lip_roughness_gap_m = 18e-6; // leak gap of a lip segment lying on a surface
-  int rays_per_chamber = 4;           // radial rays (wedges) sampling each chamber's opening
+  double opening_radius_m = 5.5e-3;    // internal (opening) radius, published 11 mm diameter
+  double open_depth_m = 2.75e-3;       // a surface this much deeper than the air's path lets the
+                                       // air across freely; shallower layers throttle it in
+                                       // proportion (opening radius / 2: then a layer of gap g
+                                       // over the whole opening passes what the lip curtain at
+                                       // gap g does)
+  double lip_roughness_gap_m = 18e-6;  // leak gap of a lip segment lying on a surface
+  int rays_per_chamber = 4;            // radial rays (wedges) sampling each chamber's opening
 
   std::string Validate() const;
   double ChamberOpeningArea() const;  // one quadrant of the opening, m^2

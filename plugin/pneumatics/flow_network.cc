@@ -105,7 +105,8 @@ FlowSolution SolveFlowNetwork(const PneumaticParams& params,
   auto residual = [&](const double* p, double* r, double jac[kUnknowns][kUnknowns]) {
     for (int i = 0; i < kUnknowns; ++i) {
       r[i] = 0.0;
-      if (jac) for (int j = 0; j < kUnknowns; ++j) jac[i][j] = 0.0;
+      if (jac)
+        for (int j = 0; j < kUnknowns; ++j) jac[i][j] = 0.0;
     }
     const double port = p[kNumChambers];
     for (int i = 0; i < kNumChambers; ++i) {
@@ -141,7 +142,8 @@ FlowSolution SolveFlowNetwork(const PneumaticParams& params,
     if (jac) jac[kNumChambers][kNumChambers] += q_max / p_max;
     for (int i = 0; i < kUnknowns; ++i) {
       r[i] *= flow_scale;
-      if (jac) for (int j = 0; j < kUnknowns; ++j) jac[i][j] *= flow_scale;
+      if (jac)
+        for (int j = 0; j < kUnknowns; ++j) jac[i][j] *= flow_scale;
     }
   };
 

@@ -51,9 +51,9 @@ struct PneumaticParams {
 
 // Solution of the network for given leak areas.
 struct FlowSolution {
-  std::array<double, kNumChambers> chamber_pa{};   // static vacuum in each chamber
-  std::array<double, kNumChambers> tap_pa{};       // what each chamber's sensor tap reads
-  double port_pa = 0.0;                            // vacuum at the shared port
+  std::array<double, kNumChambers> chamber_pa{};      // static vacuum in each chamber
+  std::array<double, kNumChambers> tap_pa{};          // what each chamber's sensor tap reads
+  double port_pa = 0.0;                               // vacuum at the shared port
   std::array<double, kNumChambers> leak_flow_m3_s{};  // ambient -> chamber i
   std::array<double, kNumChambers> port_flow_m3_s{};  // chamber i -> port
   double pump_flow_m3_s = 0.0;

@@ -45,7 +45,8 @@ double RingBendingEnergy(const double* u, const double* theta_rad, int n,
   ForEachBendingMode(u, theta_rad, n, [&](int k, double a, double b, bool nyquist) {
     const double lambda =
         std::min(RingModeStiffness(k, n, bending_stiffness_nm2, radius_m), mode_cap_n_per_m);
-    // 1/2 u.K u with K = lambda P_k: |P_k u|^2 = (n/2)(a^2 + b^2), or n a^2 for the alternating mode.
+    // 1/2 u.K u with K = lambda P_k: |P_k u|^2 = (n/2)(a^2 + b^2), or n a^2 for the alternating
+    // mode.
     const double norm2 = nyquist ? n * a * a : 0.5 * n * (a * a + b * b);
     energy += 0.5 * lambda * norm2;
   });
@@ -59,9 +60,9 @@ void AddRingBendingForce(const double* u, const double* theta_rad, int n,
     const double lambda =
         std::min(RingModeStiffness(k, n, bending_stiffness_nm2, radius_m), mode_cap_n_per_m);
     for (int i = 0; i < n; ++i) {
-      const double projected = nyquist ? (i % 2 == 0 ? a : -a)
-                                       : a * std::cos(k * theta_rad[i]) +
-                                             b * std::sin(k * theta_rad[i]);
+      const double projected =
+          nyquist ? (i % 2 == 0 ? a : -a)
+                  : a * std::cos(k * theta_rad[i]) + b * std::sin(k * theta_rad[i]);
       force[i] -= lambda * projected;
     }
   });

@@ -27,8 +27,8 @@ std::string SensorChainParams::Validate() const {
   } else if (!std::isfinite(noise_pa) || noise_pa < 0 || noise_pa > 10000) {
     os << "noise_pa = " << noise_pa << " is out of range [0, 10000] Pa";
   } else if (average_samples < 1 || average_samples > kMaxAverageSamples) {
-    os << "average_samples = " << average_samples << " is out of range [1, "
-       << kMaxAverageSamples << "]";
+    os << "average_samples = " << average_samples << " is out of range [1, " << kMaxAverageSamples
+       << "]";
   } else if (!std::isfinite(lag_s) || lag_s < 0 || lag_s > 10) {
     os << "lag_s = " << lag_s << " is out of range [0, 10] s";
   }
@@ -47,8 +47,9 @@ std::int64_t SampleIndexAt(const SensorChainParams& params, double time_s) {
 }
 
 double CounterGaussian(std::uint64_t seed, std::int64_t sample_index, int chamber) {
-  const std::uint64_t key = SplitMix64(seed ^ SplitMix64(static_cast<std::uint64_t>(sample_index) *
-                                                         4 + static_cast<std::uint64_t>(chamber)));
+  const std::uint64_t key =
+      SplitMix64(seed ^ SplitMix64(static_cast<std::uint64_t>(sample_index) * 4 +
+                                   static_cast<std::uint64_t>(chamber)));
   const double u1 = ToUnit(SplitMix64(key));
   const double u2 = ToUnit(SplitMix64(key + 1));
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(6.283185307179586 * u2);

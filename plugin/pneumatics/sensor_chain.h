@@ -22,11 +22,11 @@ namespace ssc {
 inline constexpr int kMaxAverageSamples = 64;
 
 struct SensorChainParams {
-  double sample_rate_hz = 160.0;   // MPRLS streaming rate, [1, 100000]
-  double noise_pa = 6.0;           // 1-sigma noise per chamber per sample, [0, 10000]
-  int average_samples = 7;         // host moving-average window, [1, 64]
-  double lag_s = 0.0;              // first-order lag of tube + sensor, [0, 10]; 0 = none
-  std::uint64_t seed = 0;          // noise seed
+  double sample_rate_hz = 160.0;  // MPRLS streaming rate, [1, 100000]
+  double noise_pa = 6.0;          // 1-sigma noise per chamber per sample, [0, 10000]
+  int average_samples = 7;        // host moving-average window, [1, 64]
+  double lag_s = 0.0;             // first-order lag of tube + sensor, [0, 10]; 0 = none
+  std::uint64_t seed = 0;         // noise seed
 
   std::string Validate() const;
 };
@@ -34,9 +34,9 @@ struct SensorChainParams {
 // Sensor state kept in the simulator's plugin state array (all doubles, so it can live in
 // mjData::plugin_state and survive copies and resets).
 struct SensorChainState {
-  double last_sample_index;   // index of the newest sample taken, -1 before the first
-  double count;               // samples in the window, <= average_samples
-  double head;                // next slot to write
+  double last_sample_index;  // index of the newest sample taken, -1 before the first
+  double count;              // samples in the window, <= average_samples
+  double head;               // next slot to write
   double lagged_pa[kNumChambers];
   double window_pa[kMaxAverageSamples][kNumChambers];
 };

@@ -80,14 +80,15 @@ TrialConfig MakeConfig(double pref, double beta, double step_mm, std::uint64_t s
   if (!object.empty()) {
     // A test object: its scenes are written next to the other generated files (like ssc view).
     const ObjectSpec spec = ObjectByName(object);
-    if (spec.name.empty()) Fail("unknown test object '" + object + "' (e.g. disk_d10, hole_d10, corner_a090, volute)");
-    const std::filesystem::path dir =
-        std::filesystem::temp_directory_path() / "ssc_twin_objects";
+    if (spec.name.empty())
+      Fail("unknown test object '" + object + "' (e.g. disk_d10, hole_d10, corner_a090, volute)");
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "ssc_twin_objects";
     std::string error;
     if (!WriteObjectFiles(spec, dir.string(), ResourceDir(), &error)) Fail(error);
     const ObjectFiles files = ObjectFileNames(spec.name);
-    *scene = (dir / (scene->find("gantry") != std::string::npos ? files.gantry_scene
-                                                                 : files.arm_scene)).string();
+    *scene =
+        (dir / (scene->find("gantry") != std::string::npos ? files.gantry_scene : files.arm_scene))
+            .string();
     config = ObjectTrialConfig(spec, config.law, seed);
   }
   if (const std::string e = config.Validate(); !e.empty()) Fail(e);
@@ -152,8 +153,10 @@ nb::dict ResultDict(const std::string& scene, const TrialConfig& c, const TrialR
   d["outcome"] = std::string(OutcomeName(r.outcome));
   d["detail"] = r.detail;
   d["seed"] = c.seed;
-  d["parameters"] = Dict({{"pref_pa", nb::cast(c.law.p_ref_pa)}, {"beta", nb::cast(c.law.beta)},
-                          {"step_mm", nb::cast(c.law.step_mm)}, {"timeout_s", nb::cast(c.timeout_s)},
+  d["parameters"] = Dict({{"pref_pa", nb::cast(c.law.p_ref_pa)},
+                          {"beta", nb::cast(c.law.beta)},
+                          {"step_mm", nb::cast(c.law.step_mm)},
+                          {"timeout_s", nb::cast(c.timeout_s)},
                           {"control_period_s", nb::cast(c.control_period_s)}});
   d["metrics"] = MetricsDict(r);
   d["follow_time_s"] = r.follow_time_s;
@@ -285,7 +288,8 @@ NB_MODULE(_core, m) {
     InstallMuJoCoMessageHandlers();
   });
   m.def("phase_names", [] {
-    return std::vector<std::string>{PhaseName(TrialPhase::kApproach), PhaseName(TrialPhase::kMoveToStart),
+    return std::vector<std::string>{PhaseName(TrialPhase::kApproach),
+                                    PhaseName(TrialPhase::kMoveToStart),
                                     PhaseName(TrialPhase::kFollow), PhaseName(TrialPhase::kDone)};
   });
   m.def("object_names", [] {
@@ -294,177 +298,185 @@ NB_MODULE(_core, m) {
     return names;
   });
 
-  m.def("contour_step",
-        [](std::array<double, 4> p_pa, double pref, double beta, double step_mm) {
-          return StepDict(ComputeContourStep(p_pa, Law(pref, beta, step_mm)));
-        },
-        "p_pa"_a, "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 7.5,
-        "The published contour law on four chamber pressures (tool frame step, m).");
+  m.def(
+      "contour_step",
+      [](std::array<double, 4> p_pa, double pref, double beta, double step_mm) {
+        return StepDict(ComputeContourStep(p_pa, Law(pref, beta, step_mm)));
+      },
+      "p_pa"_a, "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 7.5,
+      "The published contour law on four chamber pressures (tool frame step, m).");
 
-  m.def("run_trial",
-        [](const std::string& scene, double pref, double beta, double step_mm, std::uint64_t seed,
-           const std::string& object, bool keep_log, double stop_at_s, double timeout_s) {
-          std::string scene_path = scene;
-          TrialConfig config = MakeConfig(pref, beta, step_mm, seed, object, &scene_path);
-          if (timeout_s > 0) config.timeout_s = timeout_s;
-          if (const std::string e = config.Validate(); !e.empty()) Fail(e);
-          ModelPtr model = Load(scene_path);
-          std::string error;
-          TrialResult r;
-          {
-            nb::gil_scoped_release release;
-            DataPtr data = MakeData(model.get(), &error);
-            auto trial = data ? ContourTrial::Create(model.get(), data.get(), config, keep_log, &error)
-                              : nullptr;
-            if (trial) r = stop_at_s > 0 ? trial->Run(stop_at_s) : trial->Run();
-          }
-          if (!error.empty()) Fail(error);
-          return ResultDict(ResolveScenePath(scene_path), config, r);
-        },
-        "scene"_a = "disk_benchmark", "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 7.5,
-        "seed"_a = 1, "object"_a = "", "keep_log"_a = true, "stop_at_s"_a = 0.0,
-        "timeout_s"_a = 0.0,
-        "One contour-following trial, as `ssc trial` runs it. object: a test object by name "
-        "(its arm scene; 'gantry' in scene picks the gantry one).");
+  m.def(
+      "run_trial",
+      [](const std::string& scene, double pref, double beta, double step_mm, std::uint64_t seed,
+         const std::string& object, bool keep_log, double stop_at_s, double timeout_s) {
+        std::string scene_path = scene;
+        TrialConfig config = MakeConfig(pref, beta, step_mm, seed, object, &scene_path);
+        if (timeout_s > 0) config.timeout_s = timeout_s;
+        if (const std::string e = config.Validate(); !e.empty()) Fail(e);
+        ModelPtr model = Load(scene_path);
+        std::string error;
+        TrialResult r;
+        {
+          nb::gil_scoped_release release;
+          DataPtr data = MakeData(model.get(), &error);
+          auto trial = data
+                           ? ContourTrial::Create(model.get(), data.get(), config, keep_log, &error)
+                           : nullptr;
+          if (trial) r = stop_at_s > 0 ? trial->Run(stop_at_s) : trial->Run();
+        }
+        if (!error.empty()) Fail(error);
+        return ResultDict(ResolveScenePath(scene_path), config, r);
+      },
+      "scene"_a = "disk_benchmark", "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 7.5,
+      "seed"_a = 1, "object"_a = "", "keep_log"_a = true, "stop_at_s"_a = 0.0, "timeout_s"_a = 0.0,
+      "One contour-following trial, as `ssc trial` runs it. object: a test object by name "
+      "(its arm scene; 'gantry' in scene picks the gantry one).");
 
-  m.def("sweep",
-        [](const std::string& scene, std::vector<double> pref, std::vector<double> beta,
-           std::vector<double> step_mm, int repeats, std::uint64_t seed, int threads,
-           const std::string& out_csv) {
-          SweepSpec spec;
-          spec.scene_name = scene;
-          spec.pref_pa = std::move(pref);
-          spec.beta = std::move(beta);
-          spec.step_mm = std::move(step_mm);
-          spec.repeats = repeats;
-          spec.seed = seed;
-          spec.threads = threads;
-          spec.out_csv = out_csv;
-          ModelPtr model = Load(scene);
-          SweepSummary summary;
-          std::string error;
-          bool ok = false;
-          {
-            nb::gil_scoped_release release;
-            ok = RunSweep(model.get(), spec, nullptr, &summary, &error);
-          }
-          if (!ok) Fail(error);
-          return Dict({{"csv", nb::cast(out_csv)}, {"total", nb::cast(summary.total)},
-                       {"ran", nb::cast(summary.ran)}, {"skipped", nb::cast(summary.skipped)},
-                       {"wall_s", nb::cast(summary.wall_s)}});
-        },
-        "scene"_a = "disk_benchmark_gantry", "pref"_a, "beta"_a, "step_mm"_a, "repeats"_a = 3,
-        "seed"_a = 1, "threads"_a = 1, "out_csv"_a,
-        "A P_ref x beta x step x repeats grid of trials into a resumable CSV (ssc sweep).");
+  m.def(
+      "sweep",
+      [](const std::string& scene, std::vector<double> pref, std::vector<double> beta,
+         std::vector<double> step_mm, int repeats, std::uint64_t seed, int threads,
+         const std::string& out_csv) {
+        SweepSpec spec;
+        spec.scene_name = scene;
+        spec.pref_pa = std::move(pref);
+        spec.beta = std::move(beta);
+        spec.step_mm = std::move(step_mm);
+        spec.repeats = repeats;
+        spec.seed = seed;
+        spec.threads = threads;
+        spec.out_csv = out_csv;
+        ModelPtr model = Load(scene);
+        SweepSummary summary;
+        std::string error;
+        bool ok = false;
+        {
+          nb::gil_scoped_release release;
+          ok = RunSweep(model.get(), spec, nullptr, &summary, &error);
+        }
+        if (!ok) Fail(error);
+        return Dict({{"csv", nb::cast(out_csv)},
+                     {"total", nb::cast(summary.total)},
+                     {"ran", nb::cast(summary.ran)},
+                     {"skipped", nb::cast(summary.skipped)},
+                     {"wall_s", nb::cast(summary.wall_s)}});
+      },
+      "scene"_a = "disk_benchmark_gantry", "pref"_a, "beta"_a, "step_mm"_a, "repeats"_a = 3,
+      "seed"_a = 1, "threads"_a = 1, "out_csv"_a,
+      "A P_ref x beta x step x repeats grid of trials into a resumable CSV (ssc sweep).");
 
   nb::class_<EdgeProbe3d>(m, "Probe",
                           "The cup on a mocap body placed over an edge; reads the sensor.")
-      .def("__init__",
-           [](EdgeProbe3d* self, const std::string& scene) {
-             std::string error;
-             std::unique_ptr<EdgeProbe3d> p = EdgeProbe3d::Create(ResolveScenePath(scene), &error);
-             if (!p) Fail(error);
-             new (self) EdgeProbe3d(std::move(*p));
-           },
-           "scene"_a = "probe_edge")
-      .def("read",
-           [](EdgeProbe3d& p, double x_m, double y_m, double yaw_rad, double surface_z_m,
-              double compression_m, double settle_s) {
-             ProbeReading r;
-             {
-               nb::gil_scoped_release release;
-               r = p.Read(x_m, y_m, yaw_rad, surface_z_m, compression_m, settle_s);
-             }
-             auto arr = [](const std::array<double, 4>& a) {
-               return ToNumpy({a[0], a[1], a[2], a[3]}, {4});
-             };
-             nb::dict d;
-             d["filtered_pa"] = arr(r.filtered_pa);
-             d["static_pa"] = arr(r.static_pa);
-             d["sealed_area_mm2"] = arr(r.sealed_area_mm2);
-             d["leak_area_mm2"] = arr(r.leak_area_mm2);
-             d["lip_contacts"] = r.lip_contacts;
-             d["pbar_pa"] = r.pbar_pa;
-             d["dpx_pa"] = r.dpx_pa;
-             d["dpy_pa"] = r.dpy_pa;
-             d["g_world_rad"] = r.g_world_rad;
-             d["travel_world_rad"] = r.travel_world_rad;
-             d["static_pbar_pa"] = r.static_pbar_pa;
-             return d;
-           },
-           "x_m"_a, "y_m"_a, "yaw_rad"_a = 0.0, "surface_z_m"_a = 0.010,
-           "compression_m"_a = 0.001, "settle_s"_a = 0.3);
+      .def(
+          "__init__",
+          [](EdgeProbe3d* self, const std::string& scene) {
+            std::string error;
+            std::unique_ptr<EdgeProbe3d> p = EdgeProbe3d::Create(ResolveScenePath(scene), &error);
+            if (!p) Fail(error);
+            new (self) EdgeProbe3d(std::move(*p));
+          },
+          "scene"_a = "probe_edge")
+      .def(
+          "read",
+          [](EdgeProbe3d& p, double x_m, double y_m, double yaw_rad, double surface_z_m,
+             double compression_m, double settle_s) {
+            ProbeReading r;
+            {
+              nb::gil_scoped_release release;
+              r = p.Read(x_m, y_m, yaw_rad, surface_z_m, compression_m, settle_s);
+            }
+            auto arr = [](const std::array<double, 4>& a) {
+              return ToNumpy({a[0], a[1], a[2], a[3]}, {4});
+            };
+            nb::dict d;
+            d["filtered_pa"] = arr(r.filtered_pa);
+            d["static_pa"] = arr(r.static_pa);
+            d["sealed_area_mm2"] = arr(r.sealed_area_mm2);
+            d["leak_area_mm2"] = arr(r.leak_area_mm2);
+            d["lip_contacts"] = r.lip_contacts;
+            d["pbar_pa"] = r.pbar_pa;
+            d["dpx_pa"] = r.dpx_pa;
+            d["dpy_pa"] = r.dpy_pa;
+            d["g_world_rad"] = r.g_world_rad;
+            d["travel_world_rad"] = r.travel_world_rad;
+            d["static_pbar_pa"] = r.static_pbar_pa;
+            return d;
+          },
+          "x_m"_a, "y_m"_a, "yaw_rad"_a = 0.0, "surface_z_m"_a = 0.010, "compression_m"_a = 0.001,
+          "settle_s"_a = 0.3);
 
-  m.def("compare",
-        [](const std::string& log_path, const std::string& scene, const std::string& out_dir,
-           double tcp_offset_mm) {
-          CompareOptions options;
-          options.log_path = log_path;
-          options.scene = scene;
-          options.out_dir = out_dir;
-          options.processing.tcp_offset_m = tcp_offset_mm * 1e-3;
-          CompareResult result;
-          std::string error;
-          bool ok = false;
-          {
-            nb::gil_scoped_release release;
-            ok = RunComparison(options, &result, &error);
-          }
-          if (!ok) Fail(error);
-          const ReplayComparison& c = result.replay;
-          auto arr = [](const std::array<double, 4>& a) {
-            return ToNumpy({a[0], a[1], a[2], a[3]}, {4});
-          };
-          nb::dict d;
-          d["rms_pa"] = arr(c.rms_pa);
-          d["rms_log10"] = arr(c.rms_log10);
-          d["correlation"] = arr(c.correlation);
-          d["mean_ratio"] = arr(c.mean_ratio);
-          d["pbar_rms_pa"] = c.pbar_rms_pa;
-          d["pbar_bias_pa"] = c.pbar_bias_pa;
-          d["direction_rms_deg"] = c.direction_rms_deg;
-          d["direction_median_deg"] = c.direction_median_deg;
-          d["direction_samples"] = c.direction_samples;
-          d["t_s"] = Column(c.t_s);
-          d["sim_pa"] = Rows(c.sim_pa);
-          d["log_pa"] = Rows(c.log_pa);
-          d["tcp_m"] = Rows(c.tcp_m);
-          d["report_dir"] = out_dir;
-          return d;
-        },
-        "log"_a, "scene"_a = "disk_replay", "out_dir"_a = "out/compare",
-        "tcp_offset_mm"_a = kToolCentreOffsetM * 1e3,
-        "Replays a robot log (lab per-topic CSVs, .mat or plain CSV) in the twin and compares the "
-        "pressures, as `ssc compare` without the closed loop (report files into out_dir).");
+  m.def(
+      "compare",
+      [](const std::string& log_path, const std::string& scene, const std::string& out_dir,
+         double tcp_offset_mm) {
+        CompareOptions options;
+        options.log_path = log_path;
+        options.scene = scene;
+        options.out_dir = out_dir;
+        options.processing.tcp_offset_m = tcp_offset_mm * 1e-3;
+        CompareResult result;
+        std::string error;
+        bool ok = false;
+        {
+          nb::gil_scoped_release release;
+          ok = RunComparison(options, &result, &error);
+        }
+        if (!ok) Fail(error);
+        const ReplayComparison& c = result.replay;
+        auto arr = [](const std::array<double, 4>& a) {
+          return ToNumpy({a[0], a[1], a[2], a[3]}, {4});
+        };
+        nb::dict d;
+        d["rms_pa"] = arr(c.rms_pa);
+        d["rms_log10"] = arr(c.rms_log10);
+        d["correlation"] = arr(c.correlation);
+        d["mean_ratio"] = arr(c.mean_ratio);
+        d["pbar_rms_pa"] = c.pbar_rms_pa;
+        d["pbar_bias_pa"] = c.pbar_bias_pa;
+        d["direction_rms_deg"] = c.direction_rms_deg;
+        d["direction_median_deg"] = c.direction_median_deg;
+        d["direction_samples"] = c.direction_samples;
+        d["t_s"] = Column(c.t_s);
+        d["sim_pa"] = Rows(c.sim_pa);
+        d["log_pa"] = Rows(c.log_pa);
+        d["tcp_m"] = Rows(c.tcp_m);
+        d["report_dir"] = out_dir;
+        return d;
+      },
+      "log"_a, "scene"_a = "disk_replay", "out_dir"_a = "out/compare",
+      "tcp_offset_mm"_a = kToolCentreOffsetM * 1e3,
+      "Replays a robot log (lab per-topic CSVs, .mat or plain CSV) in the twin and compares the "
+      "pressures, as `ssc compare` without the closed loop (report files into out_dir).");
 
-  m.def("write_robot_log",
-        [](const std::string& dir, const std::string& scene, double pref, double beta,
-           double step_mm, std::uint64_t seed) {
-          std::string scene_path = scene;
-          const TrialConfig config = MakeConfig(pref, beta, step_mm, seed, "", &scene_path);
-          ModelPtr model = Load(scene_path);
-          std::string error;
-          TrialResult r;
-          {
-            nb::gil_scoped_release release;
-            r = RunTrial(model.get(), config, true, &error);
-          }
-          std::vector<std::string> written;
-          if (!WriteLabRecordingFromTrial(model.get(), r, config, dir, &written, &error)) {
-            Fail(error);
-          }
-          return std::string(OutcomeName(r.outcome));
-        },
-        "dir"_a, "scene"_a = "disk_benchmark", "pref"_a = 100.0, "beta"_a = 2.0,
-        "step_mm"_a = 7.5, "seed"_a = 1,
-        "Runs a trial and writes it as a lab recording (ssc trial --robot-log).");
+  m.def(
+      "write_robot_log",
+      [](const std::string& dir, const std::string& scene, double pref, double beta, double step_mm,
+         std::uint64_t seed) {
+        std::string scene_path = scene;
+        const TrialConfig config = MakeConfig(pref, beta, step_mm, seed, "", &scene_path);
+        ModelPtr model = Load(scene_path);
+        std::string error;
+        TrialResult r;
+        {
+          nb::gil_scoped_release release;
+          r = RunTrial(model.get(), config, true, &error);
+        }
+        std::vector<std::string> written;
+        if (!WriteLabRecordingFromTrial(model.get(), r, config, dir, &written, &error)) {
+          Fail(error);
+        }
+        return std::string(OutcomeName(r.outcome));
+      },
+      "dir"_a, "scene"_a = "disk_benchmark", "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 7.5,
+      "seed"_a = 1, "Runs a trial and writes it as a lab recording (ssc trial --robot-log).");
 
   nb::class_<SteppedTrial>(m, "SteppedTrial",
                            "A trial stepped one control iteration at a time from Python.")
       .def(nb::init<const std::string&, double, double, double, std::uint64_t, const std::string&,
                     double>(),
-           "scene"_a = "disk_benchmark_gantry", "pref"_a = 100.0, "beta"_a = 2.0,
-           "step_mm"_a = 7.5, "seed"_a = 1, "object"_a = "", "timeout_s"_a = 0.0)
+           "scene"_a = "disk_benchmark_gantry", "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 7.5,
+           "seed"_a = 1, "object"_a = "", "timeout_s"_a = 0.0)
       .def("reset", &SteppedTrial::Reset, "seed"_a)
       .def("set_external_policy", &SteppedTrial::SetExternalPolicy, "on"_a,
            "On: each following iteration waits for apply_step instead of taking the law's step.")

@@ -31,7 +31,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::string error;
   if (ssc::ParseSweepManifest(text, &m, &error)) {
     ssc::SweepManifest back;
-    if (!ssc::ParseSweepManifest(ssc::SweepManifestJson(m), &back, &error) || back != m) std::abort();
+    if (!ssc::ParseSweepManifest(ssc::SweepManifestJson(m), &back, &error) || back != m)
+      std::abort();
     (void)ssc::CompareSweepManifests(m, back);
   }
   return 0;

@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <string>
 
-#include "runtime/mujoco_model.h"
 #include "objects/object_mjcf.h"
+#include "runtime/mujoco_model.h"
 #include "studies/object_step_cost.h"
 
 int main(int argc, char** argv) {
