@@ -9,6 +9,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "common/strict_number.h"
 #include "controller/pure/robot_effects.h"
 #include "studies/job_runner.h"
 
@@ -29,12 +30,10 @@ std::vector<std::string> SplitComma(const std::string& line) {
   return cells;
 }
 
-// Whole-string finite number in [lo, hi].
+// Whole-string finite number in [lo, hi] (the project's one strict reader).
 bool ReadNumber(const std::string& text, double lo, double hi, double* v) {
-  if (text.empty() || text.find_first_of("xXpP") != std::string::npos) return false;
-  char* end = nullptr;
-  *v = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size() && std::isfinite(*v) && *v >= lo && *v <= hi;
+  std::string ignored;
+  return ParseNumber(text, NumberRange::Closed(lo, hi), v, &ignored);
 }
 
 using CellKey = std::tuple<long, long, long>;
