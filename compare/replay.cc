@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "common/tool_names.h"
 #include "controller/pure/contour_law.h"
 #include "plugin/chamber_pressure_sensor.h"
 #include "robotlog/align.h"
@@ -71,7 +72,7 @@ bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
   };
   // The F/T force sensor of the tool (z along the cup axis), tared on the first sample as the
   // host tares it in air.
-  const int ft = mj_name2id(m, mjOBJ_SENSOR, "ft_force");
+  const int ft = mj_name2id(m, mjOBJ_SENSOR, kToolForceSensorName);
   const int ft_adr = ft >= 0 ? m->sensor_adr[ft] + 2 : -1;
   d->time = log.t_s.front();
   place(d->time);

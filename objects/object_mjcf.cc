@@ -7,6 +7,8 @@
 #include <sstream>
 #include <vector>
 
+#include "common/tool_names.h"
+
 namespace ssc {
 namespace {
 
@@ -211,8 +213,8 @@ bool WriteProbeScene(const ObjectSpec& spec, const fs::path& repo, const fs::pat
   probe->SetAttribute("quat", "0 0.70710678 -0.70710678 0");
   XMLElement* attach = probe->InsertNewChildElement("attach");
   attach->SetAttribute("model", "ssc_tool");
-  attach->SetAttribute("body", "ssc_tool");
-  attach->SetAttribute("prefix", "");
+  attach->SetAttribute("body", kToolAttachBody);
+  attach->SetAttribute("prefix", kToolAttachPrefix);
   return Save(&doc, out_dir / files.probe_scene, error);
 }
 

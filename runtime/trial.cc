@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "common/tool_names.h"
 #include "runtime/mujoco_model.h"
 
 namespace ssc {
@@ -98,9 +99,11 @@ std::unique_ptr<ContourTrial> ContourTrial::Create(const mjModel* m, mjData* d,
   trial->tool_site_ = sensor->site_id();
   trial->pressure_instance_ = sensor->instance();
   trial->pressure_adr_ = sensor->sensor_adr();
-  const int ft = mj_name2id(m, mjOBJ_SENSOR, "ft_force");
+  const int ft = mj_name2id(m, mjOBJ_SENSOR, kToolForceSensorName);
   if (ft < 0 || m->sensor_type[ft] != mjSENS_FORCE) {
-    *error = "scene has no force sensor named 'ft_force' (the F/T transducer)";
+    *error = std::string("scene has no force sensor named '") + kToolForceSensorName +
+             "' (the F/T transducer of models/ssc_tool.xml, attached with prefix \"" +
+             kToolAttachPrefix + "\")";
     return nullptr;
   }
   trial->ft_adr_ = m->sensor_adr[ft];

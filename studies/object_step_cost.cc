@@ -6,6 +6,7 @@
 #include <chrono>
 #include <limits>
 
+#include "common/tool_names.h"
 #include "plugin/chamber_pressure_sensor.h"
 #include "runtime/mujoco_model.h"
 
@@ -18,9 +19,9 @@ std::optional<StepCost> MeasureStepCost(const ObjectSpec& spec, const std::strin
   DataPtr d = MakeData(m.get(), error);
   if (!d) return std::nullopt;
   const int probe = mj_name2id(m.get(), mjOBJ_BODY, "probe");
-  const int site = mj_name2id(m.get(), mjOBJ_SITE, "ssc_tool_site");
+  const int site = mj_name2id(m.get(), mjOBJ_SITE, kToolSiteName);
   if (probe < 0 || m->body_mocapid[probe] < 0 || site < 0) {
-    *error = probe_scene + ": no mocap body 'probe' holding the tool site 'ssc_tool_site'";
+    *error = probe_scene + ": no mocap body 'probe' holding the tool site '" + kToolSiteName + "'";
     return std::nullopt;
   }
   if (!FindChamberPressureDiagnostics(m.get(), d.get())) {

@@ -2,7 +2,6 @@
 
 #include <tinyxml2.h>
 
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -172,11 +171,16 @@ std::string ToolWithLipSegments(const std::string& tool_xml, int segments, std::
     *error = "the tool model does not parse as XML";
     return "";
   }
-  // Find the body that carries the lip segments (bodies named ssc_lip_<n>).
-  auto is_segment = [](const XMLElement* e) {
+  // Find the body that carries the lip segments: bodies named <stem><n>, the stem ending in
+  // "lip_" (the tool model's own "lip_0" ...; "ssc_lip_0" in a file that holds the tool with the
+  // scene's prefix already applied).
+  auto segment_stem = [](const XMLElement* e) -> std::string {
     const char* name = e->Attribute("name");
-    return std::strcmp(e->Name(), "body") == 0 && name && std::strncmp(name, "ssc_lip_", 8) == 0 &&
-           std::isdigit(static_cast<unsigned char>(name[8]));
+    if (std::strcmp(e->Name(), "body") != 0 || name == nullptr) return "";
+    const std::string n = name;
+    const std::size_t digits = n.find_last_not_of("0123456789") + 1;
+    if (digits == n.size() || digits < 4 || n.compare(digits - 4, 4, "lip_") != 0) return "";
+    return n.substr(0, digits);
   };
   XMLElement* cup = nullptr;
   std::vector<XMLElement*> stack = {doc.RootElement()};
@@ -184,19 +188,27 @@ std::string ToolWithLipSegments(const std::string& tool_xml, int segments, std::
     XMLElement* e = stack.back();
     stack.pop_back();
     for (XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
-      if (is_segment(c)) cup = e;
+      if (!segment_stem(c).empty()) cup = e;
       stack.push_back(c);
     }
   }
   if (cup == nullptr) {
-    *error = "the tool model has no lip segment bodies (ssc_lip_*)";
+    *error = "the tool model has no lip segment bodies (lip_*)";
     return "";
   }
   double radius = 0, z = 0, total_stiffness = 0;
   int old = 0;
   std::vector<XMLElement*> lips;
+  std::string stem, joint_class, geom_class;  // as the old segments name and class them
   for (XMLElement* b = cup->FirstChildElement("body"); b; b = b->NextSiblingElement("body")) {
-    if (!is_segment(b)) continue;
+    if (segment_stem(b).empty()) continue;
+    if (stem.empty()) {
+      stem = segment_stem(b);
+      const XMLElement* j = b->FirstChildElement("joint");
+      const XMLElement* g = b->FirstChildElement("geom");
+      if (j && j->Attribute("class")) joint_class = j->Attribute("class");
+      if (g && g->Attribute("class")) geom_class = g->Attribute("class");
+    }
     double x = 0, y = 0, zz = 0;
     std::sscanf(b->Attribute("pos"), "%lf %lf %lf", &x, &y, &zz);
     radius += std::hypot(x, y);
@@ -204,16 +216,17 @@ std::string ToolWithLipSegments(const std::string& tool_xml, int segments, std::
     ++old;
     lips.push_back(b);
   }
-  if (old == 0) {
-    *error = "the tool model has no lip segment bodies (ssc_lip_*)";
+  if (joint_class.empty() || geom_class.empty()) {
+    *error = "the tool model's lip segment " + stem +
+             "0 has no joint and geom with a default class (the class holds their stiffness)";
     return "";
   }
   radius /= old;
-  // The per-segment stiffness lives in the ssc_lip default class; keep the total.
+  // The per-segment stiffness lives in the segments' joint default class; keep the total.
   for (XMLElement* d = doc.RootElement()->FirstChildElement("default"); d;
        d = d->NextSiblingElement("default")) {
     for (XMLElement* c = d->FirstChildElement("default"); c; c = c->NextSiblingElement("default")) {
-      if (c->Attribute("class") && std::strcmp(c->Attribute("class"), "ssc_lip") == 0) {
+      if (c->Attribute("class") && joint_class == c->Attribute("class")) {
         if (XMLElement* j = c->FirstChildElement("joint")) {
           total_stiffness = j->DoubleAttribute("stiffness") * old;
           j->SetAttribute("stiffness", total_stiffness / segments);
@@ -227,16 +240,16 @@ std::string ToolWithLipSegments(const std::string& tool_xml, int segments, std::
     const double a = 2 * M_PI * (i + 0.5) / segments;
     char buf[160];
     XMLElement* body = cup->InsertNewChildElement("body");
-    body->SetAttribute("name", ("ssc_lip_" + std::to_string(i)).c_str());
+    body->SetAttribute("name", (stem + std::to_string(i)).c_str());
     std::snprintf(buf, sizeof(buf), "%.6f %.6f %.6f", radius * std::cos(a), radius * std::sin(a),
                   z);
     body->SetAttribute("pos", buf);
     XMLElement* joint = body->InsertNewChildElement("joint");
-    joint->SetAttribute("name", ("ssc_lip_" + std::to_string(i)).c_str());
-    joint->SetAttribute("class", "ssc_lip");
+    joint->SetAttribute("name", (stem + std::to_string(i)).c_str());
+    joint->SetAttribute("class", joint_class.c_str());
     XMLElement* geom = body->InsertNewChildElement("geom");
-    geom->SetAttribute("name", ("ssc_lip_" + std::to_string(i)).c_str());
-    geom->SetAttribute("class", "ssc_lip");
+    geom->SetAttribute("name", (stem + std::to_string(i)).c_str());
+    geom->SetAttribute("class", geom_class.c_str());
     const double tx = -std::sin(a), ty = std::cos(a);
     std::snprintf(buf, sizeof(buf), "%.6f %.6f 0 %.6f %.6f 0", -half * tx, -half * ty, half * tx,
                   half * ty);

@@ -38,11 +38,11 @@ def tool_with(config, name):
     """The tool model with one config line, in TMP; a scene that attaches it."""
     with open(os.path.join(SRC, "models", "ssc_tool.xml")) as f:
         xml = f.read()
-    old = '<instance name="ssc_pressure"/>'
+    old = '<instance name="pressure"/>'
     assert old in xml, old
     tool = os.path.join(TMP, f"tool_{name}.xml")
     with open(tool, "w") as f:
-        f.write(xml.replace(old, f'<instance name="ssc_pressure">{config}</instance>'))
+        f.write(xml.replace(old, f'<instance name="pressure">{config}</instance>'))
     return scene_with('file="../models/ssc_tool.xml"', f'file="{tool}"', name)
 
 

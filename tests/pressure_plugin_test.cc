@@ -228,8 +228,8 @@ std::string LoadEdited(const std::string& from, const std::string& to) {
 TEST(PressurePluginTest, MissingSiteOrLipIsReported) {
   // The plugin's own checks, not MuJoCo's compiler: the messages carry the plugin's name.
   // A sensor on a body instead of the tool site (a valid MJCF that MuJoCo compiles).
-  const std::string on_body = LoadEdited("objtype=\"site\" objname=\"ssc_tool_site\"",
-                                         "objtype=\"body\" objname=\"ssc_cup\"");
+  const std::string on_body =
+      LoadEdited("objtype=\"site\" objname=\"tool_site\"", "objtype=\"body\" objname=\"cup\"");
   ASSERT_FALSE(on_body.empty()) << "a pressure sensor on a body loaded";
   EXPECT_NE(on_body.find(kChamberPressurePluginName), std::string::npos) << on_body;
   EXPECT_NE(on_body.find("objtype=\"site\""), std::string::npos) << on_body;
@@ -239,8 +239,7 @@ TEST(PressurePluginTest, MissingSiteOrLipIsReported) {
   EXPECT_NE(no_lip.find(kChamberPressurePluginName), std::string::npos) << no_lip;
   EXPECT_NE(no_lip.find("found 0 lip segment geoms (group 5)"), std::string::npos) << no_lip;
   // A site that does not exist is MuJoCo's compiler error; it must still fail the load.
-  const std::string no_site =
-      LoadEdited("objname=\"ssc_tool_site\"/>", "objname=\"no_such_site\"/>");
+  const std::string no_site = LoadEdited("objname=\"tool_site\"/>", "objname=\"no_such_site\"/>");
   EXPECT_NE(no_site.find("no_such_site"), std::string::npos) << no_site;
 }
 

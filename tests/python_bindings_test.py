@@ -50,8 +50,7 @@ class PythonBindingsTest(unittest.TestCase):
 
     def test_loading_our_scene_writes_no_log_file(self):
         # MuJoCo's default handlers append to MUJOCO_LOG.TXT in the working directory; the plugin
-        # installs printing ones where the host has none, and our scenes' known attach warning
-        # is dropped.
+        # installs printing ones where the host has none; our scenes load without a warning.
         import subprocess, tempfile
         scene = os.path.abspath(os.path.join(ROOT, "scenes", "disk_benchmark.xml"))
         script = ("import mujoco; mujoco.mj_loadPluginLibrary(%r); "
@@ -64,10 +63,35 @@ class PythonBindingsTest(unittest.TestCase):
             self.assertEqual(os.listdir(cwd), [])
             self.assertNotIn("Attaching a spec", r.stdout + r.stderr)
 
+    def test_scenes_attach_the_tool_with_a_prefix_and_save(self):
+        # An empty attach prefix makes MuJoCo warn (a UserWarning from MjSpec) that the model may
+        # not save correctly. Every scene parses without a warning, the tool's parts carry the
+        # prefix, and the spec saved to MJCF compiles to the same model.
+        import glob
+        import warnings
+        scenes = sorted(glob.glob(os.path.join(ROOT, "scenes", "*.xml")))
+        self.assertGreaterEqual(len(scenes), 5)
+        for path in scenes:
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                spec = mujoco.MjSpec.from_file(os.path.abspath(path))
+                m = spec.compile()
+            self.assertEqual([str(w.message) for w in caught], [], path)
+            for kind, name in ((mujoco.mjtObj.mjOBJ_SITE, "ssc_tool_site"),
+                               (mujoco.mjtObj.mjOBJ_SENSOR, "ssc_ft_force"),
+                               (mujoco.mjtObj.mjOBJ_SENSOR, "ssc_chamber_pressure"),
+                               (mujoco.mjtObj.mjOBJ_JOINT, "ssc_lip_0")):
+                self.assertGreaterEqual(mujoco.mj_name2id(m, kind, name), 0, (path, name))
+            again = mujoco.MjModel.from_xml_string(spec.to_xml())
+            self.assertEqual((again.nbody, again.njnt, again.nsensor, again.nplugin),
+                             (m.nbody, m.njnt, m.nsensor, m.nplugin), path)
+
     def test_bad_config_raises_with_the_key(self):
-        xml = open(os.path.join(ROOT, "models", "ssc_tool.xml")).read().replace(
-            '<instance name="ssc_pressure"/>',
-            '<instance name="ssc_pressure"><config key="noise_pa" value="-2"/></instance>')
+        with open(os.path.join(ROOT, "models", "ssc_tool.xml")) as f:
+            xml = f.read()
+        xml = xml.replace(
+            '<instance name="pressure"/>',
+            '<instance name="pressure"><config key="noise_pa" value="-2"/></instance>')
         with self.assertRaises(Exception) as ctx:
             mujoco.MjModel.from_xml_string(xml)
         self.assertIn("noise_pa", str(ctx.exception))

@@ -35,7 +35,7 @@ std::string Scene() {
       << "<geom name=\"sheet\" type=\"box\" size=\"0.05 0.05 0.00015\" pos=\"0.15 0 0.00985\" "
          "group=\"2\"/>"
       << "<body name=\"probe\" mocap=\"true\" pos=\"0 0 0.3\" quat=\"0 0.70710678 -0.70710678 0\">"
-      << "<attach model=\"ssc_tool\" body=\"ssc_tool\" prefix=\"\"/></body></worldbody></mujoco>";
+      << "<attach model=\"ssc_tool\" body=\"tool\" prefix=\"ssc_\"/></body></worldbody></mujoco>";
   return path.string();
 }
 

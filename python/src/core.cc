@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "common/tool_names.h"
 #include "compare/comparison.h"
 #include "compare/twin_log.h"
 #include "controller/pure/contour_law.h"
@@ -227,8 +228,8 @@ class SteppedTrial {
   std::array<double, 6> ForceTorque() const {
     // The F/T sensors as the model names them (force then torque, N and N m).
     std::array<double, 6> ft{};
-    const int f = mj_name2id(model_.get(), mjOBJ_SENSOR, "ft_force");
-    const int t = mj_name2id(model_.get(), mjOBJ_SENSOR, "ft_torque");
+    const int f = mj_name2id(model_.get(), mjOBJ_SENSOR, kToolForceSensorName);
+    const int t = mj_name2id(model_.get(), mjOBJ_SENSOR, kToolTorqueSensorName);
     for (int k = 0; k < 3; ++k) {
       if (f >= 0) ft[k] = data_->sensordata[model_->sensor_adr[f] + k];
       if (t >= 0) ft[3 + k] = data_->sensordata[model_->sensor_adr[t] + k];
