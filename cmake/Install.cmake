@@ -65,6 +65,8 @@ foreach(dir ${SSC_LIBRARY_FOLDERS})
 endforeach()
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/models" "${PROJECT_SOURCE_DIR}/scenes"
         DESTINATION "${SSC_INSTALL_DATADIR}")
+# The published success map, ssc validate's default --map.
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/data/published" DESTINATION "${SSC_INSTALL_DATADIR}/data")
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/tools/" DESTINATION "${SSC_INSTALL_DATADIR}/tools"
         FILES_MATCHING PATTERN "plot_*.py")
 install(FILES "${PROJECT_SOURCE_DIR}/requirements.txt" DESTINATION "${SSC_INSTALL_DATADIR}")

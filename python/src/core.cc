@@ -1,14 +1,16 @@
-// ssc_twin._core: the twin's C++ for Python (nanobind). Trials, sweeps, the kinematic probe and
-// log comparison run here; results come back as dicts of numbers and NumPy arrays. No physics or
-// control is re-written in Python.
+// ssc_twin._core: the twin's C++ for Python (nanobind). Trials, sweeps, map validation, the
+// kinematic probe and log comparison run here; results come back as dicts of numbers and NumPy
+// arrays. No physics or control is re-written in Python.
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
 #include <nanobind/stl/array.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -21,6 +23,7 @@
 #include "compare/comparison.h"
 #include "compare/twin_log.h"
 #include "controller/pure/contour_law.h"
+#include "controller/pure/robot_effects.h"
 #include "geometry/dimensions.h"
 #include "objects/object_mjcf.h"
 #include "objects/object_spec.h"
@@ -29,6 +32,7 @@
 #include "studies/edge_probe.h"
 #include "studies/object_trials.h"
 #include "studies/sweep.h"
+#include "studies/validation.h"
 
 namespace nb = nanobind;
 using namespace nb::literals;
@@ -36,13 +40,15 @@ using namespace nb::literals;
 namespace ssc {
 namespace {
 
-using Array = nb::ndarray<nb::numpy, double>;
-
 // A NumPy array that owns a copy of `values` laid out as `shape`.
+template <typename T>
+nb::object ToNumpy(std::vector<T> values, std::vector<size_t> shape) {
+  auto* heap = new std::vector<T>(std::move(values));
+  nb::capsule owner(heap, [](void* p) noexcept { delete static_cast<std::vector<T>*>(p); });
+  return nb::ndarray<nb::numpy, T>(heap->data(), shape.size(), shape.data(), owner).cast();
+}
 nb::object ToNumpy(std::vector<double> values, std::vector<size_t> shape) {
-  auto* heap = new std::vector<double>(std::move(values));
-  nb::capsule owner(heap, [](void* p) noexcept { delete static_cast<std::vector<double>*>(p); });
-  return Array(heap->data(), shape.size(), shape.data(), owner).cast();
+  return ToNumpy<double>(std::move(values), std::move(shape));
 }
 
 template <size_t N>
@@ -53,7 +59,19 @@ nb::object Rows(const std::vector<std::array<double, N>>& rows) {
   return ToNumpy(std::move(flat), {rows.size(), N});
 }
 
-nb::object Column(const std::vector<double>& v) { return ToNumpy(v, {v.size()}); }
+// A NumPy bool array (std::vector<bool> holds bits, not bools).
+nb::object Flags(const std::vector<bool>& v) {
+  bool* heap = new bool[v.size()];
+  std::copy(v.begin(), v.end(), heap);
+  nb::capsule owner(heap, [](void* p) noexcept { delete[] static_cast<bool*>(p); });
+  const size_t shape[1] = {v.size()};
+  return nb::ndarray<nb::numpy, bool>(heap, 1, shape, owner).cast();
+}
+
+template <typename T>
+nb::object Column(const std::vector<T>& v) {
+  return ToNumpy<T>(v, {v.size()});
+}
 
 // {"key", nb::cast(value)}, ... -> a dict.
 nb::dict Dict(std::initializer_list<std::pair<const char*, nb::object>> items) {
@@ -191,6 +209,59 @@ ContourLawParams Law(double pref, double beta, double step_mm) {
   return law;
 }
 
+// The per-cell results of a validation as cells.csv has them (one entry per cell, map order):
+// NumPy arrays of numbers and counts, lists of class / failure names.
+nb::dict CellsDict(const std::vector<CellScore>& cells) {
+  std::vector<double> step, beta, pref, p, p_low, p_high, agreement;
+  std::vector<std::int64_t> of3, successes, trials, off_edge, grasp, timeout, unstable, lost;
+  std::vector<bool> match, opposite;
+  std::vector<std::string> published, twin, main_failure;
+  for (const CellScore& c : cells) {
+    step.push_back(c.cell.step_mm);
+    beta.push_back(c.cell.beta);
+    pref.push_back(c.cell.pref_pa);
+    published.emplace_back(MapClassName(c.cell.published));
+    twin.emplace_back(MapClassName(c.twin_class));
+    of3.push_back(c.successes_of_3);
+    match.push_back(c.class_match);
+    successes.push_back(c.successes);
+    trials.push_back(c.trials);
+    p.push_back(c.p_success);
+    p_low.push_back(c.p_interval[0]);
+    p_high.push_back(c.p_interval[1]);
+    agreement.push_back(c.expected_agreement);
+    opposite.push_back(c.opposite);
+    off_edge.push_back(c.failure_off_edge);
+    grasp.push_back(c.failure_grasp);
+    timeout.push_back(c.timeout);
+    unstable.push_back(c.unstable);
+    lost.push_back(c.lost_edge);
+    main_failure.push_back(c.main_failure);
+  }
+  nb::dict d;
+  d["step_mm"] = Column(step);
+  d["beta"] = Column(beta);
+  d["pref_pa"] = Column(pref);
+  d["published"] = nb::cast(published);  // "3", "2" or "<=1"
+  d["twin_class"] = nb::cast(twin);      // from the first 3 seeds
+  d["successes_of_3"] = Column(of3);
+  d["class_match"] = Flags(match);
+  d["successes"] = Column(successes);
+  d["trials"] = Column(trials);
+  d["p_success"] = Column(p);
+  d["p_low"] = Column(p_low);  // Wilson 95 % interval
+  d["p_high"] = Column(p_high);
+  d["expected_agreement"] = Column(agreement);
+  d["opposite"] = Flags(opposite);
+  d["failure_I"] = Column(off_edge);
+  d["failure_II"] = Column(grasp);
+  d["timeout"] = Column(timeout);
+  d["unstable"] = Column(unstable);
+  d["lost_edge"] = Column(lost);
+  d["main_failure"] = nb::cast(main_failure);  // "" when every trial succeeded
+  return d;
+}
+
 // A trial that Python steps one control iteration at a time (the Gymnasium environment), with
 // the law's step or one given per iteration.
 class SteppedTrial {
@@ -275,7 +346,7 @@ class SteppedTrial {
 
 NB_MODULE(_core, m) {
   using namespace ssc;
-  m.doc() = "Smart Suction Cup twin: trials, sweeps, probe and log comparison (C++).";
+  m.doc() = "Smart Suction Cup twin: trials, sweeps, validation, probe and log comparison (C++).";
 
   m.def("resource_dir", &ResourceDir, "The folder holding models/ and scenes/.");
   m.def("set_resource_dir", &SetResourceDir, "dir"_a);
@@ -366,6 +437,73 @@ NB_MODULE(_core, m) {
       "scene"_a = "disk_benchmark_gantry", "pref"_a, "beta"_a, "step_mm"_a, "repeats"_a = 3,
       "seed"_a = 1, "threads"_a = 1, "out_csv"_a,
       "A P_ref x beta x step x repeats grid of trials into a resumable CSV (ssc sweep).");
+
+  m.def(
+      "validate",
+      [](const std::string& map, const std::string& out_dir, const std::string& scene, int seeds,
+         std::uint64_t seed, int threads, double timeout_s, const std::string& effects) {
+        ValidateSpec spec;
+        spec.map_path = map.empty() ? ResourceDir() + "/data/published/success_map_dl5.csv" : map;
+        spec.scene_name = scene;
+        spec.seed = seed;
+        spec.out_dir = out_dir;
+        if (seeds < 3 || seeds > 10000) {
+          Fail("seeds = " + std::to_string(seeds) +
+               " is out of range [3, 10000] (trials per cell)");
+        }
+        if (threads < 1 || threads > 256) {
+          Fail("threads = " + std::to_string(threads) + " is out of range [1, 256]");
+        }
+        spec.seeds = seeds;
+        spec.threads = threads;
+        std::string error;
+        if (!ParseRobotEffects(effects, &spec.base.effects, &error)) Fail(error);
+        if (timeout_s < 0 || timeout_s > 3600) {
+          Fail("timeout_s = " + std::to_string(timeout_s) +
+               " is out of range (0, 3600] s (0: the default)");
+        }
+        if (timeout_s > 0) spec.base.timeout_s = timeout_s;
+        if (const std::string e = spec.base.Validate(); !e.empty()) Fail(e);
+        std::error_code ec;
+        std::filesystem::create_directories(out_dir, ec);
+        if (ec || !std::filesystem::is_directory(out_dir)) {
+          Fail("cannot create the output directory '" + out_dir + "'" +
+               (ec ? ": " + ec.message() : std::string()));
+        }
+        ModelPtr model = Load(scene);
+        MapScore score;
+        SweepSummary summary;
+        bool ok = false;
+        {
+          nb::gil_scoped_release release;
+          ok = RunValidation(model.get(), spec, nullptr, &score, &summary, &error);
+        }
+        if (!ok) Fail(error);
+        nb::dict d;
+        d["scores"] = Dict({{"cells", nb::cast(score.cells_scored)},
+                            {"class_match", nb::cast(score.class_match)},
+                            {"expected_agreement", nb::cast(score.expected_agreement)},
+                            {"opposite_cells", nb::cast(score.opposite)},
+                            {"log_loss", nb::cast(score.log_loss)}});
+        d["cells"] = CellsDict(score.cells);
+        d["summary"] = Dict({{"total", nb::cast(summary.total)},
+                             {"ran", nb::cast(summary.ran)},
+                             {"skipped", nb::cast(summary.skipped)},
+                             {"wall_s", nb::cast(summary.wall_s)}});
+        d["map"] = spec.map_path;
+        d["scene"] = scene;
+        d["seeds_per_cell"] = seeds;
+        d["base_seed"] = seed;
+        d["effects"] = FormatRobotEffects(spec.base.effects);
+        d["out_dir"] = out_dir;
+        return d;
+      },
+      "map"_a = "", "out_dir"_a = "out/validate", "scene"_a = "disk_benchmark_gantry",
+      "seeds"_a = 10, "seed"_a = 1, "threads"_a = 1, "timeout_s"_a = 0.0, "effects"_a = "default",
+      "The twin on every cell of a published success map, scored (ssc validate). map: CSV "
+      "step_mm,beta,pref_pa,successes_of_3 ('' = the published dL 5 mm map). Writes "
+      "out_dir/trials.csv (resumable), cells.csv and validate.json; returns the scores, the "
+      "per-cell results (NumPy arrays, cells.csv's columns) and the run summary.");
 
   nb::class_<EdgeProbe3d>(m, "Probe",
                           "The cup on a mocap body placed over an edge; reads the sensor.")

@@ -20,7 +20,8 @@ import mujoco as _mujoco  # noqa: F401  loads libmujoco, which _core links (the 
 
 from . import _core
 from ._core import (Probe, SteppedTrial, compare, contour_step, mujoco_version, object_names,
-                    phase_names, resource_dir, run_trial, scene_path, sweep, write_robot_log)
+                    phase_names, resource_dir, run_trial, scene_path, sweep, validate,
+                    write_robot_log)
 
 __all__ = ["Probe", "SteppedTrial", "compare", "contour_step", "mujoco_version", "object_names",
            "phase_names", "resource_dir", "run_trial", "scene_path", "sweep", "write_robot_log",

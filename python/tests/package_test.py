@@ -1,7 +1,7 @@
 """The installed ssc_twin package (run inside the venv it was pip-installed into):
-the plugin found by `import mujoco` alone, trials equal to the CLI's, sweep / probe / compare
-bindings, no MUJOCO_LOG.TXT, MuJoCo's own viewer on our scene, and the edge-following
-environment (checker, the published law succeeds, a random policy does not).
+the plugin found by `import mujoco` alone, trials and validation equal to the CLI's, sweep /
+probe / compare bindings, no MUJOCO_LOG.TXT, MuJoCo's own viewer on our scene, and the
+edge-following environment (checker, the published law succeeds, a random policy does not).
 
     python package_test.py PATH/TO/ssc
 """
@@ -18,6 +18,8 @@ import numpy as np
 
 SSC = sys.argv.pop(1) if len(sys.argv) > 1 and not sys.argv[1].startswith("-") else None
 XVFB = shutil.which("xvfb-run")
+# validate test: the follow phase's limit, simulated s (a loop round the disk takes about 8 s).
+VALIDATE_TIMEOUT_S = 30
 
 
 def run(cmd, timeout=300, **kw):
@@ -52,6 +54,9 @@ class PackageTest(unittest.TestCase):
         self.assertEqual(os.path.realpath(ssc_twin.resource_dir()), os.path.realpath(pkg))
         self.assertTrue(ssc_twin.scene_path("probe_edge").startswith(pkg))
         self.assertTrue(os.path.exists(ssc_twin.plugin_library()))
+        # validate's default map ships with the package.
+        self.assertTrue(os.path.exists(os.path.join(pkg, "data", "published",
+                                                    "success_map_dl5.csv")))
 
     @unittest.skipUnless(SSC, "no ssc executable given")
     def test_trial_equals_the_cli(self):
@@ -91,6 +96,66 @@ class PackageTest(unittest.TestCase):
         again = ssc_twin.sweep(pref=[100, 1000], beta=[2], step_mm=[7.5], repeats=1, seed=5,
                                threads=1, out_csv=path)
         self.assertEqual(again["skipped"], 2)  # resumed: nothing runs twice
+
+    @unittest.skipUnless(SSC, "no ssc executable given")
+    def test_validate_equals_the_cli(self):
+        import ssc_twin
+        # A tiny map: two cells, 3 seeds each (the least validate takes), a shorter follow limit.
+        # The twin succeeds in the first and grasps (failure II) in the second: one class match.
+        map_csv = os.path.join(self.tmp, "tiny_map.csv")
+        with open(map_csv, "w") as f:
+            f.write("step_mm,beta,pref_pa,successes_of_3\n7.5,2,100,3\n7.5,2,1000,2\n")
+        seeds, seed, timeout_s = 3, 4, VALIDATE_TIMEOUT_S
+        cli_dir = os.path.join(self.tmp, "validate_cli")
+        r = run([SSC, "validate", "--map", map_csv, "--seeds", str(seeds), "--seed", str(seed),
+                 "--timeout", str(timeout_s), "--threads", "2", "--no-plot", "--no-progress",
+                 "--out", cli_dir])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        py_dir = os.path.join(self.tmp, "validate_py")
+        py = ssc_twin.validate(map_csv, out_dir=py_dir, seeds=seeds, seed=seed, threads=2,
+                               timeout_s=timeout_s)
+        self.assertEqual(py["summary"]["ran"], 2 * seeds)
+
+        # The same trials: every outcome and seed (rows land in finishing order; sort them).
+        def trials(folder):
+            with open(os.path.join(folder, "trials.csv")) as f:
+                rows = list(csv.DictReader(f))
+            key = lambda r: (float(r["pref_pa"]), float(r["beta"]), int(r["repeat"]))
+            return [(key(r), r["seed"], r["outcome"]) for r in sorted(rows, key=key)]
+        self.assertEqual(trials(py_dir), trials(cli_dir))
+        self.assertEqual(len(trials(cli_dir)), 2 * seeds)
+
+        # The scores: validate.json's values, exactly (the same doubles).
+        with open(os.path.join(cli_dir, "validate.json")) as f:
+            cli = json.load(f)
+        for key, value in py["scores"].items():
+            self.assertEqual(value, cli[key], key)
+        for key in ("seeds_per_cell", "base_seed", "effects", "scene"):
+            self.assertEqual(py[key], cli[key], key)
+
+        # The cells: every cells.csv column (printed to 6 significant digits), in map order.
+        with open(os.path.join(cli_dir, "cells.csv")) as f:
+            rows = list(csv.DictReader(f))
+        cells = py["cells"]
+        self.assertEqual(len(rows), 2)
+        self.assertEqual(cells["p_success"].shape, (2,))
+        for column in rows[0]:
+            if column in ("published", "twin_class", "main_failure"):
+                self.assertEqual(cells[column], [r[column] for r in rows], column)
+            else:
+                np.testing.assert_allclose(cells[column], [float(r[column]) for r in rows],
+                                           rtol=6e-6, atol=1e-12, err_msg=column)
+        self.assertEqual(cells["trials"].tolist(), [seeds, seeds])
+        self.assertEqual(cells["class_match"].tolist(),
+                         [p == t for p, t in zip(cells["published"], cells["twin_class"])])
+
+        # Resumable like the CLI: a second call reruns nothing and scores the same.
+        again = ssc_twin.validate(map_csv, out_dir=py_dir, seeds=seeds, seed=seed,
+                                  timeout_s=timeout_s)
+        self.assertEqual((again["summary"]["ran"], again["summary"]["skipped"]), (0, 2 * seeds))
+        self.assertEqual(again["scores"], py["scores"])
+        with self.assertRaisesRegex(Exception, "seeds = 2 is out of range"):
+            ssc_twin.validate(map_csv, out_dir=py_dir, seeds=2)
 
     def test_probe_grasps_on_the_plate_and_reads_ambient_in_air(self):
         import ssc_twin

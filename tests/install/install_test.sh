@@ -11,6 +11,7 @@ prefix="$tmp/prefix"
 cmake --install "$build" --prefix "$prefix" >/dev/null
 for f in bin/ssc lib/libssc_plugin.so include/ssc/plugin/chamber_pressure_sensor.h \
          share/ssc/models/ssc_tool.xml share/ssc/scenes/disk_benchmark.xml \
+         share/ssc/data/published/success_map_dl5.csv \
          lib/cmake/ssc/sscConfig.cmake; do
   [ -e "$prefix/$f" ] || { echo "FAIL: $f not installed"; exit 1; }
 done
