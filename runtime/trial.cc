@@ -405,6 +405,12 @@ TrialResult ContourTrial::Run(double max_sim_s) {
   return result_;
 }
 
+bool CheckTrialSetup(const mjModel* m, const TrialConfig& config, std::string* error) {
+  DataPtr data = MakeData(m, error);
+  if (!data) return false;
+  return ContourTrial::Create(m, data.get(), config, false, error) != nullptr;
+}
+
 TrialResult RunTrial(const mjModel* m, const TrialConfig& config, bool keep_log,
                      std::string* error) {
   DataPtr data = MakeData(m, error);

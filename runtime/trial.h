@@ -185,6 +185,11 @@ class ContourTrial : public ControlCallback {
 };
 
 // Loads nothing: runs one trial on an existing model with its own mjData.
+// Checks that `m` can host a trial with `config` (sensors, sites, servo, time step) without
+// running it: studies call it once before any row is written, so a scene that cannot run a
+// trial is an error naming what is missing, never a table of "unstable" rows.
+bool CheckTrialSetup(const mjModel* m, const TrialConfig& config, std::string* error);
+
 TrialResult RunTrial(const mjModel* m, const TrialConfig& config, bool keep_log,
                      std::string* error);
 

@@ -144,6 +144,11 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
       jobs.push_back(job);
     }
   }
+  // A scene that cannot host a trial fails here, before any row, not as rows of "unstable".
+  if (std::string setup_error; !CheckTrialSetup(m, jobs.front().config, &setup_error)) {
+    *error = "scene '" + spec.scene_name + "' cannot run a trial: " + setup_error;
+    return false;
+  }
   const bool writer = JobRunnerRank() == 0;
   std::set<Key> done;
   SweepRowWriter out;

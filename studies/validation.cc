@@ -248,6 +248,10 @@ bool RunMapTrials(const mjModel* m, const std::vector<MapCell>& cells, const Tri
       jobs.push_back(job);
     }
   }
+  if (!jobs.empty() && !CheckTrialSetup(m, jobs.front().config, error)) {
+    *error = "the scene cannot run a trial: " + *error;
+    return false;
+  }
   results->assign(cells.size(), std::vector<MapTrial>(static_cast<std::size_t>(seeds)));
   JobSet set;
   set.count = jobs.size();

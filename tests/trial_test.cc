@@ -223,6 +223,32 @@ TEST(SweepTest, ParallelSweepGivesTheSameRowsAsSerialAndResumes) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(SweepTest, ASceneThatCannotHostATrialIsAnErrorNotRowsOfUnstable) {
+  // Before the check, every trial of such a sweep was written as an "unstable" row and the
+  // study reported figures on them (a scene whose F/T sensor had been renamed did this).
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("ssc_sweep_bare_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string xml = (dir / "bare.xml").string();
+  std::ofstream(xml) << "<mujoco><worldbody><body><joint type='slide'/>"
+                        "<geom size='0.01'/></body></worldbody></mujoco>";
+  std::string error;
+  ModelPtr bare = LoadModel(xml, &error);
+  ASSERT_TRUE(bare) << error;
+  SweepSpec spec;
+  spec.scene_name = "bare";
+  spec.pref_pa = {100};
+  spec.beta = {2.0};
+  spec.step_mm = {5};
+  spec.out_csv = (dir / "sweep.csv").string();
+  SweepSummary summary;
+  EXPECT_FALSE(RunSweep(bare.get(), spec, nullptr, &summary, &error));
+  EXPECT_NE(error.find("cannot run a trial"), std::string::npos) << error;
+  EXPECT_NE(error.find("chamber_pressure"), std::string::npos) << error;
+  EXPECT_FALSE(std::filesystem::exists(spec.out_csv));
+  std::filesystem::remove_all(dir);
+}
+
 // Counts calls per mjData.
 class Counter : public ControlCallback {
  public:

@@ -59,6 +59,8 @@ def main():
     ap.add_argument("--ssc", default=os.path.join(ROOT, "build", "bin", "ssc"))
     ap.add_argument("--map", default=os.path.join(ROOT, "data", "published", "success_map_dl5.csv"))
     ap.add_argument("--only", default="", help="comma-separated configuration names to run")
+    ap.add_argument("--rerun", action="store_true",
+                    help="run configurations again even when OUT/<name>/validate.json exists")
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     map_path = os.path.join(args.out, "training_cells.csv")
@@ -72,11 +74,15 @@ def main():
         if wanted and name not in wanted:
             continue
         out = os.path.join(args.out, name)
-        cmd = command(args.ssc, map_path, out, args.seeds, on, args.threads)
-        print(name, flush=True)
-        run = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-        if run.returncode != 0:
-            sys.exit(f"{name}: ssc validate failed ({run.returncode}): {run.stderr.strip()}")
+        done = os.path.exists(os.path.join(out, "validate.json"))
+        if done and not args.rerun:
+            print(name, "(finished earlier: its scores are reused)", flush=True)
+        else:
+            cmd = command(args.ssc, map_path, out, args.seeds, on, args.threads)
+            print(name, flush=True)
+            run = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+            if run.returncode != 0:
+                sys.exit(f"{name}: ssc validate failed ({run.returncode}): {run.stderr.strip()}")
         rows.append(score(name, on, out))
     fields = ["config", "mechanisms_on", "map_class_match", "map_opposite", "map_expected_agreement",
               "outcomes_matched", "failure_I", "failure_II", "other_failures", "wall_s"]
