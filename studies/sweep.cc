@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "common/counter_rng.h"
 #include "common/strict_number.h"
 #include "runtime/mujoco_model.h"
 #include "studies/job_runner.h"
@@ -24,13 +25,6 @@ using Key = std::tuple<long, long, long, int>;  // pref, beta, step in 1e-6 unit
 Key MakeKey(double pref, double beta, double step, int repeat) {
   auto q = [](double v) { return std::lround(v * 1e6); };
   return {q(pref), q(beta), q(step), repeat};
-}
-
-std::uint64_t Mix(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ULL;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
-  return x ^ (x >> 31);
 }
 
 // The options that define the rows: resuming with other ones would mix their rows silently.
@@ -75,11 +69,11 @@ void ThrowingError(const char* msg) {
 
 std::uint64_t TrialSeed(std::uint64_t base, double pref, double beta, double step, int repeat) {
   const Key k = MakeKey(pref, beta, step, repeat);
-  std::uint64_t h = Mix(base);
-  h = Mix(h ^ static_cast<std::uint64_t>(std::get<0>(k)));
-  h = Mix(h ^ static_cast<std::uint64_t>(std::get<1>(k)));
-  h = Mix(h ^ static_cast<std::uint64_t>(std::get<2>(k)));
-  h = Mix(h ^ static_cast<std::uint64_t>(std::get<3>(k)));
+  std::uint64_t h = SplitMix64(base);
+  h = SplitMix64(h ^ static_cast<std::uint64_t>(std::get<0>(k)));
+  h = SplitMix64(h ^ static_cast<std::uint64_t>(std::get<1>(k)));
+  h = SplitMix64(h ^ static_cast<std::uint64_t>(std::get<2>(k)));
+  h = SplitMix64(h ^ static_cast<std::uint64_t>(std::get<3>(k)));
   return h & ((std::uint64_t{1} << 53) - 1);
 }
 

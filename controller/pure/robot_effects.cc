@@ -5,21 +5,16 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "common/counter_rng.h"
+
 namespace ssc {
 namespace {
 
-std::uint64_t SplitMix(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ULL;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
-  return x ^ (x >> 31);
-}
-
 // (0, 1), never 0 or 1.
 double Unit(std::uint64_t seed, std::uint64_t counter, int k, int lane) {
-  const std::uint64_t h =
-      SplitMix(SplitMix(SplitMix(seed) ^ counter) ^ (static_cast<std::uint64_t>(k) * 4 + lane));
-  return (static_cast<double>(h >> 11) + 0.5) / 9007199254740992.0;
+  const std::uint64_t h = SplitMix64(SplitMix64(SplitMix64(seed) ^ counter) ^
+                                     (static_cast<std::uint64_t>(k) * 4 + lane));
+  return UnitFromBits(h);
 }
 
 bool In(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }

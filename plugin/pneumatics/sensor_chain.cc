@@ -3,20 +3,12 @@
 #include <cmath>
 #include <sstream>
 
+#include "common/counter_rng.h"
+
 namespace ssc {
 namespace {
 
-std::uint64_t SplitMix64(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ULL;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
-  return x ^ (x >> 31);
-}
-
-// Uniform in (0, 1) from 53 random bits.
-double ToUnit(std::uint64_t bits) {
-  return (static_cast<double>(bits >> 11) + 0.5) * (1.0 / 9007199254740992.0);
-}
+double ToUnit(std::uint64_t bits) { return UnitFromBits(bits); }
 
 }  // namespace
 
