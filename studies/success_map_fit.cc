@@ -23,6 +23,8 @@ const std::vector<DynamicParameter>& DynamicParameters() {
        [](TrialConfig* c) { return &c->effects.lip.tilt_decades; }},
       {"gain_spread", "1", 0.0, 0.2,
        [](TrialConfig* c) { return &c->effects.chambers.gain_spread; }},
+      {"offset_spread_pa", "Pa", 0.0, 20.0,
+       [](TrialConfig* c) { return &c->effects.chambers.offset_spread_pa; }},
       {"drift_pa", "Pa", 0.0, 20.0, [](TrialConfig* c) { return &c->effects.chambers.drift_pa; }},
       {"drift_relative", "1", 0.0, 0.3,
        [](TrialConfig* c) { return &c->effects.chambers.drift_relative; }},

@@ -88,6 +88,37 @@ TEST(ChamberSpreadTest, GainsAreDrawnPerTrialWithTheStatedSpread) {
   for (double g : off.gain) EXPECT_EQ(g, 1.0);
 }
 
+TEST(ChamberSpreadTest, TareOffsetsAreDrawnPerTrialIndependentAndHeldThroughTheTrial) {
+  ChamberSpreadParams params;
+  params.offset_spread_pa = 6;
+  double sum = 0, sum2 = 0, cross = 0;
+  int n = 0;
+  for (std::uint64_t seed = 0; seed < 3000; ++seed) {
+    ChamberSpreadState s;
+    ResetChamberSpread(params, seed, &s);
+    std::array<double, 4> first = {0, 0, 0, 0}, later = {0, 0, 0, 0};
+    ApplyChamberSpread(params, seed, 0.0, &s, &first);
+    ApplyChamberSpread(params, seed, 30.0, &s, &later);
+    EXPECT_EQ(first, later) << "an offset is a per-trial constant, not noise";
+    for (double o : first) {
+      sum += o;
+      sum2 += o * o;
+      ++n;
+    }
+    cross += first[0] * first[1];
+  }
+  EXPECT_NEAR(sum / n, 0.0, 0.3);
+  EXPECT_NEAR(std::sqrt(sum2 / n), 6.0, 0.3);
+  EXPECT_NEAR(cross / 3000 / 36.0, 0.0, 0.06);  // chambers drawn independently
+  // Off: a reading passes unchanged.
+  ChamberSpreadParams off;
+  ChamberSpreadState s;
+  ResetChamberSpread(off, 9, &s);
+  std::array<double, 4> p = {1, 2, 3, 4};
+  ApplyChamberSpread(off, 9, 0.0, &s, &p);
+  EXPECT_EQ(p, (std::array<double, 4>{1, 2, 3, 4}));
+}
+
 TEST(ChamberSpreadTest, SlowNoiseHasItsStationarySpreadAndCorrelationTime) {
   ChamberSpreadParams params;
   params.drift_pa = 8;

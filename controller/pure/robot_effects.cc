@@ -27,8 +27,8 @@ std::string Bad(const char* field, double v, const std::string& range) {
 
 }  // namespace
 
-const std::array<EffectKey, 8>& EffectKeys() {
-  static const std::array<EffectKey, 8> kKeys = {{
+const std::array<EffectKey, 9>& EffectKeys() {
+  static const std::array<EffectKey, 9> kKeys = {{
       {"jitter_s", "s", 0, 5, "half-width of the uniform jitter of the loop period",
        [](RobotEffectsParams* p) { return &p->loop.jitter_s; }},
       {"pose_delay_s", "s", 0, 10, "pressures read -> pose read (the live plot in between)",
@@ -39,6 +39,9 @@ const std::array<EffectKey, 8>& EffectKeys() {
        [](RobotEffectsParams* p) { return &p->lip.tilt_decades; }},
       {"gain_spread", "1", 0, 0.3, "1-sigma relative gain spread between chambers",
        [](RobotEffectsParams* p) { return &p->chambers.gain_spread; }},
+      {"offset_spread_pa", "Pa", 0, 30,
+       "1-sigma residual tare offset per chamber (tared at 30 % PWM)",
+       [](RobotEffectsParams* p) { return &p->chambers.offset_spread_pa; }},
       {"drift_pa", "Pa", 0, 50, "1-sigma slow additive noise per chamber",
        [](RobotEffectsParams* p) { return &p->chambers.drift_pa; }},
       {"drift_relative", "1", 0, 0.5, "1-sigma slow relative noise common to the chambers",
@@ -126,6 +129,8 @@ std::string RobotEffectsParams::Validate(double period_s) const {
   if (!In(lip.tilt_decades, 0, 1)) return Bad("lip tilt_decades", lip.tilt_decades, "[0, 1]");
   if (!In(chambers.gain_spread, 0, 0.3))
     return Bad("chamber gain_spread", chambers.gain_spread, "[0, 0.3]");
+  if (!In(chambers.offset_spread_pa, 0, 30))
+    return Bad("chamber offset_spread_pa", chambers.offset_spread_pa, "[0, 30] Pa");
   if (!In(chambers.drift_pa, 0, 50))
     return Bad("chamber drift_pa", chambers.drift_pa, "[0, 50] Pa");
   if (!In(chambers.drift_relative, 0, 0.5))
@@ -137,7 +142,8 @@ std::string RobotEffectsParams::Validate(double period_s) const {
 
 bool RobotEffectsParams::AnyOn() const {
   return loop.jitter_s > 0 || loop.pose_delay_s > 0 || (lip.slip_mm > 0 && lip.tilt_decades > 0) ||
-         chambers.gain_spread > 0 || chambers.drift_pa > 0 || chambers.drift_relative > 0;
+         chambers.gain_spread > 0 || chambers.offset_spread_pa > 0 || chambers.drift_pa > 0 ||
+         chambers.drift_relative > 0;
 }
 
 double IterationPeriod(const LoopTimingParams& p, double period_s, std::uint64_t seed,
@@ -188,6 +194,8 @@ void ResetChamberSpread(const ChamberSpreadParams& p, std::uint64_t seed, Chambe
     const double g =
         1.0 + p.gain_spread * EffectGaussian(seed, EffectCounter(EffectStream::kGain, 0), i);
     s->gain[static_cast<std::size_t>(i)] = std::fmax(0.2, g);  // a sensor never reads inverted
+    s->offset_pa[static_cast<std::size_t>(i)] =
+        p.offset_spread_pa * EffectGaussian(seed, EffectCounter(EffectStream::kOffset, 0), i);
   }
   // Start the slow noise in its stationary distribution.
   const std::uint64_t c = EffectCounter(EffectStream::kDrift, s->draws++);
@@ -211,7 +219,7 @@ void ApplyChamberSpread(const ChamberSpreadParams& p, std::uint64_t seed, double
   s->last_time_s = time_s;
   for (int i = 0; i < 4; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    (*p_pa)[k] = (*p_pa)[k] * s->gain[k] * (1.0 + s->drift_rel) + s->drift_pa[k];
+    (*p_pa)[k] = (*p_pa)[k] * s->gain[k] * (1.0 + s->drift_rel) + s->drift_pa[k] + s->offset_pa[k];
   }
 }
 

@@ -44,7 +44,11 @@ struct LipShearParams {
 };
 
 struct ChamberSpreadParams {
-  double gain_spread = 0.0;     // 1-sigma relative gain spread between chambers: [0, 0.3]
+  double gain_spread = 0.0;  // 1-sigma relative gain spread between chambers: [0, 0.3]
+  // 1-sigma residual tare offset per chamber, Pa: [0, 30]. The lab tared the sensors in air
+  // with the pump at 30 % PWM and followed at 100 %: each chamber keeps the difference of its
+  // open-cup vacuum between the two (and the MPRLS zero drift), drawn per trial.
+  double offset_spread_pa = 0.0;
   double drift_pa = 0.0;        // 1-sigma slow additive noise per chamber, Pa: [0, 50]
   double drift_relative = 0.0;  // 1-sigma slow relative noise common to all chambers: [0, 0.5]
   double drift_time_s = 0.5;    // correlation time of both, s: (0, 10]
@@ -67,7 +71,7 @@ struct EffectKey {
   const char* what;
   double* (*field)(RobotEffectsParams*);
 };
-const std::array<EffectKey, 8>& EffectKeys();
+const std::array<EffectKey, 9>& EffectKeys();
 // Parses "key=value,key=value" (or "off": every effect off) onto *p. Values must be whole,
 // finite numbers in the key's range; the error names the key, the value and the range.
 bool ParseRobotEffects(const std::string& text, RobotEffectsParams* p, std::string* error);
@@ -79,7 +83,7 @@ double EffectGaussian(std::uint64_t seed, std::uint64_t counter, int k);
 double EffectUniform(std::uint64_t seed, std::uint64_t counter, int k);
 
 // Stream ids (the `counter`'s top byte), so the mechanisms never share draws.
-enum class EffectStream : std::uint64_t { kJitter = 1, kGain = 2, kDrift = 3 };
+enum class EffectStream : std::uint64_t { kJitter = 1, kGain = 2, kDrift = 3, kOffset = 4 };
 std::uint64_t EffectCounter(EffectStream stream, std::uint64_t index);
 
 // The period of iteration `index`: period_s + jitter_s * U(-1, 1).
@@ -103,14 +107,15 @@ void ApplyLipTilt(const LipShearParams& p, const LipShearState& s, std::array<do
 // Per-trial chamber gains and the slow noise state.
 struct ChamberSpreadState {
   std::array<double, 4> gain{1, 1, 1, 1};
+  std::array<double, 4> offset_pa{};
   std::array<double, 4> drift_pa{};
   double drift_rel = 0;
   double last_time_s = -1;
   std::uint64_t draws = 0;
 };
 void ResetChamberSpread(const ChamberSpreadParams& p, std::uint64_t seed, ChamberSpreadState* s);
-// Advances the slow noise to `time_s` (exact Ornstein-Uhlenbeck update) and applies gain, drift
-// and the common relative drift to the four vacuums.
+// Advances the slow noise to `time_s` (exact Ornstein-Uhlenbeck update) and applies gain, drift,
+// the common relative drift and the residual tare offsets to the four vacuums.
 void ApplyChamberSpread(const ChamberSpreadParams& p, std::uint64_t seed, double time_s,
                         ChamberSpreadState* s, std::array<double, 4>* p_pa);
 
