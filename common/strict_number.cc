@@ -1,5 +1,6 @@
 #include "common/strict_number.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -35,6 +36,37 @@ bool IsDecimal(std::string_view s) {
   }
   return i == s.size();
 }
+
+// Whether decimal text (IsDecimal) denotes a whole number, read from the digits themselves:
+// "12", "1.0", "1.5e1", "3e2" yes; "2.5", "1e-1" no. strtod alone would round
+// "9007199254740990.6" to a whole double.
+bool TextIsWhole(std::string_view s) {
+  std::string digits;
+  long point = -1;  // digits before the decimal point
+  size_t i = 0;
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+  for (; i < s.size() && s[i] != 'e' && s[i] != 'E'; ++i) {
+    if (s[i] == '.') {
+      point = static_cast<long>(digits.size());
+    } else {
+      digits += s[i];
+    }
+  }
+  if (point < 0) point = static_cast<long>(digits.size());
+  long exponent = 0;
+  if (i < s.size()) {
+    const std::string e(s.substr(i + 1));
+    exponent = std::strtol(e.c_str(), nullptr, 10);  // huge exponents saturate; fine below
+  }
+  const long first_fraction = point + std::max(-100000L, std::min(exponent, 100000L));
+  for (long k = std::max(0L, first_fraction); k < static_cast<long>(digits.size()); ++k) {
+    if (digits[static_cast<size_t>(k)] != '0') return false;
+  }
+  return true;
+}
+
+// Doubles hold every whole number up to 2^53; above, "2^53 + 1" would silently become 2^53.
+constexpr double kLargestExactWhole = 9007199254740991.0;  // 2^53 - 1
 
 std::string Quote(std::string_view s) {
   constexpr size_t kMax = 40;  // long garbage is cut in messages
@@ -90,6 +122,13 @@ bool ParseNumber(std::string_view text, const NumberRange& range, double* out, s
     *error = Quote(text) + " is too large; expected " + range.ToString();
     return false;
   }
+  if (range.whole && (!TextIsWhole(t) || std::fabs(v) > kLargestExactWhole)) {
+    *error = Quote(text) +
+             (TextIsWhole(t) ? " is beyond 2^53 - 1, where whole numbers stop being exact"
+                             : " is not a whole number") +
+             "; expected " + range.ToString();
+    return false;
+  }
   if (!range.Contains(v)) {
     *error = Quote(text) + " is outside the valid range; expected " + range.ToString();
     return false;
@@ -133,6 +172,35 @@ bool ParseNumberList(std::string_view text, const NumberRange& range, bool uniqu
     start = comma + 1;
   }
   *out = std::move(values);
+  return true;
+}
+
+bool ParseNameList(std::string_view text, std::vector<std::string>* out, std::string* error) {
+  std::vector<std::string> names;
+  if (Trim(text).empty()) {
+    *error = "empty list; expected comma-separated names";
+    return false;
+  }
+  size_t start = 0;
+  for (int item = 1;; ++item) {
+    const size_t comma = text.find(',', start);
+    const std::string_view cell = Trim(text.substr(
+        start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+    if (cell.empty()) {
+      *error = "item " + std::to_string(item) + " of " + Quote(text) + " is empty (a stray comma?)";
+      return false;
+    }
+    for (const std::string& earlier : names) {
+      if (earlier == cell) {
+        *error = Quote(text) + " lists " + Quote(cell) + " twice";
+        return false;
+      }
+    }
+    names.emplace_back(cell);
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  *out = std::move(names);
   return true;
 }
 

@@ -48,6 +48,10 @@ bool ParseNumber(std::string_view text, const NumberRange& range, double* out, s
 bool ParseNumberList(std::string_view text, const NumberRange& range, bool unique,
                      std::vector<double>* out, std::string* error);
 
+// A comma-separated list of names ("period_s,smoothing_s"), with the same rules: no empty item
+// (a stray comma), no name twice, blanks around items dropped.
+bool ParseNameList(std::string_view text, std::vector<std::string>* out, std::string* error);
+
 }  // namespace ssc
 
 #endif  // SSC_COMMON_STRICT_NUMBER_H_

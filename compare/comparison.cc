@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "robotlog/plain_log.h"
 #include "runtime/mujoco_model.h"
 
 namespace ssc {
@@ -29,6 +30,30 @@ bool RunComparison(const CompareOptions& o, CompareResult* r, std::string* error
   if (!LoadLog(o.log_path, o.processing, &loaded, &load_error)) {
     *error = load_error.ToString();
     return false;
+  }
+  r->log_warnings = loaded.raw.warnings;
+  if (loaded.format != LogFormat::kPlain) {
+    // The plain reader refuses a log without vacuum (robotlog/plain_log.h); the same for the
+    // lab's: a pump that never ran or a sensor unplugged leaves nothing to compare.
+    double peak_pa = 0, peak_t_s = 0;
+    for (size_t i = 0; i < loaded.log.p_pa.size(); ++i) {
+      for (double p : loaded.log.p_pa[i]) {
+        if (p > peak_pa) {
+          peak_pa = p;
+          peak_t_s = loaded.log.t_s[i];
+        }
+      }
+    }
+    if (peak_pa < kPeakVacuumMinPa) {
+      char buf[96];
+      std::snprintf(buf, sizeof(buf), "%.1f Pa (t = %.2f s)", peak_pa, peak_t_s);
+      *error = o.log_path + ": the logged vacuum never exceeds " + buf +
+               " above the in-air offset: the pump off or the sensor unplugged? A trial on an "
+               "object reads more than " +
+               std::to_string(static_cast<int>(kPeakVacuumMinPa)) +
+               " Pa; there is nothing to compare";
+      return false;
+    }
   }
   ModelPtr model = LoadModel(ResolveScenePath(o.scene), error);
   if (!model) return false;

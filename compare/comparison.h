@@ -29,7 +29,8 @@ struct CompareResult {
   ComparisonSetup setup;
   ReplayComparison replay;
   HistoryComparison history;
-  std::string history_warning;  // why the history was not compared, if it exists
+  std::string history_warning;            // why the history was not compared, if it exists
+  std::vector<std::string> log_warnings;  // what the log reader kept quiet about otherwise
   ClosedLoopComparison closed;
 };
 

@@ -4,6 +4,8 @@
 #include <fstream>
 #include <system_error>
 
+#include "common/input_file.h"
+
 namespace ssc {
 
 const char* LogFormatName(LogFormat format) {
@@ -28,6 +30,10 @@ bool DetectLogFormat(const std::string& path, LogFormat* format, LoadError* erro
   if (fs::is_directory(path, ec)) {
     *format = LogFormat::kTopicCsv;
     return true;
+  }
+  if (const std::string why = CheckInputFile(path); !why.empty()) {
+    *error = {path, 0, 0, why};
+    return false;
   }
   if (fs::path(path).extension() == ".mat") {
     *format = LogFormat::kMat;

@@ -3,6 +3,8 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <numeric>
 
 #include "common/tool_names.h"
@@ -19,7 +21,7 @@ double Log10Floor(double p) { return std::log10(std::max(1.0, p)); }
 
 double Correlation(const std::vector<double>& a, const std::vector<double>& b) {
   const double n = static_cast<double>(a.size());
-  if (a.size() < 2) return 0;
+  if (a.size() < 2) return std::numeric_limits<double>::quiet_NaN();
   const double ma = std::accumulate(a.begin(), a.end(), 0.0) / n;
   const double mb = std::accumulate(b.begin(), b.end(), 0.0) / n;
   double sab = 0, saa = 0, sbb = 0;
@@ -28,7 +30,17 @@ double Correlation(const std::vector<double>& a, const std::vector<double>& b) {
     saa += (a[i] - ma) * (a[i] - ma);
     sbb += (b[i] - mb) * (b[i] - mb);
   }
-  return (saa > 0 && sbb > 0) ? sab / std::sqrt(saa * sbb) : 0;
+  // A constant series (a dead sensor, a pump that never ran) has no correlation: NaN, shown as
+  // "n/a" and null in report.json, never a made-up 0.
+  return (saa > 0 && sbb > 0) ? sab / std::sqrt(saa * sbb)
+                              : std::numeric_limits<double>::quiet_NaN();
+}
+
+std::string CorrelationText(double r) {
+  if (!std::isfinite(r)) return "n/a (constant)";
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.3f", r);
+  return buf;
 }
 
 bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,

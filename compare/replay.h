@@ -30,8 +30,10 @@ struct ReplayComparison {
 bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
                ReplayComparison* out, std::string* error);
 
-// Pearson correlation (0 when either side is constant or shorter than 2).
+// Pearson correlation; NaN (undefined) when either side is constant or shorter than 2.
+// CorrelationText shows it: "0.991" or "n/a (constant)".
 double Correlation(const std::vector<double>& a, const std::vector<double>& b);
+std::string CorrelationText(double r);
 
 }  // namespace ssc
 

@@ -116,8 +116,8 @@ bool WriteComparisonReport(const std::string& dir, const ComparisonSetup& setup,
      << "| chamber | RMS error (Pa) | RMS error (log10) | correlation | mean sim / mean log |\n"
      << "| --- | --- | --- | --- | --- |\n";
   for (int k = 0; k < 4; ++k) {
-    md << Fmt("| %.0f | %.1f | %.3f | %.3f | %.3f |\n", k + 1, c.rms_pa[k], c.rms_log10[k],
-              c.correlation[k], c.mean_ratio[k]);
+    md << Fmt("| %.0f | %.1f | %.3f | ", k + 1, c.rms_pa[k], c.rms_log10[k])
+       << CorrelationText(c.correlation[k]) << Fmt(" | %.3f |\n", c.mean_ratio[k]);
   }
   md << Fmt("\nMean pressure: RMS error %.1f Pa, bias (sim - log) %.1f Pa.\n", c.pbar_rms_pa,
             c.pbar_bias_pa)
@@ -154,8 +154,8 @@ bool WriteComparisonReport(const std::string& dir, const ComparisonSetup& setup,
        << Fmt("| r_p_final direction | median %.1f deg |\n", h.r_p_final_median_deg)
        << Fmt("| F_normal | RMS %.2f N, bias %.2f N |\n", h.f_normal_rms_n, h.f_normal_bias_n);
     for (int k = 0; k < 4; ++k) {
-      md << Fmt("| P%.0f | RMS %.1f Pa, correlation %.3f, mean ratio %.3f |\n", k + 1,
-                h.p_rms_pa[k], h.p_correlation[k], h.p_mean_ratio[k]);
+      md << Fmt("| P%.0f | RMS %.1f Pa, correlation ", k + 1, h.p_rms_pa[k])
+         << CorrelationText(h.p_correlation[k]) << Fmt(", mean ratio %.3f |\n", h.p_mean_ratio[k]);
     }
     std::ofstream hist(fs::path(dir) / "history.csv");
     hist << "t_log_s,x_m,y_m,lab_r_p_y,lab_r_p_x,twin_r_p_y,twin_r_p_x,r_p_deg,corr_p_deg,"

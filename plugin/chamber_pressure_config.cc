@@ -124,7 +124,7 @@ const std::vector<ChamberPressureConfigKey>& ChamberPressureConfigKeys() {
       {"lag_ms", "ms", "sensor chain", "first-order lag of tube and sensor (0 = none)",
        NumberRange::Closed(0, 10000), SSC_KEY_SCALED(sensor.lag_s, 1e3, 1e-3)},
       {"seed", "", "sensor chain", "noise seed (combined with the run's seed)",
-       NumberRange::Whole(0, 9007199254740992.0), SSC_KEY_INT(sensor.seed, std::uint64_t)},
+       NumberRange::Whole(0, 9007199254740991.0), SSC_KEY_INT(sensor.seed, std::uint64_t)},
   };
   return keys;
 }

@@ -358,7 +358,7 @@ void ChamberPressureSensor::Reset(mjtNum* plugin_state) const {
 }
 
 void SetChamberPressureRunSeed(const mjModel* m, mjData* d, int instance, std::uint64_t seed) {
-  // Doubles hold integers exactly up to 2^53.
+  // Doubles hold integers exactly up to 2^53 - 1 (the config range).
   d->plugin_state[m->plugin_stateadr[instance] + kSeedSlot] =
       static_cast<double>(seed & ((std::uint64_t{1} << 53) - 1));
 }

@@ -85,6 +85,7 @@ struct RobotLog {
   long long t0_ns = 0;  // ROS time stamp of t = 0
   LabRunArgs args;      // the script's arguments (.mat); empty for CSV
   std::string origin;   // what was read: the folder, the files or the .mat
+  std::vector<std::string> warnings;  // read, but worth a line (e.g. a torn last row dropped)
 };
 
 // The twin's view of a log, on one clock: gauge vacuum per chamber, the tool centre point and

@@ -2,10 +2,12 @@
 
 #include <matio.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <exception>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <string>
@@ -31,6 +33,54 @@ using VarPtr = std::unique_ptr<matvar_t, VarFreer>;
 constexpr char kColumnSuffix[] = "_columnName";
 constexpr char kDataSuffix[] = "_data";
 constexpr size_t kHistoryColumns = 11;  // t, x, y, r_p, corr_p, r_p_final, F, P1..P4
+
+// A level-5 MAT file is a 128-byte header and a chain of top-level elements, each a tag (type,
+// byte count) and its bytes. matio stops quietly at an element cut short, so a truncated file
+// (a copy that did not finish, a disk that filled up) would lose its last variables without a
+// word: walk the chain and require it to end exactly at the end of the file. Other versions
+// (v4 without a header, v7.3 = HDF5) are left to matio.
+bool CheckMat5Complete(const std::string& path, LoadError* error) {
+  std::ifstream f(path, std::ios::binary);
+  unsigned char header[128];
+  if (!f.read(reinterpret_cast<char*>(header), sizeof(header))) return true;  // matio decides
+  const bool little = header[126] == 'I' && header[127] == 'M';
+  const bool big = header[126] == 'M' && header[127] == 'I';
+  if (!little && !big) return true;
+  auto u16 = [&](const unsigned char* b) {
+    return little ? static_cast<unsigned>(b[0] | b[1] << 8)
+                  : static_cast<unsigned>(b[1] | b[0] << 8);
+  };
+  auto u32 = [&](const unsigned char* b) {
+    return little ? (std::uint32_t{b[0]} | std::uint32_t{b[1]} << 8 | std::uint32_t{b[2]} << 16 |
+                     std::uint32_t{b[3]} << 24)
+                  : (std::uint32_t{b[3]} | std::uint32_t{b[2]} << 8 | std::uint32_t{b[1]} << 16 |
+                     std::uint32_t{b[0]} << 24);
+  };
+  if (u16(header + 124) != 0x0100) return true;  // not level 5
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) return true;
+  std::uintmax_t offset = sizeof(header);
+  for (int element = 1; offset < size; ++element) {
+    unsigned char tag[8];
+    f.seekg(static_cast<std::streamoff>(offset));
+    const bool whole_tag = size - offset >= 8 && f.read(reinterpret_cast<char*>(tag), 8);
+    const std::uint32_t type = whole_tag ? u32(tag) : 0;
+    std::uintmax_t end = offset + 8;  // (a small element keeps its data in the tag)
+    if (whole_tag && (type >> 16) == 0) end += u32(tag + 4);
+    if (!whole_tag || end > size) {
+      text::SetError(error, path, 0, 0,
+                     "the file is cut short: top-level element " + std::to_string(element) +
+                         " (at byte " + std::to_string(offset) + ") ends at byte " +
+                         std::to_string(end) + ", the file has " + std::to_string(size) +
+                         " (an unfinished copy or save?); variables after it would be lost");
+      return false;
+    }
+    // Elements start on 8-byte boundaries, except after miCOMPRESSED (type 15).
+    offset = type == 15 ? end : std::min<std::uintmax_t>((end + 7) / 8 * 8, size);
+  }
+  return true;
+}
 
 template <typename T>
 void Convert(const void* data, size_t n, std::vector<double>* out) {
@@ -487,16 +537,7 @@ bool WriteArgs(mat_t* mat, const LabRunArgs& a, std::string* error) {
 bool LoadRobotLogMat(const std::string& path, RobotLog* log, LoadError* error) {
   try {
     *log = RobotLog();
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    if (!fs::exists(path, ec)) {
-      text::SetError(error, path, 0, 0, "no such file");
-      return false;
-    }
-    if (fs::is_directory(path, ec)) {
-      text::SetError(error, path, 0, 0, "is a directory, expected a .mat file");
-      return false;
-    }
+    if (!text::CheckReadableFile(path, error) || !CheckMat5Complete(path, error)) return false;
     MatPtr mat(Mat_Open(path.c_str(), MAT_ACC_RDONLY));
     if (!mat) {
       text::SetError(error, path, 0, 0, "not a MATLAB file matio can open (v4, v5 or v7.3)");

@@ -80,6 +80,13 @@ bool CheckStreamClock(const Stream& s, StreamId id, LoadError* e) {
   return Fail(s, id, at, -1, problem, e);
 }
 
+std::string Span(const Stream& s) {
+  return "[" + Num(s.t_s.front()) + ", " + Num(s.t_s.back()) + "] s";
+}
+
+// Pose and pressure must overlap for at least this share of the pressure stream's span.
+constexpr double kMinStreamOverlap = 0.5;
+
 bool CheckPressure(const Stream& s, LoadError* e) {
   for (size_t i = 0; i < s.size(); ++i) {
     for (int c = 1; c <= 4; ++c) {
@@ -132,10 +139,6 @@ bool CheckPwm(const Stream& s, LoadError* e) {
     }
   }
   return true;
-}
-
-std::string Span(const Stream& s) {
-  return "[" + Num(s.t_s.front()) + ", " + Num(s.t_s.back()) + "] s";
 }
 
 }  // namespace
@@ -223,6 +226,22 @@ bool ValidateRobotLog(const RobotLog& log, LoadError* error) {
     for (const LabTopic& spec : LabTopics()) {
       const Stream& s = *streams[static_cast<size_t>(spec.id)];
       if (!s.empty() && !CheckStreamClock(s, spec.id, error)) return false;
+    }
+    // Pressure and pose must describe the same run: a pose file cut short (or from another
+    // recording) would replay a sliver of it while the report looked whole.
+    const Stream& p = log.pressure_abs;
+    const Stream& q = log.tool_pose;
+    const double p_span_s = p.t_s.back() - p.t_s.front();
+    const double overlap_s =
+        std::min(p.t_s.back(), q.t_s.back()) - std::max(p.t_s.front(), q.t_s.front());
+    if (p_span_s > 0 && overlap_s < kMinStreamOverlap * p_span_s) {
+      text::SetError(error, q.source.empty() ? "log" : q.source, 0, 0,
+                     "the pose stream covers " + Span(q) + ", the pressure stream " + Span(p) +
+                         (overlap_s > 0 ? ": they overlap for only " + Num(overlap_s) +
+                                              " s, less than half the recording"
+                                        : ": they do not overlap") +
+                         " (a file cut short, or from another recording?)");
+      return false;
     }
     return true;
   } catch (const std::exception& ex) {

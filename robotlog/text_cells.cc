@@ -10,6 +10,8 @@
 #include <sstream>
 #include <system_error>
 
+#include "common/input_file.h"
+
 namespace ssc::text {
 
 std::string_view Trim(std::string_view s) {
@@ -77,23 +79,17 @@ std::string Quote(std::string_view cell) {
 }
 
 bool CheckReadableFile(const std::string& path, LoadError* error) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (!fs::exists(status)) {
-    SetError(error, path, 0, 0, "no such file");
-    return false;
-  }
-  if (fs::is_directory(status)) {
-    SetError(error, path, 0, 0, "is a directory, expected a file");
+  if (const std::string why = CheckInputFile(path); !why.empty()) {
+    SetError(error, path, 0, 0, why);
     return false;
   }
   return true;
 }
 
 bool ForEachFileLine(const std::string& path, const std::function<bool(int, std::string_view)>& fn,
-                     LoadError* error, bool* stopped) {
+                     LoadError* error, bool* stopped, int* torn_last) {
   if (stopped != nullptr) *stopped = false;
+  if (torn_last != nullptr) *torn_last = 0;
   if (!CheckReadableFile(path, error)) return false;
   std::ifstream f(path, std::ios::binary);
   if (!f) {
@@ -143,7 +139,12 @@ bool ForEachFileLine(const std::string& path, const std::function<bool(int, std:
     SetError(error, path, line_no + 1, 0, "read error");
     return false;
   }
-  if (!line.empty() && !deliver() && stopped != nullptr) *stopped = true;
+  if (line.empty()) return true;
+  if (torn_last != nullptr && line_no >= 1) {
+    *torn_last = line_no + 1;
+    return true;
+  }
+  if (!deliver() && stopped != nullptr) *stopped = true;
   return true;
 }
 

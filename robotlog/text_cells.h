@@ -51,15 +51,18 @@ inline constexpr size_t kMaxLineBytes = 64 * 1024;
 // Reads `path` line by line (at most kMaxLineBytes per line, never the whole file at once) and
 // calls `fn(line_number, line)` as ForEachLine does. False with an error naming the file and
 // line when the file cannot be read or a line is too long; `stopped` tells that fn said stop.
+// With `torn_last` given, a last line without a line end after at least one whole line is not
+// delivered: *torn_last gets its line number (0 when there is none). A logger stopped while
+// writing leaves such a row, whose last cell may be cut mid-number.
 bool ForEachFileLine(const std::string& path, const std::function<bool(int, std::string_view)>& fn,
-                     LoadError* error, bool* stopped = nullptr);
+                     LoadError* error, bool* stopped = nullptr, int* torn_last = nullptr);
 
 // The cell as it may appear in a message: quoted, at most 24 characters, unprintable bytes as
 // \xNN (fuzzed or binary input must not garble the error text).
 std::string Quote(std::string_view cell);
 
-// Checks that `path` is a readable regular file. Reports a missing file, a directory and an
-// unreadable file apart.
+// Checks that `path` is a readable regular file (common/input_file.h): reports a missing file,
+// a directory, a FIFO or device (which would block or never end) and an unreadable file apart.
 bool CheckReadableFile(const std::string& path, LoadError* error);
 
 // Python's repr() of a float, as the lab's logger writes values: the shortest round-trip digits,

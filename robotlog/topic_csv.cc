@@ -385,13 +385,16 @@ bool ReadTopicCsv(const std::string& path, TopicTable* table, LoadError* error) 
     *error = LoadError();
     TopicParser parser(path, table, error);
     bool ok = true;
+    int torn = 0;
     if (!text::ForEachFileLine(
             path,
             [&](int line_no, std::string_view line) { return ok = parser.Line(line_no, line); },
-            error)) {
+            error, nullptr, &torn)) {
       return false;
     }
-    return parser.Finish(ok);
+    if (!parser.Finish(ok)) return false;
+    table->torn_last_line = torn;
+    return true;
   } catch (const std::exception& ex) {
     text::SetError(error, path, 0, 0, std::string("cannot read: ") + ex.what());
     return false;
@@ -461,6 +464,11 @@ bool LoadTopicCsvRecording(const std::string& path, RobotLog* log, LoadError* er
       TopicTable table;
       if (!ReadTopicCsv(file, &table, error)) return false;
       if (table.header.topic == nullptr) continue;  // e.g. /sync
+      if (table.torn_last_line > 0) {
+        log->warnings.push_back(file + ":" + std::to_string(table.torn_last_line) +
+                                ": the last row has no line end (the logger stopped while "
+                                "writing it; its last value may be cut): dropped");
+      }
       const size_t i = static_cast<size_t>(table.header.topic->id);
       if (!sources[i].empty()) {
         text::SetError(error, file, 1, 0,

@@ -66,6 +66,7 @@ struct TopicTable {
   std::vector<long long> t_ns;
   std::vector<std::vector<double>> rows;  // header.topic->size() values each
   std::vector<int> lines;                 // file line of each row (1-based)
+  int torn_last_line = 0;  // ReadTopicCsv: the line of a dropped last row without a line end
 };
 
 // Parses one topic file's text; `file` names it in errors. Time stamps must be non-negative
@@ -73,7 +74,9 @@ struct TopicTable {
 // use parses its header only (header.topic == nullptr, no rows).
 bool ParseTopicCsv(std::string_view text, const std::string& file, TopicTable* table,
                    LoadError* error);
-// The same from a file, read line by line (bounded memory: text::kMaxLineBytes per line).
+// The same from a file, read line by line (bounded memory: text::kMaxLineBytes per line). A last
+// row without a line end (the logger stopped mid-row: its last number may be cut) is dropped
+// and its line number kept in table->torn_last_line.
 bool ReadTopicCsv(const std::string& path, TopicTable* table, LoadError* error);
 
 // The files of one recording. `path`: a folder holding exactly one recording's

@@ -11,6 +11,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "common/input_file.h"
 #include "plugin/chamber_pressure_config.h"
 
 namespace ssc {
@@ -46,7 +47,11 @@ class WarningCapture {
   std::lock_guard<std::mutex> lock_;
 };
 
-bool FileExists(const std::string& path) { return std::ifstream(path).good(); }
+// Looks, never opens: opening a FIFO for reading would block.
+bool FileExists(const std::string& path) {
+  std::error_code ec;
+  return std::filesystem::exists(path, ec);
+}
 
 bool HasResources(const std::filesystem::path& dir) {
   return FileExists((dir / "models" / "ssc_tool.xml").string());
@@ -164,8 +169,8 @@ ModelPtr LoadModelFromTexts(const ModelTexts& texts, const std::string& label, s
 
 ModelPtr LoadModel(const std::string& path, std::string* error) {
   InstallMuJoCoMessageHandlers();
-  if (!FileExists(path)) {
-    *error = path + ": file not found";
+  if (const std::string why = CheckInputFile(path); !why.empty()) {
+    *error = path + ": " + why;
     return nullptr;
   }
   // MuJoCo passes value="" to plugins as if the key were absent (silently the default).
@@ -189,12 +194,20 @@ ModelPtr LoadModel(const std::string& path, std::string* error) {
 }
 
 std::string CheckTimestep(double timestep_s, std::string* warning) {
-  char buf[256];
+  char buf[320];
   if (!std::isfinite(timestep_s) || timestep_s <= 0) {
     std::snprintf(buf, sizeof(buf),
                   "time step %g s must be > 0 (<option timestep=...>; tested "
                   "stable up to %g ms, docs/stability.md)",
                   timestep_s, kLargestTestedTimestepS * 1e3);
+    return buf;
+  }
+  if (timestep_s < kSmallestTimestepS) {
+    std::snprintf(buf, sizeof(buf),
+                  "time step %g ms is below %g ms, the smallest accepted (<option "
+                  "timestep=...>): a 10 s trial would take %.3g steps; results are unchanged "
+                  "from 0.5 ms down (docs/stability.md)",
+                  timestep_s * 1e3, kSmallestTimestepS * 1e3, 10 / timestep_s);
     return buf;
   }
   if (warning && timestep_s > kLargestTestedTimestepS * (1 + 1e-9)) {

@@ -18,6 +18,18 @@ std::string RangeError(const char* field, double v, const char* range) {
 
 bool Finite(double v) { return std::isfinite(v); }
 
+// The servo brings the tool within 0.2 mm of a set point in well under a second; a set point it
+// has not reached this long after the target got there lies out of the arm's (or the gantry's)
+// reach, and the trial would otherwise wait for ever.
+constexpr double kReachWaitS = 5.0;
+
+std::string PointText(const Vec3& p) {
+  std::ostringstream os;
+  os.precision(4);
+  os << std::fixed << "(" << p[0] << ", " << p[1] << ") m";
+  return os.str();
+}
+
 // World x/y displacement to the tool frame (site rotation, row-major).
 std::array<double, 2> WorldToTool(const mjtNum* R, double wx, double wy) {
   return {R[0] * wx + R[3] * wy, R[1] * wx + R[4] * wy};
@@ -67,6 +79,12 @@ std::string TrialConfig::Validate() const {
   if (const std::string e = target.goal.Validate(); !e.empty()) return e;
   if (!Finite(timeout_s) || timeout_s <= 0 || timeout_s > 3600)
     return RangeError("timeout_s", timeout_s, "(0, 3600] s");
+  if (control_period_s > timeout_s) {
+    std::ostringstream os;
+    os << "control_period_s = " << control_period_s << " s is longer than timeout_s = " << timeout_s
+       << " s: the trial would end before its first control iteration";
+    return os.str();
+  }
   if (!Finite(servo.smoothing_s) || servo.smoothing_s < 0 || servo.smoothing_s > 5)
     return RangeError("servo smoothing_s", servo.smoothing_s, "[0, 5] s");
   if (!Finite(log_period_s) || log_period_s <= 0 || log_period_s > 1)
@@ -155,6 +173,7 @@ void ContourTrial::Reset() {
   }
   start_point_ = {config_.target.start[0], config_.target.start[1], 0};
   transfer_done_ = false;
+  reach_wait_since_s_ = -1;
   lip_shear_ = LipShearState();
   ResetChamberSpread(config_.effects.chambers, EffectsSeed(), &chamber_spread_);
   last_tool_ = servo_ ? servo_->Measured(d_) : Vec3{};
@@ -270,8 +289,12 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
         target[0] = config_.target.approach[0];
         target[1] = config_.target.approach[1];
         servo_->SetTarget(target);
-        if (std::hypot(tool[0] - target[0], tool[1] - target[1]) > 2e-4) break;
+        if (std::hypot(tool[0] - target[0], tool[1] - target[1]) > 2e-4) {
+          ReachTimedOut(t, "landing point", target);
+          break;
+        }
         transfer_done_ = true;
+        reach_wait_since_s_ = -1;
       }
       const bool deep_enough =
           tool[2] <= config_.target.surface_top_z_m - config_.target.max_compression_m;
@@ -299,7 +322,9 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
       } else {
         target[0] = start_point_[0];
         target[1] = start_point_[1];
-        if (std::hypot(tool[0] - start_point_[0], tool[1] - start_point_[1]) < 2e-4) {
+        if (std::hypot(tool[0] - start_point_[0], tool[1] - start_point_[1]) >= 2e-4) {
+          ReachTimedOut(t, "start point", start_point_);
+        } else {
           phase_ = TrialPhase::kFollow;
           follow_start_s_ = t;
           next_iteration_s_ = t;
@@ -359,6 +384,27 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
       break;
   }
   servo_->Track(m_, d_);
+}
+
+bool ContourTrial::ReachTimedOut(double t, const char* what, const Vec3& point) {
+  if (reach_wait_since_s_ < 0) reach_wait_since_s_ = t;
+  if (t - reach_wait_since_s_ <= kReachWaitS) return false;
+  const Vec3 tool = servo_->Measured(d_);
+  std::ostringstream os;
+  os.precision(1);
+  os << std::fixed << "the tool did not reach the " << what << " " << PointText(point) << " within "
+     << kReachWaitS << " s (it stays " << 1e3 * std::hypot(tool[0] - point[0], tool[1] - point[1])
+     << " mm away): out of reach? (--start-offset, the object's place)";
+  Finish(Outcome::kTimeout, os.str());
+  return true;
+}
+
+std::string CheckTrialScene(const mjModel* m, const TrialConfig& config) {
+  std::string error;
+  DataPtr data = MakeData(m, &error);
+  if (!data) return "could not make mjData: " + error;
+  if (!ContourTrial::Create(m, data.get(), config, false, &error)) return error;
+  return "";
 }
 
 bool ContourTrial::Step() {

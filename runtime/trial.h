@@ -145,6 +145,9 @@ class ContourTrial : public ControlCallback {
  private:
   ContourTrial(const mjModel* m, mjData* d, const TrialConfig& config, bool keep_log);
   void Finish(Outcome outcome, const std::string& detail);
+  // While the tool has not yet reached `point` (target already there): ends the trial as a
+  // timeout naming the point once it has waited kReachWaitS; true when it did.
+  bool ReachTimedOut(double t, const char* what, const Vec3& point);
   double FtNormalForce() const;
   void Log(bool iteration);
   // The effects' draws come from the trial seed, in streams apart from the plugin's noise.
@@ -165,6 +168,7 @@ class ContourTrial : public ControlCallback {
   double next_iteration_s_ = 0, next_log_s_ = 0, follow_start_s_ = 0;
   double next_log_time_s_ = 0;  // next row of the trial log (all phases)
   Vec3 start_point_{};
+  double reach_wait_since_s_ = -1;  // when the tool began waiting to reach a set point
   GoalTracker goal_;
   ContourStep last_step_{};
   std::array<double, 2> last_step_world_{};
@@ -183,6 +187,11 @@ class ContourTrial : public ControlCallback {
   bool external_policy_ = false, awaiting_step_ = false;
   Vec3 iteration_tool_{};  // measured tool position at the waiting iteration
 };
+
+// Whether a trial with `config` can be set up on `m` (the pressure sensor, the F/T sensor, a
+// gantry or an arm, a valid config and time step): "" or the reason. For commands to check a
+// scene before they create outputs or run a study; RunSweep checks it too.
+std::string CheckTrialScene(const mjModel* m, const TrialConfig& config);
 
 // Loads nothing: runs one trial on an existing model with its own mjData.
 // Checks that `m` can host a trial with `config` (sensors, sites, servo, time step) without

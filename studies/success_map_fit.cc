@@ -107,25 +107,31 @@ bool EvaluateDynamic(const mjModel* m, const DynamicFitSpec& spec, const TrialCo
   return true;
 }
 
-bool FitDynamic(const mjModel* m, const DynamicFitSpec& spec,
-                const std::function<void(const std::string&)>& log, DynamicFitResult* result,
-                std::string* error) {
-  std::vector<const DynamicParameter*> params;
-  for (const std::string& k : spec.keys) {
-    const DynamicParameter* p = FindParameter(k);
-    if (p == nullptr) {
+std::string CheckDynamicKeys(const std::vector<std::string>& keys) {
+  if (keys.empty()) return "no parameters to fit";
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (FindParameter(keys[i]) == nullptr) {
       std::string names;
       for (const DynamicParameter& q : DynamicParameters())
         names += std::string(names.empty() ? "" : ", ") + q.key;
-      *error = "dynamic fit: unknown parameter '" + k + "' (parameters: " + names + ")";
-      return false;
+      return "unknown parameter '" + keys[i] + "' (parameters: " + names + ")";
     }
-    params.push_back(p);
+    for (std::size_t j = 0; j < i; ++j) {
+      if (keys[j] == keys[i]) return "parameter '" + keys[i] + "' is listed twice";
+    }
   }
-  if (params.empty()) {
-    *error = "dynamic fit: no parameters to fit";
+  return "";
+}
+
+bool FitDynamic(const mjModel* m, const DynamicFitSpec& spec,
+                const std::function<void(const std::string&)>& log, DynamicFitResult* result,
+                std::string* error) {
+  if (const std::string e = CheckDynamicKeys(spec.keys); !e.empty()) {
+    *error = "dynamic fit: " + e;
     return false;
   }
+  std::vector<const DynamicParameter*> params;
+  for (const std::string& k : spec.keys) params.push_back(FindParameter(k));
   const auto t0 = std::chrono::steady_clock::now();
   TrialConfig start = spec.base;
   std::vector<double> x0(params.size());

@@ -26,6 +26,9 @@ struct DynamicParameter {
 };
 // Every parameter the dynamic fit may move (period, servo smoothing and the effects' keys).
 const std::vector<DynamicParameter>& DynamicParameters();
+// "" when `keys` name at least one parameter, each a DynamicParameters() key, none twice; else
+// the problem, listing the valid keys.
+std::string CheckDynamicKeys(const std::vector<std::string>& keys);
 
 // One Fig. 6 target at dL 5 mm (the map's cells; metrics of the successful trials).
 struct MetricTarget {

@@ -12,6 +12,7 @@
 
 #include "common/counter_rng.h"
 #include "common/strict_number.h"
+#include "controller/pure/robot_effects.h"
 #include "runtime/mujoco_model.h"
 #include "studies/job_runner.h"
 #include "studies/sweep_io.h"
@@ -53,7 +54,8 @@ SweepManifest MakeManifest(const mjModel* m, const SweepSpec& spec) {
           {"off_edge_pa", num(c.thresholds.off_edge_pa)},
           {"grasp_pa", num(c.thresholds.grasp_pa)},
           {"goal_sweep_deg", num(c.target.goal.sweep_deg)},
-          {"goal_band_m", num(c.target.goal.band_m)}};
+          {"goal_band_m", num(c.target.goal.band_m)},
+          {"effects", FormatRobotEffects(c.effects)}};
 }
 
 // MuJoCo calls mju_user_error on fatal errors (the default exits the process); a sweep turns
@@ -104,17 +106,48 @@ double EstimatedTrialCost(const TrialConfig& c) {
   return 5.0 + lap_mm / (4.0 * std::max(c.law.step_mm, 0.1));
 }
 
-bool RunSweep(const mjModel* m, const SweepSpec& spec,
-              const std::function<void(const SweepProgress&)>& progress, SweepSummary* summary,
-              std::string* error) {
+namespace {
+
+std::vector<std::array<double, 3>> GridPoints(const SweepSpec& spec) {
   std::vector<std::array<double, 3>> points = spec.points;
   if (points.empty()) {
     for (double pref : spec.pref_pa)
       for (double beta : spec.beta)
         for (double step : spec.step_mm) points.push_back({pref, beta, step});
   }
+  return points;
+}
+
+TrialConfig PointConfig(const SweepSpec& spec, const std::array<double, 3>& point, int repeat) {
+  TrialConfig c = spec.base;
+  c.law.p_ref_pa = point[0];
+  c.law.beta = point[1];
+  c.law.step_mm = point[2];
+  c.seed = TrialSeed(spec.seed, point[0], point[1], point[2], repeat);
+  return c;
+}
+
+}  // namespace
+
+std::string CheckSweepGrid(const SweepSpec& spec) {
+  const std::vector<std::array<double, 3>> points = GridPoints(spec);
   if (points.empty() || spec.repeats < 1) {
-    *error = "sweep grid is empty (need at least one P_ref, beta, step and repeat)";
+    return "sweep grid is empty (need at least one P_ref, beta, step and repeat)";
+  }
+  for (const auto& point : points) {
+    if (const std::string e = PointConfig(spec, point, 0).Validate(); !e.empty()) {
+      return "sweep point P_ref " + FormatNumber(point[0]) + " Pa, beta " + FormatNumber(point[1]) +
+             ", step " + FormatNumber(point[2]) + " mm: " + e;
+    }
+  }
+  return "";
+}
+
+bool RunSweep(const mjModel* m, const SweepSpec& spec,
+              const std::function<void(const SweepProgress&)>& progress, SweepSummary* summary,
+              std::string* error) {
+  if (std::string e = CheckSweepGrid(spec); !e.empty()) {
+    *error = e;
     return false;
   }
   struct Job {
@@ -123,20 +156,15 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
   };
   // The whole grid, the same on every rank; only rank 0 reads the CSV to skip finished rows.
   std::vector<Job> jobs;
-  for (const auto& [pref, beta, step] : points) {
-    for (int rep = 0; rep < spec.repeats; ++rep) {
-      Job job{spec.base, rep};
-      job.config.law.p_ref_pa = pref;
-      job.config.law.beta = beta;
-      job.config.law.step_mm = step;
-      job.config.seed = TrialSeed(spec.seed, pref, beta, step, rep);
-      if (const std::string e = job.config.Validate(); !e.empty()) {
-        *error = "sweep point P_ref=" + std::to_string(pref) + " beta=" + std::to_string(beta) +
-                 " step=" + std::to_string(step) + ": " + e;
-        return false;
-      }
-      jobs.push_back(job);
-    }
+  for (const auto& point : GridPoints(spec)) {
+    for (int rep = 0; rep < spec.repeats; ++rep)
+      jobs.push_back({PointConfig(spec, point, rep), rep});
+  }
+  // A scene unfit for a trial (no sensor, no arm or gantry) is an error, not a grid of
+  // "unstable" rows.
+  if (std::string e = CheckTrialScene(m, jobs.front().config); !e.empty()) {
+    *error = spec.scene_name + ": " + e;
+    return false;
   }
   // A scene that cannot host a trial fails here, before any row, not as rows of "unstable".
   if (std::string setup_error; !CheckTrialSetup(m, jobs.front().config, &setup_error)) {

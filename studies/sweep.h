@@ -68,6 +68,10 @@ TrialResult RunGuardedTrial(const mjModel* m, const TrialConfig& config);
 // calls it; rank 0 writes the CSV. `progress` (optional) is called on rank 0 after each row. False
 // + *error on I/O or spec errors; trial failures, instabilities and MuJoCo errors are rows, not
 // errors.
+// The spec's grid without running it: every point's trial config valid, at least one point and
+// one repeat. "" or the first problem, naming the point. RunSweep checks it first.
+std::string CheckSweepGrid(const SweepSpec& spec);
+
 bool RunSweep(const mjModel* m, const SweepSpec& spec,
               const std::function<void(const SweepProgress&)>& progress, SweepSummary* summary,
               std::string* error);

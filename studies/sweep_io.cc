@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "common/input_file.h"
 #include "common/strict_number.h"
 
 namespace ssc {
@@ -40,7 +41,7 @@ bool ParseKey(const std::vector<std::string_view>& f, SweepRowKey* key) {
       !ParseNumber(f[2], NumberRange::Closed(0, 100), &beta, &e) ||
       !ParseNumber(f[3], NumberRange::Positive(100), &step, &e) ||
       !ParseNumber(f[4], NumberRange::Whole(0, 1e6), &repeat, &e) ||
-      !ParseNumber(f[5], NumberRange::Whole(0, 9007199254740992.0), &seed, &e)) {
+      !ParseNumber(f[5], NumberRange::Whole(0, 9007199254740991.0), &seed, &e)) {
     return false;
   }
   *key = {pref, beta, step, static_cast<int>(repeat), static_cast<std::uint64_t>(seed)};
@@ -94,7 +95,14 @@ bool LoadSweepCsvForResume(const std::string& path, const std::string& header,
                            SweepCsvContents* contents, std::string* error) {
   *contents = SweepCsvContents();
   std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) return true;
+  if (!std::filesystem::exists(path, ec) &&
+      !std::filesystem::is_symlink(std::filesystem::symlink_status(path, ec))) {
+    return true;
+  }
+  if (const std::string why = CheckInputFile(path); !why.empty()) {
+    *error = path + ": " + why + " (the CSV a sweep resumes)";
+    return false;
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     *error = path + ": cannot read";
@@ -213,6 +221,10 @@ bool CheckOrWriteSweepManifest(const std::string& csv_path, bool csv_has_rows,
   const std::string path = SweepManifestPath(csv_path);
   std::error_code ec;
   if (std::filesystem::exists(path, ec)) {
+    if (const std::string why = CheckInputFile(path); !why.empty()) {
+      *error = path + ": " + why;
+      return false;
+    }
     std::ifstream in(path);
     std::stringstream buf;
     buf << in.rdbuf();

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "common/input_file.h"
 #include "common/strict_number.h"
 #include "controller/pure/robot_effects.h"
 #include "studies/job_runner.h"
@@ -82,6 +83,10 @@ bool ReadTrialOutcomes(const std::string& path,
 
 bool ReadPublishedMap(const std::string& path, std::vector<MapCell>* cells, std::string* error) {
   cells->clear();
+  if (const std::string why = CheckInputFile(path); !why.empty()) {
+    *error = path + ": " + why + " (the published map)";
+    return false;
+  }
   std::ifstream f(path);
   if (!f) {
     *error = path + ": cannot open the published map";
@@ -112,8 +117,10 @@ bool ReadPublishedMap(const std::string& path, std::vector<MapCell>* cells, std:
       return false;
     }
     MapCell cell;
-    if (!ReadNumber(c[0], 1e-3, 100, &cell.step_mm)) {
-      *error = where(0) + ": step_mm '" + c[0] + "' must be a number in [0.001, 100] mm";
+    if (!ReadNumber(c[0], kMinStepMm, kMaxStepMm, &cell.step_mm)) {
+      *error = where(0) + ": step_mm '" + c[0] + "' must be a number in [" +
+               FormatNumber(kMinStepMm) + ", " + FormatNumber(kMaxStepMm) +
+               "] mm (below: metres given as mm?)";
       return false;
     }
     if (!ReadNumber(c[1], 0, 100, &cell.beta)) {
@@ -146,23 +153,34 @@ bool ReadPublishedMap(const std::string& path, std::vector<MapCell>* cells, std:
   return true;
 }
 
-bool RunValidation(const mjModel* m, const ValidateSpec& spec,
-                   const std::function<void(const SweepProgress&)>& progress, MapScore* score,
-                   SweepSummary* summary, std::string* error) {
-  std::vector<MapCell> cells;
-  if (!ReadPublishedMap(spec.map_path, &cells, error)) return false;
+bool PrepareValidation(const ValidateSpec& spec, std::vector<MapCell>* cells, SweepSpec* sweep,
+                       std::string* error) {
+  if (!ReadPublishedMap(spec.map_path, cells, error)) return false;
   if (spec.seeds < 3) {
     *error = "seeds = " + std::to_string(spec.seeds) + " is out of range [3, 10000]";
     return false;
   }
+  *sweep = SweepSpec();
+  sweep->scene_name = spec.scene_name;
+  sweep->base = spec.base;
+  for (const MapCell& c : *cells) sweep->points.push_back({c.pref_pa, c.beta, c.step_mm});
+  sweep->repeats = spec.seeds;
+  sweep->seed = spec.seed;
+  sweep->threads = spec.threads;
+  sweep->out_csv = spec.out_dir + "/trials.csv";
+  if (std::string e = CheckSweepGrid(*sweep); !e.empty()) {
+    *error = spec.map_path + ": " + e;
+    return false;
+  }
+  return true;
+}
+
+bool RunValidation(const mjModel* m, const ValidateSpec& spec,
+                   const std::function<void(const SweepProgress&)>& progress, MapScore* score,
+                   SweepSummary* summary, std::string* error) {
+  std::vector<MapCell> cells;
   SweepSpec sweep;
-  sweep.scene_name = spec.scene_name;
-  sweep.base = spec.base;
-  for (const MapCell& c : cells) sweep.points.push_back({c.pref_pa, c.beta, c.step_mm});
-  sweep.repeats = spec.seeds;
-  sweep.seed = spec.seed;
-  sweep.threads = spec.threads;
-  sweep.out_csv = spec.out_dir + "/trials.csv";
+  if (!PrepareValidation(spec, &cells, &sweep, error)) return false;
   if (!RunSweep(m, sweep, progress, summary, error)) return false;
   if (JobRunnerRank() != 0) return true;
   if (summary->interrupted) {

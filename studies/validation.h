@@ -30,6 +30,11 @@ struct ValidateSpec {
   std::string out_dir;  // trials.csv (resumable), cells.csv, validate.json
 };
 
+// Reads the map and checks every cell's trial config (with spec.base) without running or
+// writing anything; fills the cells and the sweep RunValidation runs. RunValidation calls it.
+bool PrepareValidation(const ValidateSpec& spec, std::vector<MapCell>* cells, SweepSpec* sweep,
+                       std::string* error);
+
 // Runs and scores. Rank 0 writes the files and fills *score; other ranks only run trials.
 bool RunValidation(const mjModel* m, const ValidateSpec& spec,
                    const std::function<void(const SweepProgress&)>& progress, MapScore* score,

@@ -3,6 +3,7 @@
 // case with the file, line and column it must name, and seeded perturbations of valid files.
 #include <gtest/gtest.h>
 #include <matio.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -763,6 +764,60 @@ TEST(RobotLogTest, BadUnitsAndFilesInARecording) {
   EXPECT_EQ(e.ToString(), dir / "none.csv" + ": no such file");
 }
 
+// What a logger stopped mid-row or an unfinished copy leaves, and inputs that are not files.
+TEST(RobotLogTest, CutFilesAndNonRegularFilesAreTrimmedWithAWarningOrRefused) {
+  TempDir dir("cut");
+  {  // A topic file whose last row lost its line end and part of its last number: dropped, said.
+    const Recording r = WriteRecording(dir);
+    RobotLog whole, cut;
+    LoadError e;
+    ASSERT_TRUE(LoadTopicCsvRecording(r.folder, &whole, &e)) << e.ToString();
+    EXPECT_TRUE(whole.warnings.empty());
+    std::ifstream in(r.pressure, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_EQ(text.back(), '\n');
+    WriteText(r.pressure, text.substr(0, text.size() - 4));
+    ASSERT_TRUE(LoadTopicCsvRecording(r.folder, &cut, &e)) << e.ToString();
+    EXPECT_EQ(cut.pressure_abs.size() + 1, whole.pressure_abs.size());
+    ASSERT_EQ(cut.warnings.size(), 1u);
+    EXPECT_NE(cut.warnings[0].find("no line end"), std::string::npos) << cut.warnings[0];
+    EXPECT_NE(cut.warnings[0].find(r.pressure), std::string::npos) << cut.warnings[0];
+  }
+  {  // A .mat cut anywhere (level 5, plain and compressed) is refused, not read in part.
+    RobotLog log = MakeRobotLog(TwinRun(), LogPerturbation());
+    log.args = DiskArgs();
+    const std::string path = dir / "whole.mat", cut_path = dir / "cut.mat";
+    std::string error;
+    ASSERT_TRUE(WriteRobotLogMat(path, log, &error)) << error;
+    std::ifstream in(path, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    RobotLog back;
+    LoadError e;
+    ASSERT_TRUE(LoadRobotLogMat(path, &back, &e)) << e.ToString();
+    for (size_t keep : {bytes.size() - 1, bytes.size() * 2 / 3, bytes.size() / 2, size_t{300}}) {
+      WriteText(cut_path, bytes.substr(0, keep));
+      EXPECT_FALSE(LoadRobotLogMat(cut_path, &back, &e)) << keep;
+      EXPECT_NE(e.message.find("cut short"), std::string::npos) << keep << ": " << e.ToString();
+    }
+  }
+  // A FIFO would block the reader for ever, a directory is no file: refused before opening.
+  const std::string fifo = dir / "pipe.csv", fifo_mat = dir / "pipe.mat";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  ASSERT_EQ(::mkfifo(fifo_mat.c_str(), 0600), 0);
+  ProcessedLog p;
+  RobotLog log;
+  TopicTable table;
+  LoadError e;
+  EXPECT_FALSE(LoadPlainLog(fifo, &p, &e));
+  EXPECT_NE(e.message.find("not a regular file"), std::string::npos) << e.ToString();
+  EXPECT_FALSE(ReadTopicCsv(fifo, &table, &e));
+  EXPECT_NE(e.message.find("not a regular file"), std::string::npos) << e.ToString();
+  EXPECT_FALSE(LoadRobotLogMat(fifo_mat, &log, &e));
+  EXPECT_NE(e.message.find("not a regular file"), std::string::npos) << e.ToString();
+  EXPECT_FALSE(LoadRobotLogMat(dir.str(), &log, &e));
+  EXPECT_NE(e.message.find("is a directory"), std::string::npos) << e.ToString();
+}
+
 // A line without an end: refused after kMaxLineBytes, never read whole.
 TEST(RobotLogTest, ALongLineIsRefusedWithoutReadingItWhole) {
   TempDir dir("long_line");
@@ -911,6 +966,17 @@ TEST(RobotLogTest, ProcessingRefusesLogsItCannotAlign) {
   LoadError e;
   EXPECT_FALSE(ProcessRobotLog(log, ProcessOptions(), &p, &e));
   EXPECT_NE(e.message.find("do not overlap"), std::string::npos) << e.ToString();
+  // A pose stream cut short: replaying its sliver would look like a whole comparison.
+  for (double keep : {0.45, 0.55}) {
+    log = StepLog();
+    const size_t n = static_cast<size_t>(keep * static_cast<double>(log.tool_pose.size()));
+    log.tool_pose.t_s.resize(n);
+    log.tool_pose.rows.resize(n);
+    if (!log.tool_pose.lines.empty()) log.tool_pose.lines.resize(n);
+    const bool ok = ProcessRobotLog(log, ProcessOptions(), &p, &e);
+    EXPECT_EQ(ok, keep > 0.5) << keep << ": " << e.ToString();
+    if (!ok) EXPECT_NE(e.message.find("less than half"), std::string::npos) << e.ToString();
+  }
   ProcessOptions o;
   o.trial_start_s = 50;
   EXPECT_FALSE(ProcessRobotLog(StepLog(), o, &p, &e));

@@ -39,6 +39,20 @@ TEST(TimestepBoundsTest, CheckNamesTheLimit) {
   for (double bad : {0.0, -0.001, std::nan("")}) {
     EXPECT_NE(CheckTimestep(bad, nullptr).find("must be > 0"), std::string::npos) << bad;
   }
+  // Tiny steps would run for hours (1e-9 s: 10^10 steps for a 10 s trial): refused at the edge.
+  EXPECT_EQ(CheckTimestep(kSmallestTimestepS, nullptr), "");
+  for (double tiny : {kSmallestTimestepS * 0.99, 1e-9}) {
+    EXPECT_NE(CheckTimestep(tiny, nullptr).find("below 0.05 ms"), std::string::npos) << tiny;
+  }
+}
+
+TEST(TimestepBoundsTest, TinyStepSceneFailsToLoadInsteadOfRunningForHours) {
+  const std::string path = SceneWithTimestep("1e-9");
+  std::string error;
+  ModelPtr m = LoadModel(path, &error);
+  std::filesystem::remove(path);
+  EXPECT_FALSE(m);
+  EXPECT_NE(error.find("below 0.05 ms"), std::string::npos) << error;
 }
 
 TEST(TimestepBoundsTest, ZeroStepSceneFailsToLoadInsteadOfHanging) {

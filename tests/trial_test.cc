@@ -303,6 +303,33 @@ TEST(TrialEndsTest, TimeoutWhenTheFollowPhaseRunsOutOfTime) {
   EXPECT_EQ(r.outcome, Outcome::kTimeout) << r.detail;
 }
 
+TEST(TrialEndsTest, AnUnreachableStartPointEndsTheTrialInsteadOfWaitingForEver) {
+  // The gantry's x servo stops at 2 m: a start 1.5 m east of the disk (x = 2.15 m) is never
+  // reached. Before the reach limit the trial waited for it without end (a hang).
+  TrialConfig c;
+  c.target = TrialTarget::Disk(0.65, 0, 0.035, 1.5);
+  const TrialResult r = Trial(100, 2.0, 7.5, 1, c);
+  EXPECT_EQ(r.outcome, Outcome::kTimeout) << r.detail;
+  EXPECT_NE(r.detail.find("did not reach the start point (2.1500, 0.0000) m"), std::string::npos)
+      << r.detail;
+  // The target travels 1.5 m at the move speed, then the tool gets 5 s to arrive (+ approach).
+  EXPECT_LT(r.sim_time_s, 1.5 / c.move_speed_m_s + 5 + 5) << "waited too long";
+  // A reachable one (1 m east) is reached: the limit does not cut normal moves short.
+  c.target = TrialTarget::Disk(0.65, 0, 0.035, 1.0);
+  c.timeout_s = 0.5;
+  const TrialResult far = Trial(100, 2.0, 7.5, 1, c);
+  EXPECT_EQ(far.detail.find("did not reach"), std::string::npos) << far.detail;
+}
+
+TEST(TrialEndsTest, AControlPeriodLongerThanTheTimeoutIsRefused) {
+  TrialConfig c;
+  c.timeout_s = 1;
+  c.control_period_s = 1;
+  EXPECT_EQ(c.Validate(), "");
+  c.control_period_s = 1.5;
+  EXPECT_NE(c.Validate().find("longer than timeout_s"), std::string::npos) << c.Validate();
+}
+
 TEST(TrialEndsTest, DivergingSimulationIsUnstableNotAControllerResult) {
   // A copy of the scene with a time step far beyond what the lip springs tolerate.
   mjModel* m = mj_copyModel(nullptr, Scene());

@@ -18,8 +18,9 @@ std::string ContourLawParams::Validate() const {
     os << "p_grasp_pa (P_g) = " << p_grasp_pa << " is out of range (P_ref, 1e6) Pa";
   } else if (!finite(beta) || beta < 0 || beta > 100) {
     os << "beta = " << beta << " is out of range [0, 100]";
-  } else if (!finite(step_mm) || step_mm <= 0 || step_mm > 100) {
-    os << "step_mm (dL) = " << step_mm << " is out of range (0, 100] mm";
+  } else if (!finite(step_mm) || step_mm < kMinStepMm || step_mm > kMaxStepMm) {
+    os << "step_mm (dL) = " << step_mm << " is out of range [" << kMinStepMm << ", " << kMaxStepMm
+       << "] mm" << (step_mm > 0 && step_mm < kMinStepMm ? " (metres given as mm?)" : "");
   }
   return os.str();
 }

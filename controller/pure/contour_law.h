@@ -27,10 +27,15 @@ namespace ssc {
 
 enum class FollowSide { kObjectOnLeft, kObjectOnRight };
 
+// The step dL's valid range, mm (every reader of a step uses it: options, maps, configs). Below
+// 0.1 mm the cup barely moves within the servo's 0.2 mm tolerance; such a value is most likely
+// metres given where millimetres belong.
+inline constexpr double kMinStepMm = 0.1, kMaxStepMm = 100;
+
 struct ContourLawParams {
   double p_ref_pa = 100.0;    // P_ref, set point of the mean vacuum, (P_n, P_g) Pa
   double beta = 2.0;          // correction gain, [0, 100], dimensionless
-  double step_mm = 7.5;       // step length per iteration, (0, 100] mm
+  double step_mm = 7.5;       // step length per iteration, [kMinStepMm, kMaxStepMm] mm
   double p_noise_pa = 10.0;   // P_n: c_f = +beta here; also the dead band, (0, P_ref) Pa
   double p_grasp_pa = 15000;  // P_g in the c_f line (the implementation's 15 kPa), (P_ref, 1e6)
   bool dead_band = true;      // hold still unless a differential exceeds P_n
