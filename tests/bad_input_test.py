@@ -4,6 +4,7 @@ silent run. Run directly with --report for the full round (timings and peak memo
 import os
 import resource
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -11,8 +12,8 @@ import time
 import unittest
 
 BIN = os.environ.get("SSC_BIN_DIR", os.path.join(os.path.dirname(__file__), "..", "build", "bin"))
-SRC = os.environ.get("SSC_SOURCE_DIR", os.path.join(os.path.dirname(__file__), ".."))
-SSC = os.path.join(BIN, "ssc")
+SRC = os.path.abspath(os.environ.get("SSC_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..")))
+SSC = os.path.abspath(os.path.join(BIN, "ssc"))
 TMP = tempfile.mkdtemp(prefix="ssc_bad_input_")
 A_FILE = os.path.join(TMP, "a_file")
 with open(A_FILE, "w") as f:
@@ -51,6 +52,66 @@ HEX_CFG = tool_with('<config key="noise_pa" value="0x10"/>', "hex")
 LONG_LINE = os.path.join(TMP, "one_line.csv")
 with open(LONG_LINE, "w") as f:
     f.write("t_s,x_m,y_m,z_m," + "9" * 20_000_000)  # 20 MB, no newline
+STEP_TINY = scene_with('timestep="0.002"', 'timestep="1e-9"', "dttiny")
+FIFO = os.path.join(TMP, "pipe.csv")
+os.mkfifo(FIFO)
+DANGLING = os.path.join(TMP, "dangling")
+os.symlink(os.path.join(TMP, "nothing_here"), DANGLING)
+with open(os.path.join(SRC, "data", "published", "success_map_dl5.csv")) as f:
+    MAP = f.read()
+MAP_IN_M = os.path.join(TMP, "map_step_in_m.csv")  # steps in metres under step_mm
+with open(MAP_IN_M, "w") as f:
+    f.write(MAP.replace("\n5.0,", "\n0.005,"))
+
+
+def lab_recording():
+    """A twin trial written as the lab records it (ssc trial --robot-log), in TMP/rec."""
+    rec = os.path.join(TMP, "rec")
+    r = subprocess.run([SSC, "trial", "--no-plot", "--out", os.path.join(TMP, "rec_trial"),
+                        "--robot-log", rec], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+    return rec
+
+
+REC = lab_recording()
+
+
+def rec_variant(name, topic, edit):
+    """A copy of the recording's CSV files with one topic file's lines edited."""
+    d = os.path.join(TMP, name)
+    os.makedirs(d)
+    for f in os.listdir(REC):
+        if not f.endswith(".csv"):
+            continue
+        with open(os.path.join(REC, f)) as src:
+            text = src.read()
+        if topic in f:
+            text = edit(text)
+        with open(os.path.join(d, f), "w") as dst:
+            dst.write(text)
+    return d
+
+
+def cut_mat():
+    mat = [f for f in os.listdir(REC) if f.endswith(".mat")][0]
+    with open(os.path.join(REC, mat), "rb") as f:
+        data = f.read()
+    path = os.path.join(TMP, "cut.mat")
+    with open(path, "wb") as f:
+        f.write(data[: len(data) // 2])
+    return path
+
+
+def flat_pressure(text):
+    lines = text.split("\n")
+    return "\n".join(lines[:1] + [",".join(l.split(",")[:2] + ["101325.0"] * 4) if l else l
+                                   for l in lines[1:]])
+
+
+SHORT_POSE = rec_variant("rec_short_pose", "endEffectorPose",
+                         lambda t: "\n".join(t.split("\n")[:21]) + "\n")
+FLAT = rec_variant("rec_flat", "SensorPacket", flat_pressure)
+CUT_MAT = cut_mat()
 
 # (args, expected exit code, text the message must contain)
 CASES = [
@@ -65,7 +126,9 @@ CASES = [
     (["objects", "--out", A_FILE], 2, "not a directory"),
     (["trial", "--robot-log", A_FILE], 2, "--robot-log"),
     (["view", "--screenshot", TMP], 2, "is a directory"),
-    (["trial", "--out", "/proc/ssc_no"], 2, "/proc/ssc_no"),
+    # /proc passes the parse-time check for root (access() says writable): mkdir fails when
+    # the outputs are made, after the inputs; still nothing is left and the message names it.
+    (["trial", "--out", "/proc/ssc_no"], 1, "/proc/ssc_no"),
     (["trial", "--pref", "abc"], 2, "--pref"),
     (["trial", "--pref", "0x10"], 2, "not a decimal"),
     (["trial", "--pref", "1e400"], 2, "--pref"),
@@ -75,7 +138,7 @@ CASES = [
     (["trial", "--pref", "100Pa"], 2, "--pref"),
     (["trial", "--pref", "100", "--pref", "200"], 2, "--pref"),
     (["trial", "--beta", "101"], 2, "[0, 100]"),
-    (["trial", "--step", "0"], 2, "(0, 100]"),
+    (["trial", "--step", "0"], 2, "[0.1, 100]"),
     (["trial", "--seed", "-1"], 2, "--seed"),
     (["trial", "--seed", "1.5"], 2, "--seed"),
     (["trial", "--seed", "1e30"], 2, "--seed"),
@@ -129,7 +192,44 @@ CASES = [
     (["view", "--speed", "0"], 2, "--speed"),
     (["view", "no_such_object"], 2, "no_such_object"),
     (["nosuchcommand"], 2, "unknown command"),
+    # Second round (docs/reliability.md): inputs found bad only after the output was made, and
+    # the kinds that hung, crashed or ran silently.
+    (["trial", "--scene", "no_such_scene", "--out", "new_out"], 1, "no_such_scene"),
+    (["sweep", "--scene", "no_such_scene", "--out", "new_out"], 1, "no_such_scene"),
+    (["probe", "--scene", "no_such_scene", "--out", "new_out"], 1, "no_such_scene"),
+    (["stability", "--scene", "no_such_scene", "--out", "new_out"], 1, "no_such_scene"),
+    (["validate", "--map", "missing.csv", "--out", "new_out"], 1, "missing.csv"),
+    (["calibrate", "--dynamic", "--map", "missing.csv", "--out", "new_out"], 1, "missing.csv"),
+    (["compare", "missing_log", "--out", "new_out"], 1, "missing_log"),
+    (["sweep", "--pref", "300,40", "--pn", "200", "--out", "new_out"], 2, "P_ref 40 Pa"),
+    (["trial", "--scene", "probe_edge", "--out", "new_out"], 1, "6 hinge joints"),
+    (["sweep", "--scene", "probe_edge", "--out", "new_out"], 1, "6 hinge joints"),
+    (["trial", "--out", "a" * 300], 2, "longer than"),
+    (["trial", "--out", DANGLING], 2, "dangling"),
+    (["trial", "--seed", "9007199254740993"], 2, "2^53"),
+    (["trial", "--seed", "9007199254740990.6"], 2, "not a whole number"),
+    (["trial", "--period", "10", "--timeout", "1"], 2, "longer than timeout_s"),
+    (["trial", "--scene", STEP_TINY, "--out", "new_out"], 1, "below 0.05 ms"),
+    (["stability", "--steps-ms", "0.001"], 2, "--steps-ms"),
+    (["sweep", "--step", "0.005"], 2, "[0.1, 100]"),
+    (["trial", "--scene", TMP, "--out", "new_out"], 1, "is a directory"),
+    (["trial", "--scene", FIFO, "--out", "new_out"], 1, "not a regular file"),
+    (["validate", "--map", MAP_IN_M, "--out", "new_out"], 1, "metres given as mm"),
+    (["validate", "--map", FIFO, "--out", "new_out"], 1, "not a regular file"),
+    (["calibrate", "--dynamic", "--dynamic-keys", "period_s,period_s"], 2, "twice"),
+    (["calibrate", "--dynamic", "--dynamic-keys", "period_s,"], 2, "stray comma"),
+    (["calibrate", "--dynamic", "--dynamic-keys", "bogus", "--out", "new_out"], 2, "bogus"),
+    (["compare", FIFO, "--out", "new_out"], 1, "not a regular file"),
+    (["compare", "/dev/zero"], 1, "not a regular file"),
+    (["compare", CUT_MAT, "--out", "new_out"], 1, "cut short"),
+    (["compare", SHORT_POSE, "--out", "new_out"], 1, "less than half"),
+    (["compare", FLAT, "--out", "new_out"], 1, "never exceeds"),
 ]
+
+
+def read_lines(path):
+    with open(path) as f:
+        return f.read().splitlines()
 
 
 def run(args, timeout=60):
@@ -147,19 +247,65 @@ def run(args, timeout=60):
 class BadInputTest(unittest.TestCase):
     @classmethod
     def tearDownClass(cls):
-        for p in (STEP0, STEPNEG, EMPTY_CFG, HEX_CFG):
+        for p in (STEP0, STEPNEG, STEP_TINY, EMPTY_CFG, HEX_CFG):
             os.remove(p)
         shutil.rmtree(TMP, ignore_errors=True)
 
-    def test_every_case_fails_fast_with_a_message(self):
+    def test_every_case_fails_fast_with_a_message_and_leaves_nothing_behind(self):
         for args, code, text in CASES:
             with self.subTest(args=args):
+                before = set(os.listdir(TMP))
                 r, _, hung = run(args)
                 self.assertFalse(hung, "hang")
                 self.assertGreaterEqual(r.returncode, 0, "killed by a signal (crash)")
                 self.assertEqual(r.returncode, code, r.stderr)
                 self.assertIn(text, r.stderr)
                 self.assertNotIn("terminate called", r.stderr)
+                # Inputs are checked before any output is made (out/..., --out new_out).
+                self.assertEqual(set(os.listdir(TMP)) - before, set(), "left behind")
+
+    def test_output_paths_reach_the_plot_script_as_one_argument(self):
+        if not os.path.exists(os.path.join(SRC, ".venv", "bin", "python")):
+            self.skipTest("no .venv: plots are skipped")
+        out = os.path.join(TMP, "it's; touch PWNED; '")
+        r, _, hung = run(["trial", "--out", out])
+        self.assertFalse(hung)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertFalse(os.path.exists(os.path.join(TMP, "PWNED")), "ran through a shell")
+        self.assertTrue(os.path.exists(os.path.join(out, "trajectory.png")), r.stderr)
+
+    def test_interrupted_sweep_resumes_to_the_rows_of_an_uninterrupted_one(self):
+        args = ["sweep", "--pref", "100,200", "--beta", "2", "--step", "7.5", "--repeats", "2",
+                "--threads", "1", "--no-plot", "--no-progress"]
+        cut, whole = os.path.join(TMP, "sweep_cut"), os.path.join(TMP, "sweep_whole")
+        env = dict(os.environ)
+        p = subprocess.Popen([SSC] + args + ["--out", cut], cwd=TMP, env=env,
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        csv = os.path.join(cut, "sweep.csv")
+        deadline = time.time() + 120
+        while time.time() < deadline:  # Ctrl-C once the first row is in
+            if os.path.exists(csv) and len(read_lines(csv)) >= 2:
+                break
+            time.sleep(0.05)
+        p.send_signal(signal.SIGINT)
+        _, err = p.communicate(timeout=120)
+        self.assertEqual(p.returncode, 130, err)
+        self.assertIn("interrupted", err)
+        rows_cut = len(read_lines(csv)) - 1
+        self.assertLess(rows_cut, 4)
+        # Resuming with other robot effects would mix rows: refused, naming the difference.
+        r, _, _ = run(args + ["--out", cut, "--effects", "pose_delay_s=0.02"])
+        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertIn("effects", r.stderr)
+        r, _, _ = run(args + ["--out", cut])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn(f"{rows_cut} already in", r.stdout)
+        r, _, _ = run(args + ["--out", whole])
+        self.assertEqual(r.returncode, 0, r.stderr)
+
+        # Rows carry no wall time: the resumed file holds exactly the uninterrupted one's rows.
+        self.assertEqual(sorted(read_lines(csv)[1:]),
+                         sorted(read_lines(os.path.join(whole, "sweep.csv"))[1:]))
 
     def test_version(self):
         r, _, _ = run(["--version"])
@@ -168,11 +314,13 @@ class BadInputTest(unittest.TestCase):
 
 
 def report():
-    crashes = hangs = silent = 0
+    crashes = hangs = silent = left = 0
     worst = (0, None)
     for args, code, text in CASES:
         before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+        entries = set(os.listdir(TMP))
         r, dt, hung = run(args)
+        new = set(os.listdir(TMP)) - entries
         rss_mb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
         if rss_mb > worst[0] and resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss > before:
             worst = (rss_mb, args)
@@ -185,12 +333,16 @@ def report():
         elif r.returncode == 0 or text not in r.stderr:
             silent += 1
             verdict = "SILENT/WRONG"
+        elif new:
+            left += 1
+            verdict = "LEFT " + ",".join(sorted(new))[:20]
         else:
             verdict = "ok"
         msg = (r.stderr.strip().splitlines() or [""])[0][:110] if r else ""
         print(f"{verdict:12} rc={r.returncode if r else '-':>3} {dt:5.1f}s  {' '.join(args)[:60]:60}  {msg}")
-    print(f"\n{len(CASES)} cases: {crashes} crashes, {hangs} hangs, {silent} silent/wrong; "
-          f"peak RSS of the worst case {worst[0]:.0f} MB ({' '.join(worst[1] or [])[:60]})")
+    print(f"\n{len(CASES)} cases: {crashes} crashes, {hangs} hangs, {silent} silent/wrong, "
+          f"{left} left a directory behind; peak RSS of the worst case {worst[0]:.0f} MB "
+          f"({' '.join(worst[1] or [])[:60]})")
     BadInputTest.tearDownClass()
 
 

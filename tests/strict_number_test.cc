@@ -42,8 +42,36 @@ TEST(StrictNumberTest, RangesAndWholeNumbers) {
   EXPECT_FALSE(ParseNumber("1.5", NumberRange::Whole(0, 5), &v, &e));
   EXPECT_NE(e.find("whole"), std::string::npos) << e;
   EXPECT_TRUE(ParseNumber("3", NumberRange::Whole(0, 5), &v, &e));
-  EXPECT_EQ(NumberRange::Whole(0, 9007199254740992.0).ToString(),
-            "a whole number in [0, 9007199254740992]");
+  EXPECT_EQ(NumberRange::Whole(0, 9007199254740991.0).ToString(),
+            "a whole number in [0, 9007199254740991]");
+  // Whole numbers are judged from the text, and only where doubles are exact: 2^53 + 1 would
+  // silently become 2^53, and 9007199254740990.6 would round to a whole double.
+  const NumberRange seeds = NumberRange::Whole(0, 1e300);
+  for (const char* whole : {"3", "1.0", "1.5e1", "3e2", "9007199254740991", "0.0e5"}) {
+    EXPECT_TRUE(ParseNumber(whole, seeds, &v, &e)) << whole << ": " << e;
+  }
+  EXPECT_DOUBLE_EQ(v, 0);
+  for (const char* bad : {"2.5", "1e-1", "9007199254740990.6", "0.5e0"}) {
+    EXPECT_FALSE(ParseNumber(bad, seeds, &v, &e)) << bad;
+    EXPECT_NE(e.find("not a whole number"), std::string::npos) << e;
+  }
+  for (const char* big : {"9007199254740992", "9007199254740993", "1e20"}) {
+    EXPECT_FALSE(ParseNumber(big, seeds, &v, &e)) << big;
+    EXPECT_NE(e.find("2^53"), std::string::npos) << e;
+  }
+}
+
+TEST(StrictNumberTest, NameListsRejectEmptyItemsAndRepeats) {
+  std::vector<std::string> out;
+  std::string e;
+  EXPECT_TRUE(ParseNameList("period_s, smoothing_s", &out, &e)) << e;
+  EXPECT_EQ(out, (std::vector<std::string>{"period_s", "smoothing_s"}));
+  for (const char* bad : {"", "period_s,", ",period_s", "a,,b", "period_s,period_s"}) {
+    EXPECT_FALSE(ParseNameList(bad, &out, &e)) << bad;
+    EXPECT_FALSE(e.empty());
+  }
+  EXPECT_FALSE(ParseNameList("a,b,a", &out, &e));
+  EXPECT_NE(e.find("twice"), std::string::npos) << e;
 }
 
 TEST(StrictNumberTest, ListsRejectEmptyItemsAndRepeats) {
@@ -110,24 +138,54 @@ TEST(CommandLineTest, TypedOptionsKeepDefaultsAndRejectStrayInput) {
   }
 }
 
-TEST(CommandLineTest, OutputDirectoryIsCheckedBeforeWork) {
-  const std::filesystem::path tmp =
-      std::filesystem::temp_directory_path() / ("ssc_cli_test_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(tmp);
+TEST(CommandLineTest, OutputDirectoryIsCheckedBeforeWorkAndCreatedOnlyWhenAsked) {
+  namespace fs = std::filesystem;
+  const fs::path tmp = fs::temp_directory_path() / ("ssc_cli_test_" + std::to_string(::getpid()));
+  fs::create_directories(tmp);
   std::ofstream(tmp / "a_file") << "x";
+  fs::create_symlink(tmp / "nothing_here", tmp / "dangling");
   std::string error;
-  EXPECT_FALSE(cli::PrepareOutputDir((tmp / "a_file").string(), &error));
+  for (const fs::path& bad :
+       {tmp / "a_file", tmp / "a_file" / "below", tmp / "dangling", tmp / std::string(300, 'a')}) {
+    EXPECT_FALSE(cli::CheckOutputDir(bad.string(), &error)) << bad;
+    EXPECT_FALSE(cli::CreateOutputDir(bad.string(), &error)) << bad;
+  }
+  EXPECT_FALSE(cli::CheckOutputDir((tmp / "a_file").string(), &error));
   EXPECT_NE(error.find("not a directory"), std::string::npos) << error;
-  EXPECT_FALSE(cli::PrepareOutputDir((tmp / "a_file" / "below").string(), &error));
+  EXPECT_FALSE(cli::CheckOutputDir((tmp / "a_file" / "below").string(), &error));
   EXPECT_NE(error.find("a_file"), std::string::npos) << error;
-  EXPECT_TRUE(cli::PrepareOutputDir((tmp / "new" / "deeper").string(), &error)) << error;
-  EXPECT_TRUE(std::filesystem::is_directory(tmp / "new" / "deeper"));
-  EXPECT_FALSE(cli::PrepareOutputFile(tmp.string(), &error));
-  std::string out = (tmp / "a_file").string();
+  EXPECT_FALSE(cli::CheckOutputDir((tmp / "dangling" / "x").string(), &error));
+  EXPECT_NE(error.find("dangling"), std::string::npos) << error;
+  EXPECT_FALSE(cli::CheckOutputDir("", &error));
+  // The check creates nothing; CreateOutputDir does.
+  EXPECT_TRUE(cli::CheckOutputDir((tmp / "new" / "deeper").string(), &error)) << error;
+  EXPECT_FALSE(fs::exists(tmp / "new"));
+  EXPECT_TRUE(cli::CreateOutputDir((tmp / "new" / "deeper").string(), &error)) << error;
+  EXPECT_TRUE(fs::is_directory(tmp / "new" / "deeper"));
+  EXPECT_FALSE(cli::CheckOutputFile(tmp.string(), &error));
+  EXPECT_TRUE(cli::CheckOutputFile((tmp / "later" / "x.png").string(), &error)) << error;
+  EXPECT_FALSE(fs::exists(tmp / "later"));
+
+  // Through a command: Parse() checks (the default too) and creates nothing; CreateOutputs()
+  // makes the directory and the output file's directory.
+  {
+    std::string out = (tmp / "a_file").string();
+    cli::Command cmd("test", "t");
+    cmd.OutputDir("out", &out, "out");
+    EXPECT_EQ(ParseArgs(&cmd, {}), 2);
+  }
+  std::string out = (tmp / "made" / "here").string(), shot;
   cli::Command cmd("test", "t");
   cmd.OutputDir("out", &out, "out");
-  EXPECT_EQ(ParseArgs(&cmd, {}), 2);  // the default itself is checked
-  std::filesystem::remove_all(tmp);
+  cmd.OutputFile("screenshot", &shot, "png");
+  EXPECT_EQ(ParseArgs(&cmd, {"--screenshot", (tmp / "shots" / "x.png").string()}), -1);
+  EXPECT_FALSE(fs::exists(tmp / "made"));
+  EXPECT_FALSE(fs::exists(tmp / "shots"));
+  EXPECT_EQ(cmd.CreateOutputs(), 0);
+  EXPECT_TRUE(fs::is_directory(tmp / "made" / "here"));
+  EXPECT_TRUE(fs::is_directory(tmp / "shots"));
+  EXPECT_FALSE(fs::exists(tmp / "shots" / "x.png"));
+  fs::remove_all(tmp);
 }
 
 }  // namespace

@@ -242,6 +242,12 @@ int RunViewer(const ViewerOptions& options) {
     glfwTerminate();
     return 1;
   }
+  if (options.create_outputs) {
+    if (const int rc = options.create_outputs(); rc != 0) {
+      glfwTerminate();
+      return rc;
+    }
+  }
   const bool offscreen = !options.screenshot.empty();
   if (offscreen) glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
   GLFWwindow* window = glfwCreateWindow(options.width, options.height,

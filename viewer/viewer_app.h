@@ -3,6 +3,7 @@
 #ifndef SSC_VIEWER_VIEWER_APP_H_
 #define SSC_VIEWER_VIEWER_APP_H_
 
+#include <functional>
 #include <string>
 
 #include "runtime/trial.h"
@@ -16,6 +17,9 @@ struct ViewerOptions {
   double time_s = 5.0;     // simulated seconds before the screenshot
   int width = 1280, height = 720;
   double speed = 1.0;  // simulated seconds per wall second (slow motion < 1)
+  // Called once the display, the scene and the trial are known to work, before anything is
+  // written: creates the output locations; returns 0 or the exit code (message printed).
+  std::function<int()> create_outputs;
 };
 
 // Returns the process exit code. Without a display: one line on stderr and exit code 3.

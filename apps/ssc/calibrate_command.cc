@@ -37,7 +37,7 @@ int RunCalibrateCommand(int argc, char** argv) {
            "also fit sensor noise and lag to the published sigma_r and s_c vs "
            "beta (disk trials; about a minute)");
   cmd.Number("wander-step", &wander_step, "step dL of the wander trials (not published)", "mm",
-             NumberRange::Positive(100));
+             NumberRange::Closed(kMinStepMm, kMaxStepMm));
   cmd.Integer("wander-seeds", &seeds, "trials per beta per evaluation",
               NumberRange::Closed(1, 100));
   cmd.Integer("wander-evals", &evals, "Nelder-Mead evaluations for the wander fit",
@@ -74,6 +74,14 @@ int RunCalibrateCommand(int argc, char** argv) {
              NumberRange::Closed(0, 100));
   cmd.OutputDir("out", &out_dir, "output directory");
   AddTrialSettingOptions(&cmd, &dyn_base, &settings);
+  std::vector<std::string> keys;
+  cmd.Check([&]() -> std::string {
+    if (!dynamic) return "";
+    std::string e;
+    if (!ParseNameList(dyn_keys, &keys, &e)) return "--dynamic-keys: " + e;
+    e = CheckDynamicKeys(keys);
+    return e.empty() ? "" : "--dynamic-keys: " + e;
+  });
   if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
   if (dynamic) {
     std::string error;
@@ -81,7 +89,7 @@ int RunCalibrateCommand(int argc, char** argv) {
     spec.base = dyn_base;
     if (!ReadPublishedMap(dyn_map, &spec.cells, &error)) {
       std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
-      return 2;
+      return 1;
     }
     for (const MapCell& c : PublishedOutcomeCells()) {
       bool in_map = false;
@@ -89,8 +97,7 @@ int RunCalibrateCommand(int argc, char** argv) {
         in_map |= m.step_mm == c.step_mm && m.beta == c.beta && m.pref_pa == c.pref_pa;
       if (!in_map) spec.cells.push_back(c);
     }
-    std::stringstream ks(dyn_keys);
-    for (std::string k; std::getline(ks, k, ',');) spec.keys.push_back(k);
+    spec.keys = keys;
     spec.seeds = static_cast<int>(dyn_seeds);
     spec.threads = static_cast<int>(dyn_threads);
     spec.max_evaluations = static_cast<int>(dyn_evals);
@@ -101,8 +108,17 @@ int RunCalibrateCommand(int argc, char** argv) {
       std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
       return 1;
     }
+    if (const std::string e = CheckTrialScene(model.get(), spec.base); !e.empty()) {
+      std::fprintf(stderr, "ssc calibrate: %s\n", e.c_str());
+      return 1;
+    }
+    if (int rc = cmd.CreateOutputs(); rc != 0) return rc;
     const std::filesystem::path out = out_dir;
     std::ofstream evals_log(out / "dynamic_evals.txt");
+    if (!evals_log) {
+      std::fprintf(stderr, "ssc calibrate: cannot write %s\n", (out / "dynamic_evals.txt").c_str());
+      return 1;
+    }
     DynamicFitResult fit;
     if (!FitDynamic(
             model.get(), spec,
@@ -130,6 +146,22 @@ int RunCalibrateCommand(int argc, char** argv) {
                 FormatRobotEffects(fit.best.effects).c_str());
     return 0;
   }
+  // The tool model the fitted config goes into, read before any output is made.
+  std::string error;
+  const auto tool = ToolModelVariants::Read(SourceDir() + "/models/ssc_tool.xml", &error);
+  if (!tool) {
+    std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
+    return 1;
+  }
+  if (int rc = cmd.CreateOutputs(); rc != 0) return rc;
+  const std::filesystem::path out = out_dir;
+  auto write = [](const std::filesystem::path& path, const std::string& text) {
+    std::ofstream f(path);
+    f << text;
+    f.close();
+    if (!f) std::fprintf(stderr, "ssc calibrate: cannot write %s\n", path.c_str());
+    return static_cast<bool>(f);
+  };
   PneumaticModel start;
   start.pneumatics.pump_free_flow_m3_s *= scale;
   start.pneumatics.port_area_m2 *= scale;
@@ -147,8 +179,7 @@ int RunCalibrateCommand(int argc, char** argv) {
   }
   std::printf("cost %.4g after %d evaluations\n", fit.cost, fit.evaluations);
 
-  const std::filesystem::path out = out_dir;
-  std::ofstream(out / "params.json") << CalibrationParamsJson(fit, nullptr);
+  if (!write(out / "params.json", CalibrationParamsJson(fit, nullptr))) return 1;
   // The tool model with the fitted config.
   PluginConfig config;
   char value[32];
@@ -156,14 +187,12 @@ int RunCalibrateCommand(int argc, char** argv) {
     std::snprintf(value, sizeof(value), "%.6g", q.value);
     config[q.key] = value;
   }
-  std::string error;
-  const auto tool = ToolModelVariants::Read(SourceDir() + "/models/ssc_tool.xml", &error);
-  const std::string xml = tool ? tool->ToolXml({config, 0}, &error) : "";
+  const std::string xml = tool->ToolXml({config, 0}, &error);
   if (xml.empty()) {
     std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
     return 1;
   }
-  std::ofstream(out / "ssc_tool_calibrated.xml") << xml;
+  if (!write(out / "ssc_tool_calibrated.xml", xml)) return 1;
   std::printf("wrote %s and %s\n", (out / "params.json").c_str(),
               (out / "ssc_tool_calibrated.xml").c_str());
   if (wander) {
@@ -192,8 +221,15 @@ int RunCalibrateCommand(int argc, char** argv) {
     config["noise_pa"] = value;
     std::snprintf(value, sizeof(value), "%.4g", w.lag_ms);
     config["lag_ms"] = value;
-    std::ofstream(out / "ssc_tool_calibrated.xml") << tool->ToolXml({config, 0}, &error);
-    std::ofstream(out / "params.json") << CalibrationParamsJson(fit, &w);
+    const std::string tuned = tool->ToolXml({config, 0}, &error);
+    if (tuned.empty()) {
+      std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
+      return 1;
+    }
+    if (!write(out / "ssc_tool_calibrated.xml", tuned) ||
+        !write(out / "params.json", CalibrationParamsJson(fit, &w))) {
+      return 1;
+    }
     std::printf("updated %s with noise_pa and lag_ms\n", (out / "ssc_tool_calibrated.xml").c_str());
   }
   return 0;

@@ -37,7 +37,8 @@ int RunChartsCommand(int argc, char** argv) {
   cmd.NumberList("pref", &spec.pref_pa, "P_ref values", "Pa",
                  NumberRange::Positive(1e6).OpenHigh());
   cmd.NumberList("beta", &spec.beta, "beta values", "", NumberRange::Closed(0, 100));
-  cmd.NumberList("step", &spec.step_mm, "step lengths", "mm", NumberRange::Positive(100));
+  cmd.NumberList("step", &spec.step_mm, "step lengths", "mm",
+                 NumberRange::Closed(kMinStepMm, kMaxStepMm));
   cmd.Integer("repeats", &repeats, "trials per point", NumberRange::Closed(1, 1000));
   cmd.Integer("threads", &threads, "threads for the sweep", NumberRange::Closed(1, 256));
   cmd.OutputDir("out", &out_dir, "output directory");
@@ -53,6 +54,8 @@ int RunChartsCommand(int argc, char** argv) {
     std::fprintf(stderr, "ssc charts: %s\n", error.c_str());
     return 1;
   }
+  if (const std::string e = CheckSweepGrid(spec); !e.empty()) return cmd.Fail(e);
+  if (int rc = cmd.CreateOutputs(); rc != 0) return rc;
   SweepSummary summary;
   if (!RunSweep(gantry.get(), spec, nullptr, &summary, &error)) {
     std::fprintf(stderr, "ssc charts: %s\n", error.c_str());
@@ -77,7 +80,13 @@ int RunChartsCommand(int argc, char** argv) {
     std::fprintf(stderr, "ssc charts: %s\n", error.c_str());
     return 1;
   }
-  std::ofstream(out / "simulator.csv") << FidelityCsv(rows);
+  std::ofstream simulator(out / "simulator.csv");
+  simulator << FidelityCsv(rows);
+  simulator.close();
+  if (!simulator) {
+    std::fprintf(stderr, "ssc charts: cannot write %s\n", (out / "simulator.csv").c_str());
+    return 1;
+  }
   const std::string png = (out / "speed_accuracy.png").string();
   if (RunPlotScript("plot_speed_accuracy.py",
                     {(out / "cup.csv").string(), (out / "simulator.csv").string(), png})) {

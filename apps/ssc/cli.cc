@@ -1,5 +1,6 @@
 #include "apps/ssc/cli.h"
 
+#include <limits.h>
 #include <mujoco/mujoco.h>
 #include <unistd.h>
 
@@ -21,39 +22,115 @@ std::string VersionText() {
   return std::string("ssc ") + SSC_VERSION + " (MuJoCo " + mj_versionString() + ")";
 }
 
-bool PrepareOutputDir(const std::string& dir, std::string* error) {
+namespace {
+
+std::string Shown(const std::string& path) {
+  constexpr size_t kMax = 80;  // a 4 kB path is cut in messages
+  return "'" + (path.size() > kMax ? path.substr(0, kMax) + "..." : path) + "'";
+}
+
+}  // namespace
+
+bool CheckOutputDir(const std::string& dir, std::string* error) {
   if (dir.empty()) {
     *error = "empty output directory";
     return false;
   }
-  std::error_code ec;
+  if (dir.size() >= PATH_MAX) {
+    *error = Shown(dir) + " is longer than " + std::to_string(PATH_MAX - 1) + " bytes";
+    return false;
+  }
   const fs::path p(dir);
-  if (fs::exists(p, ec) && !fs::is_directory(p, ec)) {
-    *error = "'" + dir + "' exists and is not a directory";
-    return false;
+  for (const fs::path& part : p) {
+    if (part.native().size() > NAME_MAX) {
+      *error = Shown(dir) + ": the name " + Shown(part.native()) + " is longer than " +
+               std::to_string(NAME_MAX) + " bytes";
+      return false;
+    }
   }
-  fs::create_directories(p, ec);
-  if (ec || !fs::is_directory(p)) {
-    *error = "cannot create directory '" + dir +
-             "': " + (ec ? ec.message() : std::string("not a directory"));
-    return false;
+  // From the path itself up to its nearest existing ancestor, which must be a writable
+  // directory; nothing is created here.
+  std::error_code ec;
+  fs::path cur = p;
+  for (bool first = true;; first = false) {
+    const fs::file_status st = fs::status(cur, ec);  // follows links
+    if (fs::exists(st)) {
+      if (!fs::is_directory(st)) {
+        *error =
+            first ? Shown(dir) + " exists and is not a directory"
+                  : Shown(cur.string()) + " (on the path of " + Shown(dir) + ") is not a directory";
+        return false;
+      }
+      break;
+    }
+    if (fs::is_symlink(fs::symlink_status(cur, ec))) {
+      *error = Shown(cur.string()) + " is a symbolic link to nothing (a dangling link)";
+      return false;
+    }
+    fs::path parent = cur.parent_path();
+    if (parent.empty()) parent = ".";
+    if (parent == cur) break;
+    cur = parent;
   }
-  if (access(dir.c_str(), W_OK | X_OK) != 0) {
-    *error = "directory '" + dir + "' is not writable";
+  if (access(cur.c_str(), W_OK | X_OK) != 0) {
+    *error = cur == p
+                 ? "directory " + Shown(dir) + " is not writable"
+                 : "cannot create " + Shown(dir) + ": " + Shown(cur.string()) + " is not writable";
     return false;
   }
   return true;
 }
 
-bool PrepareOutputFile(const std::string& file, std::string* error) {
+bool CreateOutputDir(const std::string& dir, std::string* error) {
+  if (!CheckOutputDir(dir, error)) return false;
   std::error_code ec;
-  const fs::path p(file);
-  if (p.filename().empty() || (fs::exists(p, ec) && fs::is_directory(p, ec))) {
-    *error = "'" + file + "' is a directory, not a file name";
+  const fs::path p(dir);
+  fs::create_directories(p, ec);
+  if (ec || !fs::is_directory(p, ec)) {
+    *error = "cannot create directory " + Shown(dir) + ": " +
+             (ec ? ec.message() : std::string("not a directory"));
     return false;
   }
-  const fs::path parent = p.parent_path();
-  return parent.empty() || PrepareOutputDir(parent.string(), error);
+  if (access(dir.c_str(), W_OK | X_OK) != 0) {
+    *error = "directory " + Shown(dir) + " is not writable";
+    return false;
+  }
+  return true;
+}
+
+namespace {
+
+bool CheckFileName(const std::string& file, std::string* error) {
+  std::error_code ec;
+  const fs::path p(file);
+  if (file.empty()) {
+    *error = "empty file name";
+    return false;
+  }
+  if (p.filename().empty() || p.filename() == "." || p.filename() == ".." ||
+      fs::is_directory(p, ec)) {
+    *error = Shown(file) + " is a directory, not a file name";
+    return false;
+  }
+  if (fs::exists(p, ec) && !fs::is_regular_file(p, ec)) {
+    *error = Shown(file) + " exists and is not a regular file";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool CheckOutputFile(const std::string& file, std::string* error) {
+  if (!CheckFileName(file, error)) return false;
+  const fs::path parent = fs::path(file).parent_path();
+  return CheckOutputDir(parent.empty() ? "." : parent.string(), error);
+}
+
+bool CreateOutputFileDir(const std::string& file, std::string* error) {
+  if (!CheckFileName(file, error)) return false;
+  const fs::path parent = fs::path(file).parent_path();
+  return CreateOutputDir(parent.empty() ? "." : parent.string(), error);
 }
 
 Command::Command(std::string name, std::string summary)
@@ -110,8 +187,8 @@ void Command::Integer(const std::string& name, long* target, const std::string& 
 }
 
 void Command::Seed(const std::string& name, std::uint64_t* target, const std::string& help) {
-  // Seeds travel through doubles (plugin state, CSV): integers are exact up to 2^53.
-  const NumberRange range = NumberRange::Whole(0, 9007199254740992.0);
+  // Seeds travel through doubles (plugin state, CSV): integers are exact up to 2^53 - 1.
+  const NumberRange range = NumberRange::Whole(0, 9007199254740991.0);
   AddValue(name, help + "; " + range.ToString(), "INT", std::to_string(*target));
   std::string* text = &texts_.back();
   converters_.push_back([this, name, text, target, range](std::string* error) {
@@ -187,30 +264,20 @@ void Command::Flag(const std::string& name, bool* target, const std::string& hel
 
 void Command::OutputDir(const std::string& name, std::string* target, const std::string& help) {
   AddValue(name, help, "DIR", *target);
+  outputs_.push_back({name, target, false});
   std::string* text = &texts_.back();
-  outputs_.push_back([this, name, text, target](std::string* error) {
+  converters_.push_back([this, name, text, target](std::string*) {
     if (Given(name)) *target = *text;
-    if (target->empty() && !Given(name)) return true;  // optional output not asked for
-    std::string e;
-    if (!PrepareOutputDir(*target, &e)) {
-      *error = "--" + name + ": " + e;
-      return false;
-    }
     return true;
   });
 }
 
 void Command::OutputFile(const std::string& name, std::string* target, const std::string& help) {
   AddValue(name, help, "FILE", *target);
+  outputs_.push_back({name, target, true});
   std::string* text = &texts_.back();
-  outputs_.push_back([this, name, text, target](std::string* error) {
+  converters_.push_back([this, name, text, target](std::string*) {
     if (Given(name)) *target = *text;
-    if (target->empty() && !Given(name)) return true;
-    std::string e;
-    if (!PrepareOutputFile(*target, &e)) {
-      *error = "--" + name + ": " + e;
-      return false;
-    }
     return true;
   });
 }
@@ -265,15 +332,29 @@ bool Command::Parse(int argc, char** argv, int* exit_code) {
       return false;
     }
   }
-  for (const auto& prepare : outputs_) {
+  for (const Output& o : outputs_) {
+    if (o.target->empty() && !Given(o.name)) continue;  // optional output not asked for
     std::string error;
-    if (!prepare(&error)) {
-      *exit_code = Fail(error);
+    if (!(o.is_file ? CheckOutputFile(*o.target, &error) : CheckOutputDir(*o.target, &error))) {
+      *exit_code = Fail("--" + o.name + ": " + error);
       return false;
     }
   }
   *exit_code = 0;
   return true;
+}
+
+int Command::CreateOutputs() {
+  for (const Output& o : outputs_) {
+    if (o.target->empty() && !Given(o.name)) continue;
+    std::string error;
+    if (!(o.is_file ? CreateOutputFileDir(*o.target, &error)
+                    : CreateOutputDir(*o.target, &error))) {
+      std::fprintf(stderr, "ssc %s: --%s: %s\n", name_.c_str(), o.name.c_str(), error.c_str());
+      return 1;
+    }
+  }
+  return 0;
 }
 
 }  // namespace ssc::cli

@@ -1,7 +1,9 @@
 // The ssc command line: each subcommand declares typed options (unit, range and default shown in
 // --help) on top of CLI11; every number goes through the strict reader (common/strict_number.h).
 // Unknown options, stray positional arguments and repeated options are errors; so is an output
-// directory that cannot be created, checked before any work starts. Errors print one line
+// location that could not be created, checked by Parse() without creating anything. Outputs are
+// created by CreateOutputs(), which a command calls once all its inputs are read and checked,
+// so a failing invocation leaves no new directory behind. Errors print one line
 // "ssc COMMAND: --option: what is wrong; the valid range" and exit with 2.
 #ifndef SSC_APPS_SSC_CLI_H_
 #define SSC_APPS_SSC_CLI_H_
@@ -25,11 +27,15 @@ namespace ssc::cli {
 // "ssc 0.1.0 (MuJoCo 3.x.y)".
 std::string VersionText();
 
-// Checks that `dir` is, or can be made, a writable directory, and creates it. False + *error
-// naming the path when it is a file, lies under a file, or cannot be created or written.
-bool PrepareOutputDir(const std::string& dir, std::string* error);
-// The same for the directory a file will be written into.
-bool PrepareOutputFile(const std::string& file, std::string* error);
+// Checks, without creating anything, that `dir` is a writable directory or could be made one:
+// no part of the path is a file or a dangling link, no name is longer than NAME_MAX, and the
+// nearest existing ancestor is a writable directory. False + *error naming the path otherwise.
+bool CheckOutputDir(const std::string& dir, std::string* error);
+// CheckOutputDir, then creates the directory (and missing parents).
+bool CreateOutputDir(const std::string& dir, std::string* error);
+// The same two for a file to be written: not a directory; its directory as above.
+bool CheckOutputFile(const std::string& file, std::string* error);
+bool CreateOutputFileDir(const std::string& file, std::string* error);
 
 class Command {
  public:
@@ -53,8 +59,8 @@ class Command {
   void Choice(const std::string& name, std::string* target, const std::string& help,
               const std::vector<std::string>& choices);
   void Flag(const std::string& name, bool* target, const std::string& help);
-  // Output locations: checked (and the directory created) by Parse(), before any work. An
-  // empty value means "none" for optional outputs.
+  // Output locations: checked by Parse(), created by CreateOutputs(). An empty value means
+  // "none" for optional outputs.
   void OutputDir(const std::string& name, std::string* target, const std::string& help);
   void OutputFile(const std::string& name, std::string* target, const std::string& help);
   // A check run after every value is read and before outputs are prepared: returns "" when
@@ -67,6 +73,10 @@ class Command {
   // Parses argv (the arguments after the subcommand). Returns true to go on; otherwise the
   // command returns *exit_code: 0 after --help/--version, 2 on an error (already printed).
   bool Parse(int argc, char** argv, int* exit_code);
+  // Creates the output directories (for an output file, its directory). Call it once every
+  // input is read and checked, just before the work that writes. Returns 0, or 1 after
+  // printing the error (the location passed Parse()'s check but could not be made).
+  int CreateOutputs();
   // Whether the user gave the option (for options whose absence means "not asked for").
   bool Given(const std::string& name) const;
   // Prints "ssc NAME: message" to stderr and returns 2 (usage error) for `return cmd.Fail(...)`.
@@ -83,7 +93,12 @@ class Command {
   std::deque<std::string> texts_;  // raw text of value options (stable addresses)
   std::vector<std::function<bool(std::string*)>> converters_;  // run in order after parsing
   std::vector<std::function<std::string()>> checks_;           // then these
-  std::vector<std::function<bool(std::string*)>> outputs_;     // then the output locations
+  struct Output {
+    std::string name;     // option name
+    std::string* target;  // its value after Parse()
+    bool is_file;
+  };
+  std::vector<Output> outputs_;  // checked last by Parse(), created by CreateOutputs()
 };
 
 }  // namespace ssc::cli

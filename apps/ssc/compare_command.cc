@@ -53,7 +53,7 @@ int RunCompareCommand(int argc, char** argv) {
   cmd.Number("beta", &tc.law.beta, "closed loop: beta when the file has none", "",
              NumberRange::Closed(0, 100));
   cmd.Number("step", &tc.law.step_mm, "closed loop: the step dL when the file has none", "mm",
-             NumberRange::Positive(100));
+             NumberRange::Closed(kMinStepMm, kMaxStepMm));
   cmd.Flag("override-law", &o.override_law,
            "closed loop: use --pref, --beta, --step even when the file records them");
   cmd.Seed("seed", &tc.seed, "closed loop: noise seed");
@@ -84,6 +84,9 @@ int RunCompareCommand(int argc, char** argv) {
     std::fprintf(stderr, "ssc compare: %s\n", error.c_str());
     return 1;
   }
+  for (const std::string& w : r.log_warnings) {
+    std::fprintf(stderr, "ssc compare: warning: %s\n", w.c_str());
+  }
   const ComparisonSetup& s = r.setup;
   std::printf("%s, frame %s; scene object '%s', closest approach %.1f mm\n", s.format.c_str(),
               s.log_frame.c_str(), s.scene_object.name.c_str(), s.reach.closest_m * 1e3);
@@ -93,8 +96,9 @@ int RunCompareCommand(int argc, char** argv) {
   }
   const ReplayComparison& c = r.replay;
   for (int k = 0; k < 4; ++k) {
-    std::printf("chamber %d: RMS %.1f Pa (%.3f in log10), correlation %.3f, mean ratio %.3f\n",
-                k + 1, c.rms_pa[k], c.rms_log10[k], c.correlation[k], c.mean_ratio[k]);
+    std::printf("chamber %d: RMS %.1f Pa (%.3f in log10), correlation %s, mean ratio %.3f\n", k + 1,
+                c.rms_pa[k], c.rms_log10[k], CorrelationText(c.correlation[k]).c_str(),
+                c.mean_ratio[k]);
   }
   std::printf(
       "mean P: RMS %.1f Pa, bias %.1f Pa; direction error RMS %.1f deg (median %.1f, "

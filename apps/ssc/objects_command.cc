@@ -47,6 +47,7 @@ int RunObjectsCommand(int argc, char** argv) {
   spec.threads = static_cast<int>(threads);
   spec.out_dir = out_dir;
   spec.write_only = write_only;
+  if (int rc = cmd.CreateOutputs(); rc != 0) return rc;
   ObjectStudySummary summary;
   std::string error;
   const bool ok = RunObjectStudy(

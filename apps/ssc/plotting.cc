@@ -1,25 +1,61 @@
 #include "apps/ssc/plotting.h"
 
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
-#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 
 #include "runtime/mujoco_model.h"
+
+extern char** environ;
 
 namespace ssc {
 
 bool RunPlotScript(const std::string& script, const std::vector<std::string>& args) {
   const std::string root = SourceDir();
-  std::string python = root + "/.venv/bin/python";
+  const std::string python = root + "/.venv/bin/python";
   if (!std::filesystem::exists(python)) {
     std::fprintf(stderr, "plot skipped: %s not found (run tools/setup.sh)\n", python.c_str());
     return false;
   }
-  std::string cmd = "MPLBACKEND=Agg '" + python + "' '" + root + "/tools/" + script + "'";
-  for (const std::string& a : args) cmd += " '" + a + "'";
-  const int rc = std::system(cmd.c_str());
-  if (rc != 0) {
-    std::fprintf(stderr, "plot failed: %s exited with %d\n", script.c_str(), rc);
+  // The script runs directly (no shell): paths holding quotes, spaces or ';' stay one argument.
+  const std::string script_path = root + "/tools/" + script;
+  std::vector<char*> argv;
+  argv.push_back(const_cast<char*>(python.c_str()));
+  argv.push_back(const_cast<char*>(script_path.c_str()));
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  std::vector<std::string> env_text = {"MPLBACKEND=Agg"};
+  for (char** e = environ; *e != nullptr; ++e) {
+    if (std::strncmp(*e, "MPLBACKEND=", 11) != 0) env_text.emplace_back(*e);
+  }
+  std::vector<char*> envp;
+  for (std::string& e : env_text) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  std::fflush(stdout);
+  std::fflush(stderr);
+  pid_t pid = 0;
+  if (const int rc = posix_spawn(&pid, python.c_str(), nullptr, nullptr, argv.data(), envp.data());
+      rc != 0) {
+    std::fprintf(stderr, "plot failed: cannot start %s: %s\n", python.c_str(), std::strerror(rc));
+    return false;
+  }
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) {
+      std::fprintf(stderr, "plot failed: waiting for %s: %s\n", script.c_str(),
+                   std::strerror(errno));
+      return false;
+    }
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    std::fprintf(stderr, "plot failed: %s %s %d\n", script.c_str(),
+                 WIFEXITED(status) ? "exited with" : "killed by signal",
+                 WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status));
     return false;
   }
   return true;

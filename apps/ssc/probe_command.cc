@@ -50,6 +50,7 @@ int RunProbe(int argc, char** argv) {
     std::fprintf(stderr, "ssc probe: %s\n", error.c_str());
     return 1;
   }
+  if (int rc = cmd.CreateOutputs(); rc != 0) return rc;
   ProbeStudySpec spec;
   spec.from_mm = from;
   spec.to_mm = to;

@@ -8,6 +8,7 @@
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "runtime/mujoco_model.h"
+#include "runtime/trial.h"
 #include "studies/stability_study.h"
 
 namespace ssc {
@@ -24,8 +25,9 @@ int RunStabilityCommand(int argc, char** argv) {
   double dl = 5, dr_tol = 0.3, s_tol = 0.05;
   cmd.Text("scene", &scene_name, "scene");
   // Steps beyond the stable limit are the point of this study: allowed up to 100 ms.
-  cmd.NumberList("steps-ms", &steps_ms, "time steps to try", "ms", NumberRange::Positive(100));
-  cmd.Number("step", &dl, "controller step dL", "mm", NumberRange::Positive(100));
+  cmd.NumberList("steps-ms", &steps_ms, "time steps to try", "ms",
+                 NumberRange::Closed(kSmallestTimestepS * 1e3, 100));
+  cmd.Number("step", &dl, "controller step dL", "mm", NumberRange::Closed(kMinStepMm, kMaxStepMm));
   cmd.Number("dr-tol", &dr_tol, "tolerance on the mean radius", "mm", NumberRange::Closed(0, 100));
   cmd.Number("s-tol", &s_tol, "relative tolerance on the path length", "",
              NumberRange::Closed(0, 10));
@@ -45,6 +47,11 @@ int RunStabilityCommand(int argc, char** argv) {
   spec.dr_tol_mm = dr_tol;
   spec.s_tol = s_tol;
   spec.threads = static_cast<int>(threads);
+  if (const std::string e = CheckTrialScene(base.get(), spec.config); !e.empty()) {
+    std::fprintf(stderr, "ssc stability: %s: %s\n", scene_name.c_str(), e.c_str());
+    return 1;
+  }
+  if (int rc = cmd.CreateOutputs(); rc != 0) return rc;
   const StabilityResult result = RunStabilityStudy(base.get(), spec);
   const StabilityRow& ref = result.reference;
   std::printf("reference (RK4, 0.5 ms): %s, r_mean %.2f mm, s %.1f mm\n", OutcomeName(ref.outcome),
@@ -62,8 +69,10 @@ int RunStabilityCommand(int argc, char** argv) {
                 largest_ms);
   }
   const std::filesystem::path csv = std::filesystem::path(out_dir) / "stability.csv";
-  std::ofstream(csv) << StabilityCsv(result);
-  if (!std::ifstream(csv)) {
+  std::ofstream file(csv);
+  file << StabilityCsv(result);
+  file.close();
+  if (!file) {
     std::fprintf(stderr, "ssc stability: cannot write %s\n", csv.c_str());
     return 1;
   }

@@ -34,7 +34,8 @@ int RunSweepCommand(int argc, char** argv) {
   cmd.NumberList("pref", &spec.pref_pa, "P_ref values", "Pa",
                  NumberRange::Positive(1e6).OpenHigh());
   cmd.NumberList("beta", &spec.beta, "beta values", "", NumberRange::Closed(0, 100));
-  cmd.NumberList("step", &spec.step_mm, "step lengths dL", "mm", NumberRange::Positive(100));
+  cmd.NumberList("step", &spec.step_mm, "step lengths dL", "mm",
+                 NumberRange::Closed(kMinStepMm, kMaxStepMm));
   cmd.Integer("repeats", &repeats, "trials per grid point", NumberRange::Closed(1, 1000));
   cmd.Seed("seed", &spec.seed, "base seed (each trial's seed derives from it and its grid point)");
   cmd.Integer("threads", &threads, "worker threads", NumberRange::Closed(1, 256));
@@ -49,9 +50,13 @@ int RunSweepCommand(int argc, char** argv) {
     return std::string();
   });
   AddTrialSettingOptions(&cmd, &spec.base, &settings);
+  // Then every point of the grid, before anything is created.
+  cmd.Check([&spec, &repeats]() {
+    spec.repeats = static_cast<int>(repeats);
+    return CheckSweepGrid(spec);
+  });
   if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
   std::string error;
-  spec.repeats = static_cast<int>(repeats);
   spec.threads = static_cast<int>(threads);
   const std::filesystem::path out = out_dir;
   spec.out_csv = (out / "sweep.csv").string();
@@ -62,6 +67,11 @@ int RunSweepCommand(int argc, char** argv) {
     std::fprintf(stderr, "ssc sweep: %s\n", error.c_str());
     return 1;
   }
+  if (const std::string e = CheckTrialScene(model.get(), spec.base); !e.empty()) {
+    std::fprintf(stderr, "ssc sweep: %s: %s\n", scene.c_str(), e.c_str());
+    return 1;
+  }
+  if (int rc = cmd.CreateOutputs(); rc != 0) return rc;
   const bool rank0 = JobRunnerRank() == 0;
   const bool bar = rank0 && !no_progress && isatty(STDERR_FILENO);
   auto progress = [&](const SweepProgress& s) {

@@ -43,6 +43,10 @@ int RunTrialCommand(int argc, char** argv) {
     std::fprintf(stderr, "ssc trial: %s\n", error.c_str());
     return 1;
   }
+  if (const std::string e = CheckTrialScene(model.get(), config); !e.empty()) {
+    std::fprintf(stderr, "ssc trial: %s: %s\n", scene.c_str(), e.c_str());
+    return 1;
+  }
   if (cmd.Given("stop-at")) {
     // A partial run, for comparing with `ssc view --screenshot --time T` (same steps).
     DataPtr data = MakeData(model.get(), &error);
@@ -60,6 +64,7 @@ int RunTrialCommand(int argc, char** argv) {
                 PhaseName(trial->phase()), tool[0], tool[1], tool[2]);
     return 0;
   }
+  if (int rc = cmd.CreateOutputs(); rc != 0) return rc;
   const TrialResult r = RunTrial(model.get(), config, true, &error);
   const DiskTrialMetrics& m = r.metrics;
   std::printf("scene %s, P_ref %.0f Pa, beta %.2f, dL %.2f mm, seed %llu\n", scene_name.c_str(),

@@ -8,7 +8,7 @@ void AddLawOptions(cli::Command* cmd, ContourLawParams* law) {
   cmd->Number("beta", &law->beta, "beta, correction gain (dimensionless)", "",
               NumberRange::Closed(0, 100));
   cmd->Number("step", &law->step_mm, "step length dL per control iteration", "mm",
-              NumberRange::Positive(100));
+              NumberRange::Closed(kMinStepMm, kMaxStepMm));
 }
 
 void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* c, TrialSettings* s) {

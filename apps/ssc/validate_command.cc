@@ -45,12 +45,29 @@ int RunValidateCommand(int argc, char** argv) {
   spec.threads = static_cast<int>(threads);
   spec.out_dir = out_dir;
 
+  // Every input before any output: the map and each cell's trial, then the scene.
   std::string error;
-  ModelPtr model = LoadModel(ResolveScenePath(spec.scene_name), &error);
+  std::vector<MapCell> cells;
+  SweepSpec sweep;
+  if (!PrepareValidation(spec, &cells, &sweep, &error)) {
+    std::fprintf(stderr, "ssc validate: %s\n", error.c_str());
+    return 1;
+  }
+  const std::string scene = ResolveScenePath(spec.scene_name);
+  ModelPtr model = LoadModel(scene, &error);
   if (!model) {
     std::fprintf(stderr, "ssc validate: %s\n", error.c_str());
     return 1;
   }
+  TrialConfig first = sweep.base;
+  first.law.p_ref_pa = cells.front().pref_pa;
+  first.law.beta = cells.front().beta;
+  first.law.step_mm = cells.front().step_mm;
+  if (const std::string e = CheckTrialScene(model.get(), first); !e.empty()) {
+    std::fprintf(stderr, "ssc validate: %s: %s\n", scene.c_str(), e.c_str());
+    return 1;
+  }
+  if (int rc = cmd.CreateOutputs(); rc != 0) return rc;
   const bool rank0 = JobRunnerRank() == 0;
   const bool bar = rank0 && !no_progress && isatty(STDERR_FILENO);
   auto progress = [&](const SweepProgress& s) {

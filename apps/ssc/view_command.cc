@@ -63,6 +63,7 @@ int RunViewCommand(int argc, char** argv) {
     const std::uint64_t run_seed = v.config.seed;
     v.config = ObjectTrialConfig(spec, law, run_seed);
   }
+  v.create_outputs = [&cmd]() { return cmd.CreateOutputs(); };
   return RunViewer(v);
 }
 
