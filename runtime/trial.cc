@@ -399,14 +399,6 @@ bool ContourTrial::ReachTimedOut(double t, const char* what, const Vec3& point) 
   return true;
 }
 
-std::string CheckTrialScene(const mjModel* m, const TrialConfig& config) {
-  std::string error;
-  DataPtr data = MakeData(m, &error);
-  if (!data) return "could not make mjData: " + error;
-  if (!ContourTrial::Create(m, data.get(), config, false, &error)) return error;
-  return "";
-}
-
 bool ContourTrial::Step() {
   if (phase_ == TrialPhase::kDone) return false;
   mj_step(m_, d_);

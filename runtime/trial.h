@@ -188,11 +188,6 @@ class ContourTrial : public ControlCallback {
   Vec3 iteration_tool_{};  // measured tool position at the waiting iteration
 };
 
-// Whether a trial with `config` can be set up on `m` (the pressure sensor, the F/T sensor, a
-// gantry or an arm, a valid config and time step): "" or the reason. For commands to check a
-// scene before they create outputs or run a study; RunSweep checks it too.
-std::string CheckTrialScene(const mjModel* m, const TrialConfig& config);
-
 // Loads nothing: runs one trial on an existing model with its own mjData.
 // Checks that `m` can host a trial with `config` (sensors, sites, servo, time step) without
 // running it: studies call it once before any row is written, so a scene that cannot run a

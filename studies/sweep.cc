@@ -160,12 +160,6 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
     for (int rep = 0; rep < spec.repeats; ++rep)
       jobs.push_back({PointConfig(spec, point, rep), rep});
   }
-  // A scene unfit for a trial (no sensor, no arm or gantry) is an error, not a grid of
-  // "unstable" rows.
-  if (std::string e = CheckTrialScene(m, jobs.front().config); !e.empty()) {
-    *error = spec.scene_name + ": " + e;
-    return false;
-  }
   // A scene that cannot host a trial fails here, before any row, not as rows of "unstable".
   if (std::string setup_error; !CheckTrialSetup(m, jobs.front().config, &setup_error)) {
     *error = "scene '" + spec.scene_name + "' cannot run a trial: " + setup_error;

@@ -108,7 +108,7 @@ int RunCalibrateCommand(int argc, char** argv) {
       std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
       return 1;
     }
-    if (const std::string e = CheckTrialScene(model.get(), spec.base); !e.empty()) {
+    if (std::string e; !CheckTrialSetup(model.get(), spec.base, &e)) {
       std::fprintf(stderr, "ssc calibrate: %s\n", e.c_str());
       return 1;
     }

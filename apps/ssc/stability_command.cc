@@ -47,7 +47,7 @@ int RunStabilityCommand(int argc, char** argv) {
   spec.dr_tol_mm = dr_tol;
   spec.s_tol = s_tol;
   spec.threads = static_cast<int>(threads);
-  if (const std::string e = CheckTrialScene(base.get(), spec.config); !e.empty()) {
+  if (std::string e; !CheckTrialSetup(base.get(), spec.config, &e)) {
     std::fprintf(stderr, "ssc stability: %s: %s\n", scene_name.c_str(), e.c_str());
     return 1;
   }

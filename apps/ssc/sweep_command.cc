@@ -67,7 +67,7 @@ int RunSweepCommand(int argc, char** argv) {
     std::fprintf(stderr, "ssc sweep: %s\n", error.c_str());
     return 1;
   }
-  if (const std::string e = CheckTrialScene(model.get(), spec.base); !e.empty()) {
+  if (std::string e; !CheckTrialSetup(model.get(), spec.base, &e)) {
     std::fprintf(stderr, "ssc sweep: %s: %s\n", scene.c_str(), e.c_str());
     return 1;
   }

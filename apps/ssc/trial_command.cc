@@ -43,7 +43,7 @@ int RunTrialCommand(int argc, char** argv) {
     std::fprintf(stderr, "ssc trial: %s\n", error.c_str());
     return 1;
   }
-  if (const std::string e = CheckTrialScene(model.get(), config); !e.empty()) {
+  if (std::string e; !CheckTrialSetup(model.get(), config, &e)) {
     std::fprintf(stderr, "ssc trial: %s: %s\n", scene.c_str(), e.c_str());
     return 1;
   }

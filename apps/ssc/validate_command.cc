@@ -63,7 +63,7 @@ int RunValidateCommand(int argc, char** argv) {
   first.law.p_ref_pa = cells.front().pref_pa;
   first.law.beta = cells.front().beta;
   first.law.step_mm = cells.front().step_mm;
-  if (const std::string e = CheckTrialScene(model.get(), first); !e.empty()) {
+  if (std::string e; !CheckTrialSetup(model.get(), first, &e)) {
     std::fprintf(stderr, "ssc validate: %s: %s\n", scene.c_str(), e.c_str());
     return 1;
   }
