@@ -232,13 +232,13 @@ def read_lines(path):
         return f.read().splitlines()
 
 
-def run(args, timeout=60):
+def run(args, timeout=60, prefix=()):
     env = dict(os.environ)
     env.pop("DISPLAY", None)
     t0 = time.time()
     try:
-        r = subprocess.run([SSC] + args, capture_output=True, text=True, timeout=timeout, env=env,
-                           cwd=TMP)
+        r = subprocess.run(list(prefix) + [SSC] + args, capture_output=True, text=True,
+                           timeout=timeout, env=env, cwd=TMP)
         return r, time.time() - t0, False
     except subprocess.TimeoutExpired:
         return None, time.time() - t0, True
@@ -314,20 +314,23 @@ class BadInputTest(unittest.TestCase):
 
 
 def report():
+    """The round with each case's time and peak memory (GNU time's maximum RSS of that run)."""
     crashes = hangs = silent = left = 0
     worst = (0, None)
+    rss_file = os.path.join(TMP, ".rss")
     for args, code, text in CASES:
-        before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
         entries = set(os.listdir(TMP))
-        r, dt, hung = run(args)
+        r, dt, hung = run(args, prefix=("/usr/bin/time", "-f", "%M", "-o", rss_file))
+        with open(rss_file) as f:
+            rss_mb = int(f.read().split()[-1]) / 1024 if not hung else 0
+        os.remove(rss_file)
         new = set(os.listdir(TMP)) - entries
-        rss_mb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
-        if rss_mb > worst[0] and resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss > before:
+        if rss_mb > worst[0]:
             worst = (rss_mb, args)
         if hung:
             hangs += 1
             verdict = "HANG"
-        elif r.returncode < 0 or "terminate called" in r.stderr:
+        elif r.returncode < 0 or "terminate called" in r.stderr or "Command terminated" in r.stderr:
             crashes += 1
             verdict = "CRASH"
         elif r.returncode == 0 or text not in r.stderr:
@@ -339,7 +342,8 @@ def report():
         else:
             verdict = "ok"
         msg = (r.stderr.strip().splitlines() or [""])[0][:110] if r else ""
-        print(f"{verdict:12} rc={r.returncode if r else '-':>3} {dt:5.1f}s  {' '.join(args)[:60]:60}  {msg}")
+        print(f"{verdict:12} rc={r.returncode if r else '-':>3} {dt:5.1f}s {rss_mb:6.0f} MB  "
+              f"{' '.join(args)[:60]:60}  {msg}")
     print(f"\n{len(CASES)} cases: {crashes} crashes, {hangs} hangs, {silent} silent/wrong, "
           f"{left} left a directory behind; peak RSS of the worst case {worst[0]:.0f} MB "
           f"({' '.join(worst[1] or [])[:60]})")
