@@ -53,6 +53,10 @@ class ChamberPressureSensor final : public ChamberPressureDiagnostics {
   const ChamberPressureSample& last_sample() const override { return sample_; }
   void Measure(const mjModel* m, const mjData* d, ChamberPressureSample* sample) const override;
   void CopyDiagnosticsFrom(const ChamberPressureSensor& other) { sample_ = other.sample_; }
+  // The sensor chain's parameters with the run seed kept in the plugin state.
+  SensorChainParams RunSensorParams(const mjtNum* raw_state) const;
+  // The filtered output of the state into sensordata.
+  void WriteOutput(mjData* d, const SensorChainState& state) const;
 
   // Passive forces of the lip (ring bending, shear and tilt springs) into d->qfrc_passive, and
   // the carrier's locks switched to match the config.
@@ -363,6 +367,27 @@ void SetChamberPressureRunSeed(const mjModel* m, mjData* d, int instance, std::u
       static_cast<double>(seed & ((std::uint64_t{1} << 53) - 1));
 }
 
+void ReseedChamberPressure(const mjModel* m, mjData* d, int instance, std::uint64_t seed) {
+  SetChamberPressureRunSeed(m, d, instance, seed);
+  const ChamberPressureSensor* sensor = SensorOf(d, instance);
+  if (sensor == nullptr) return;
+  const mjtNum* raw_state = d->plugin_state + m->plugin_stateadr[instance];
+  SensorChainState* state = StateOf(d, m, instance);
+  ReseedSensorChain(sensor->RunSensorParams(raw_state), state);
+  sensor->WriteOutput(d, *state);
+}
+
+SensorChainParams ChamberPressureSensor::RunSensorParams(const mjtNum* raw_state) const {
+  SensorChainParams sensor = config_.sensor;
+  sensor.seed ^= static_cast<std::uint64_t>(raw_state[kSeedSlot]) * 0x9E3779B97F4A7C15ULL;
+  return sensor;
+}
+
+void ChamberPressureSensor::WriteOutput(mjData* d, const SensorChainState& state) const {
+  const std::array<double, kNumChambers> out = FilteredOutput(state);
+  for (int i = 0; i < kNumChambers; ++i) d->sensordata[sensor_adr_ + i] = out[i];
+}
+
 void ChamberPressureSensor::OpeningFrame(const mjData* d, mjtNum pos[3], mjtNum mat[9]) const {
   const mjtNum* cpos = d->xpos + 3 * carrier_body_;
   const mjtNum* cmat = d->xmat + 9 * carrier_body_;
@@ -538,12 +563,9 @@ void ChamberPressureSensor::Compute(const mjModel* m, mjData* d, int instance) {
         SolveFlowNetwork(config_.pneumatics, sample_.leak_area_m2, warm, &sample_.jet_area_m2);
     for (int i = 0; i < kNumChambers; ++i) warm[i] = sample_.flow.chamber_pa[i];
     warm[kNumChambers] = sample_.flow.port_pa;
-    SensorChainParams sensor = config_.sensor;
-    sensor.seed ^= static_cast<std::uint64_t>(raw_state[kSeedSlot]) * 0x9E3779B97F4A7C15ULL;
-    TakeSamples(sensor, k, sample_.flow.tap_pa, state);
+    TakeSamples(RunSensorParams(raw_state), k, sample_.flow.tap_pa, state);
   }
-  const std::array<double, kNumChambers> out = FilteredOutput(*state);
-  for (int i = 0; i < kNumChambers; ++i) d->sensordata[sensor_adr_ + i] = out[i];
+  WriteOutput(d, *state);
 }
 
 void ChamberPressureSensor::Visualize(const mjModel* m, mjData* d, const mjvOption* opt,

@@ -90,6 +90,12 @@ const ChamberPressureDiagnostics* FindChamberPressureDiagnostics(const mjModel* 
 // mj_resetData sets it back to 0, so set it after each reset.
 void SetChamberPressureRunSeed(const mjModel* m, mjData* d, int instance, std::uint64_t seed);
 
+// Sets the per-run noise seed on a running sensor and re-derives the noise of the samples it
+// holds for it (the samples, lag and sample times stay): the state and the sensor's output are
+// then what a run with `seed` from the start would have at this mjData, as long as the pressures
+// fed nothing back (the shared approach, runtime/approach_cache.h). Bit-identical.
+void ReseedChamberPressure(const mjModel* m, mjData* d, int instance, std::uint64_t seed);
+
 // Registers the plugin with MuJoCo (the library's init does this when it is loaded).
 void RegisterChamberPressurePlugin();
 

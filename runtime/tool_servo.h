@@ -30,6 +30,13 @@ struct ServoParams {
 
 class ToolServo {
  public:
+  // What the smoothing carries from one step to the next (everything else is fixed at Init).
+  struct State {
+    Vec3 target{};
+    Vec3 command{};
+    double last_time_s = -1;
+  };
+
   virtual ~ToolServo() = default;
   // Binds to the model (finds joints/actuators/site); holds the current pose. False + *error
   // when the scene lacks what this servo drives.
@@ -41,6 +48,12 @@ class ToolServo {
   const Vec3& command() const { return command_; }
   Vec3 Measured(const mjData* d) const;
   void set_params(const ServoParams& p) { params_ = p; }
+  State state() const { return {target_, command_, last_time_}; }
+  void set_state(const State& s) {
+    target_ = s.target;
+    command_ = s.command;
+    last_time_ = s.last_time_s;
+  }
 
  protected:
   // Sets controls so that the tool site goes to `tool_site_world` with the held orientation.

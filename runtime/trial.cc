@@ -162,6 +162,7 @@ void ContourTrial::Reset() {
   next_log_time_s_ = 0;
   follow_start_s_ = 0;
   goal_ = GoalTracker();
+  goal_start_ = {};
   path_xy_.clear();
   path_t_.clear();
   result_ = TrialResult();
@@ -329,7 +330,8 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
           follow_start_s_ = t;
           next_iteration_s_ = t;
           next_log_s_ = t;
-          goal_.Start(config_.target.goal, config_.target.edge, {tool[0], tool[1]});
+          goal_start_ = {tool[0], tool[1]};
+          goal_.Start(config_.target.goal, config_.target.edge, goal_start_);
         }
       }
       target[2] = hold_z_;
@@ -431,6 +433,51 @@ void ContourTrial::ApplyStep(const std::array<double, 2>& step_m) {
   last_step_world_ = {R[0] * step_m[0] + R[1] * step_m[1], R[3] * step_m[0] + R[4] * step_m[1]};
   servo_->SetTarget({iteration_tool_[0] + last_step_world_[0],
                      iteration_tool_[1] + last_step_world_[1], hold_z_});
+}
+
+bool ContourTrial::RunToFollowStart(double max_sim_s) {
+  while ((phase_ == TrialPhase::kApproach || phase_ == TrialPhase::kMoveToStart) &&
+         d_->time < max_sim_s && Step()) {
+  }
+  return phase_ == TrialPhase::kFollow;
+}
+
+FollowStart ContourTrial::SaveFollowStart() const {
+  FollowStart s;
+  s.servo = servo_->state();
+  s.transfer_done = transfer_done_;
+  s.ft_tare_n = ft_tare_n_;
+  s.tare_samples = tare_samples_;
+  s.hold_z_m = hold_z_;
+  s.follow_start_s = follow_start_s_;
+  s.next_iteration_s = next_iteration_s_;
+  s.next_log_s = next_log_s_;
+  s.next_log_time_s = next_log_time_s_;
+  s.last_tool_m = last_tool_;
+  s.goal_start_m = goal_start_;
+  s.lip_shear = lip_shear_;
+  return s;
+}
+
+void ContourTrial::ResumeAtFollowStart(const mjData* follow_start_data, const FollowStart& s) {
+  mj_copyData(d_, m_, follow_start_data);
+  // The only seed the approach used: the sensor's noise (its pressures fed nothing back).
+  ReseedChamberPressure(m_, d_, pressure_instance_, config_.seed);
+  servo_->set_state(s.servo);
+  transfer_done_ = s.transfer_done;
+  ft_tare_n_ = s.ft_tare_n;
+  tare_samples_ = s.tare_samples;
+  hold_z_ = s.hold_z_m;
+  result_.hold_height_m = s.hold_z_m;
+  follow_start_s_ = s.follow_start_s;
+  next_iteration_s_ = s.next_iteration_s;
+  next_log_s_ = s.next_log_s;
+  next_log_time_s_ = s.next_log_time_s;
+  last_tool_ = s.last_tool_m;
+  lip_shear_ = s.lip_shear;
+  goal_start_ = s.goal_start_m;
+  goal_.Start(config_.target.goal, config_.target.edge, goal_start_);
+  phase_ = TrialPhase::kFollow;
 }
 
 TrialResult ContourTrial::Run(double max_sim_s) {

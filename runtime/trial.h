@@ -98,6 +98,21 @@ struct TrialResult {
   std::vector<TrialLogRow> log;  // filled when requested
 };
 
+// What the approach and the move to the start point leave in the controller at the start of
+// following, beside the mjData (runtime/approach_cache.h shares both between trials whose
+// approaches are the same).
+struct FollowStart {
+  ToolServo::State servo;
+  bool transfer_done = false;
+  double ft_tare_n = 0;
+  int tare_samples = 0;
+  double hold_z_m = 0;
+  double follow_start_s = 0, next_iteration_s = 0, next_log_s = 0, next_log_time_s = 0;
+  Vec3 last_tool_m{};
+  Point2 goal_start_m{};  // the cup where the goal tracker started
+  LipShearState lip_shear;
+};
+
 // The controller behind mjcb_control for one mjData.
 class ContourTrial : public ControlCallback {
  public:
@@ -141,6 +156,17 @@ class ContourTrial : public ControlCallback {
   bool RunToNextIteration(double max_sim_s = 1e9);
   // The planar step for the iteration that is waiting (tool frame, m); the height is held.
   void ApplyStep(const std::array<double, 2>& step_m);
+
+  // The shared approach (runtime/approach_cache.h). Steps through the approach and the move;
+  // true when following has just started (false when the trial ended before).
+  bool RunToFollowStart(double max_sim_s = 1e9);
+  // At the start of following (right after RunToFollowStart returned true): the state to share.
+  FollowStart SaveFollowStart() const;
+  // On a freshly created trial: continues from another trial's follow start with the same
+  // approach (ApproachKeyOf equal, same model): copies `follow_start_data` into this trial's
+  // mjData, re-derives the pressure sensor's noise for this trial's seed and starts following
+  // with this trial's goal. The rows are then those of a run from scratch, to the bit.
+  void ResumeAtFollowStart(const mjData* follow_start_data, const FollowStart& s);
 
  private:
   ContourTrial(const mjModel* m, mjData* d, const TrialConfig& config, bool keep_log);
@@ -186,6 +212,7 @@ class ContourTrial : public ControlCallback {
   std::unique_ptr<ScopedControl> registration_;
   bool external_policy_ = false, awaiting_step_ = false;
   Vec3 iteration_tool_{};  // measured tool position at the waiting iteration
+  Point2 goal_start_{};    // the cup where the goal tracker started following
 };
 
 // Loads nothing: runs one trial on an existing model with its own mjData.

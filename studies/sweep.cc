@@ -86,12 +86,12 @@ ScopedTrialErrorGuard::ScopedTrialErrorGuard() : previous_(mju_user_error) {
 }
 ScopedTrialErrorGuard::~ScopedTrialErrorGuard() { mju_user_error = previous_; }
 
-TrialResult RunGuardedTrial(const mjModel* m, const TrialConfig& config) {
+TrialResult RunGuardedTrial(const mjModel* m, const TrialConfig& config, ApproachCache* cache) {
   TrialResult result;
   std::string trial_error;
   t_in_trial = true;
   try {
-    result = RunTrial(m, config, false, &trial_error);
+    result = RunTrialShared(m, config, cache, &trial_error);
   } catch (const std::exception& e) {
     result = TrialResult();
     result.outcome = Outcome::kUnstable;
@@ -195,9 +195,11 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
     const ContourLawParams& k = jobs[i].config.law;
     return done.count(MakeKey(k.p_ref_pa, k.beta, k.step_mm, jobs[i].repeat)) > 0;
   };
+  ApproachCache approaches(m);
+  ApproachCache* cache = spec.share_approach ? &approaches : nullptr;
   set.run = [&](std::size_t i) {
     return SweepCsvRow(spec.scene_name, jobs[i].config, jobs[i].repeat,
-                       RunGuardedTrial(m, jobs[i].config));
+                       RunGuardedTrial(m, jobs[i].config, cache));
   };
   ScopedTrialErrorGuard guard;
   int skipped = 0, finished = 0;
@@ -230,6 +232,8 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
   summary->balance_max_over_mean = stats.BalanceMaxOverMean();
   summary->longest_trial_s = stats.longest_job_s;
   summary->interrupted = stats.interrupted;
+  summary->approach = approaches.counts();
+  if (cache != nullptr) summary->approach_unshareable = approaches.unshareable_reason();
   if (!write_error.empty()) {
     *error = write_error;
     return false;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "runtime/approach_cache.h"
 #include "runtime/trial.h"
 
 namespace ssc {
@@ -27,6 +28,9 @@ struct SweepSpec {
   std::uint64_t seed = 1;
   int threads = 1;
   std::string out_csv;
+  // Simulate each distinct approach once and start the other trials from it
+  // (runtime/approach_cache.h); the rows are the same either way.
+  bool share_approach = true;
 };
 
 struct SweepProgress {
@@ -42,6 +46,10 @@ struct SweepSummary {
   double balance_max_over_mean = 1;  // max / mean of rank_busy_s
   double longest_trial_s = 0;
   bool interrupted = false;  // SIGINT/SIGTERM: finished rows kept, re-run to resume
+  // The shared approach on this rank (all zero when off): approaches simulated, trials resumed
+  // from one, trials run from scratch because sharing is impossible (and why).
+  ApproachCache::Counts approach;
+  std::string approach_unshareable;
 };
 
 // Seed of one grid point (stable across thread counts and runs).
@@ -62,7 +70,9 @@ class ScopedTrialErrorGuard {
  private:
   void (*previous_)(const char*);
 };
-TrialResult RunGuardedTrial(const mjModel* m, const TrialConfig& config);
+// One trial without a log; through `cache` (runtime/approach_cache.h) when given.
+TrialResult RunGuardedTrial(const mjModel* m, const TrialConfig& config,
+                            ApproachCache* cache = nullptr);
 
 // Runs the sweep on `m` (shared read-only by the threads). Collective under MPI: every rank
 // calls it; rank 0 writes the CSV. `progress` (optional) is called on rank 0 after each row. False

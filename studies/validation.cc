@@ -168,6 +168,7 @@ bool PrepareValidation(const ValidateSpec& spec, std::vector<MapCell>* cells, Sw
   sweep->seed = spec.seed;
   sweep->threads = spec.threads;
   sweep->out_csv = spec.out_dir + "/trials.csv";
+  sweep->share_approach = spec.share_approach;
   if (std::string e = CheckSweepGrid(*sweep); !e.empty()) {
     *error = spec.map_path + ": " + e;
     return false;
@@ -274,8 +275,9 @@ bool RunMapTrials(const mjModel* m, const std::vector<MapCell>& cells, const Tri
   JobSet set;
   set.count = jobs.size();
   set.cost = [&](std::size_t i) { return EstimatedTrialCost(jobs[i].config); };
+  ApproachCache approaches(m);  // rows as without it, to the bit
   set.run = [&](std::size_t i) {
-    const TrialResult r = RunGuardedTrial(m, jobs[i].config);
+    const TrialResult r = RunGuardedTrial(m, jobs[i].config, &approaches);
     std::ostringstream os;
     os.precision(17);
     os << OutcomeName(r.outcome) << ' ' << r.metrics.dr_mm << ' ' << r.metrics.sigma_r_mm << ' '

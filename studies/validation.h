@@ -27,7 +27,8 @@ struct ValidateSpec {
   int seeds = 10;          // trials per cell (>= 3: the first 3 give the class match)
   std::uint64_t seed = 1;  // base seed, as `ssc sweep --seed`
   int threads = 1;
-  std::string out_dir;  // trials.csv (resumable), cells.csv, validate.json
+  std::string out_dir;         // trials.csv (resumable), cells.csv, validate.json
+  bool share_approach = true;  // as SweepSpec::share_approach
 };
 
 // Reads the map and checks every cell's trial config (with spec.base) without running or

@@ -7,11 +7,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "runtime/approach_cache.h"
 #include "runtime/control_dispatch.h"
 #include "runtime/mujoco_model.h"
 #include "studies/sweep.h"
@@ -189,6 +191,104 @@ TEST(TrialIoTest, SummaryJsonEscapesTextAndRoundTrips) {
   EXPECT_DOUBLE_EQ(j["metrics"]["swept_deg"].get<double>(), 123.456);
   EXPECT_TRUE(j["metrics"]["s_mm"].is_null());  // not finite: null, still valid JSON
   EXPECT_DOUBLE_EQ(j["parameters"]["pref_pa"].get<double>(), c.law.p_ref_pa);
+}
+
+// Bitwise equality of the mjData arrays that carry a run on (state, warm start, controls,
+// plugin state, sensor outputs).
+void ExpectSameData(const mjModel* m, const mjData* a, const mjData* b) {
+  auto same = [](const char* what, const mjtNum* x, const mjtNum* y, mjtSize n) {
+    for (mjtSize i = 0; i < n; ++i) {
+      if (std::memcmp(x + i, y + i, sizeof(mjtNum)) != 0) {
+        ADD_FAILURE() << what << "[" << i << "]: " << x[i] << " vs " << y[i];
+        return;
+      }
+    }
+  };
+  same("time", &a->time, &b->time, 1);
+  same("qpos", a->qpos, b->qpos, m->nq);
+  same("qvel", a->qvel, b->qvel, m->nv);
+  same("act", a->act, b->act, m->na);
+  same("ctrl", a->ctrl, b->ctrl, m->nu);
+  same("qacc_warmstart", a->qacc_warmstart, b->qacc_warmstart, m->nv);
+  same("plugin_state", a->plugin_state, b->plugin_state, m->npluginstate);
+  same("sensordata", a->sensordata, b->sensordata, m->nsensordata);
+  for (int i = 0; i < m->neq; ++i) EXPECT_EQ(a->eq_active[i], b->eq_active[i]) << i;
+}
+
+TrialConfig SharedApproachConfig(double pref, double beta, double step, std::uint64_t seed) {
+  TrialConfig c;
+  c.law.p_ref_pa = pref;
+  c.law.beta = beta;
+  c.law.step_mm = step;
+  c.seed = seed;
+  c.timeout_s = 3;
+  // Effects on: the lip shear runs through the move, the chamber spread draws from the seed.
+  std::string error;
+  EXPECT_TRUE(ParseRobotEffects("slip_mm=1,tilt_decades=0.08,drift_pa=1,gain_spread=0.1",
+                                &c.effects, &error))
+      << error;
+  return c;
+}
+
+TEST(SharedApproachTest, ResumedTrialEqualsARunFromScratchToTheBit) {
+  const mjModel* m = Scene();
+  std::string error;
+  // Trial A publishes its follow start; trial B (other law and seed) runs from scratch and, as C,
+  // from A's follow start.
+  const TrialConfig a_config = SharedApproachConfig(70, 1, 5, 1);
+  const TrialConfig b_config = SharedApproachConfig(150, 3, 7.5, 2);
+  ASSERT_EQ(ApproachKeyOf(a_config), ApproachKeyOf(b_config));
+  DataPtr da = MakeData(m, &error), db = MakeData(m, &error), dc = MakeData(m, &error);
+  auto a = ContourTrial::Create(m, da.get(), a_config, false, &error);
+  auto b = ContourTrial::Create(m, db.get(), b_config, false, &error);
+  auto c = ContourTrial::Create(m, dc.get(), b_config, false, &error);
+  ASSERT_TRUE(a && b && c) << error;
+  ASSERT_TRUE(a->RunToFollowStart());
+  ASSERT_TRUE(b->RunToFollowStart());
+  c->ResumeAtFollowStart(da.get(), a->SaveFollowStart());
+  EXPECT_EQ(c->phase(), TrialPhase::kFollow);
+  ExpectSameData(m, db.get(), dc.get());
+  // The seeds' noise differs (so the comparison above could fail).
+  const ChamberPressureDiagnostics* sensor = FindChamberPressureDiagnostics(m, da.get());
+  EXPECT_NE(da->sensordata[sensor->sensor_adr()], db->sensordata[sensor->sensor_adr()]);
+  const TrialResult rb = b->Run(), rc = c->Run();
+  EXPECT_EQ(SweepCsvRow("s", b_config, 0, rb), SweepCsvRow("s", b_config, 0, rc));
+  EXPECT_EQ(rb.hold_height_m, rc.hold_height_m);
+  EXPECT_EQ(b->path(), c->path());
+  ExpectSameData(m, db.get(), dc.get());
+}
+
+TEST(SharedApproachTest, CacheSimulatesEachApproachOnceAndKeysOnWhatTheApproachReads) {
+  const mjModel* m = Scene();
+  ApproachCache cache(m);
+  EXPECT_EQ(cache.unshareable_reason(), "");
+  std::string error;
+  const TrialConfig first = SharedApproachConfig(70, 1, 5, 1);
+  TrialConfig other_law = SharedApproachConfig(200, 0.5, 2.5, 9);
+  other_law.control_period_s = 0.25;
+  other_law.timeout_s = 2;
+  EXPECT_EQ(ApproachKeyOf(first), ApproachKeyOf(other_law));
+  TrialConfig other_force = first;
+  other_force.approach_force_n = 2.0;
+  EXPECT_NE(ApproachKeyOf(first), ApproachKeyOf(other_force));
+  TrialConfig other_start = first;
+  other_start.target.start[0] += 1e-3;
+  EXPECT_NE(ApproachKeyOf(first), ApproachKeyOf(other_start));
+  TrialConfig other_smoothing = first;
+  other_smoothing.servo.smoothing_s = 0.1;
+  EXPECT_NE(ApproachKeyOf(first), ApproachKeyOf(other_smoothing));
+  TrialConfig other_slip = first;
+  other_slip.effects.lip.slip_mm = 0.5;
+  EXPECT_NE(ApproachKeyOf(first), ApproachKeyOf(other_slip));
+
+  const TrialResult scratch = RunTrial(m, other_law, false, &error);
+  RunTrialShared(m, first, &cache, &error);
+  const TrialResult shared = RunTrialShared(m, other_law, &cache, &error);
+  RunTrialShared(m, other_force, &cache, &error);
+  EXPECT_EQ(cache.counts().simulated, 2);
+  EXPECT_EQ(cache.counts().resumed, 1);
+  EXPECT_EQ(cache.counts().unshared, 0);
+  EXPECT_EQ(SweepCsvRow("s", other_law, 0, scratch), SweepCsvRow("s", other_law, 0, shared));
 }
 
 TEST(SweepTest, ParallelSweepGivesTheSameRowsAsSerialAndResumes) {

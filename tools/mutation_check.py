@@ -133,8 +133,8 @@ MUTATIONS = [
       "chambers 3 and 4 swapped", ("cup_geometry_test",)),
     # --- sensor chain ---
     M("sensor-noise-doubled", "sensor chain", "plugin/pneumatics/sensor_chain.cc",
-      "state->window_pa[slot][c] = lagged + params.noise_pa * CounterGaussian(params.seed, k, c);",
-      "state->window_pa[slot][c] = lagged + 2 * params.noise_pa * CounterGaussian(params.seed, k, c);",
+      "return clean_pa + params.noise_pa * CounterGaussian(params.seed, sample_index, chamber);",
+      "return clean_pa + 2 * params.noise_pa * CounterGaussian(params.seed, sample_index, chamber);",
       "sensor noise twice its sigma", ("sensor_chain_test",)),
     M("sensor-lag-sign", "sensor chain", "plugin/pneumatics/sensor_chain.cc",
       "1.0 - std::exp(-dt / params.lag_s)", "1.0 - std::exp(-2 * dt / params.lag_s)",

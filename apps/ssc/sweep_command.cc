@@ -28,7 +28,7 @@ int RunSweepCommand(int argc, char** argv) {
   spec.step_mm = {2.5, 5, 7.5};
   long repeats = 3, threads = std::max(1u, std::thread::hardware_concurrency());
   std::string out_dir = "out/sweep";
-  bool no_plot = false, no_progress = false;
+  bool no_plot = false, no_progress = false, no_shared_approach = false;
   TrialSettings settings;
   cmd.Text("scene", &spec.scene_name, "scene (name under scenes/ or a path)");
   cmd.NumberList("pref", &spec.pref_pa, "P_ref values", "Pa",
@@ -42,6 +42,9 @@ int RunSweepCommand(int argc, char** argv) {
   cmd.OutputDir("out", &out_dir, "output directory (sweep.csv, success_maps.png)");
   cmd.Flag("no-plot", &no_plot, "skip the PNG plot");
   cmd.Flag("no-progress", &no_progress, "no progress bar even on a terminal");
+  cmd.Flag("no-shared-approach", &no_shared_approach,
+           "simulate every trial's approach and move to the start point itself (by default "
+           "each distinct approach is simulated once and shared; the rows are the same)");
   // The trial settings are checked with the grid's first point (each point is checked again).
   cmd.Check([&spec]() {
     spec.base.law.p_ref_pa = spec.pref_pa.front();
@@ -58,6 +61,7 @@ int RunSweepCommand(int argc, char** argv) {
   if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
   std::string error;
   spec.threads = static_cast<int>(threads);
+  spec.share_approach = !no_shared_approach;
   const std::filesystem::path out = out_dir;
   spec.out_csv = (out / "sweep.csv").string();
 
@@ -105,6 +109,7 @@ int RunSweepCommand(int argc, char** argv) {
     std::printf("%s%.1f", r ? " " : "", summary.rank_busy_s[r]);
   }
   std::printf(" s)\n");
+  PrintApproachSharing(spec.share_approach, summary);
   if (summary.interrupted) {
     std::fprintf(stderr,
                  "ssc sweep: interrupted; %d finished rows kept in %s, re-run the same "

@@ -1,5 +1,7 @@
 #include "apps/ssc/trial_options.h"
 
+#include <cstdio>
+
 namespace ssc {
 
 void AddLawOptions(cli::Command* cmd, ContourLawParams* law) {
@@ -52,6 +54,17 @@ void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* c, TrialSettings* s)
     c->law.dead_band = !s->no_dead_band;
     return c->Validate();
   });
+}
+
+void PrintApproachSharing(bool on, const SweepSummary& summary) {
+  if (!on) {
+    std::printf("approach: not shared (--no-shared-approach)\n");
+    return;
+  }
+  const ApproachCache::Counts& c = summary.approach;
+  std::printf("approach: shared: %d simulated, %d trials started from one, %d from scratch%s%s\n",
+              c.simulated, c.resumed, c.unshared, summary.approach_unshareable.empty() ? "" : ": ",
+              summary.approach_unshareable.c_str());
 }
 
 }  // namespace ssc

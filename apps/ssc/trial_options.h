@@ -7,6 +7,7 @@
 
 #include "apps/ssc/cli.h"
 #include "runtime/trial.h"
+#include "studies/sweep.h"
 
 namespace ssc {
 
@@ -24,6 +25,9 @@ struct TrialSettings {
   std::string effects = "default";
 };
 void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* config, TrialSettings* settings);
+
+// One summary line on the shared approach (runtime/approach_cache.h) of this rank's trials.
+void PrintApproachSharing(bool on, const SweepSummary& summary);
 
 }  // namespace ssc
 

@@ -28,7 +28,7 @@ int RunValidateCommand(int argc, char** argv) {
   spec.scene_name = "disk_benchmark_gantry";
   long seeds = 10, threads = std::max(1u, std::thread::hardware_concurrency());
   std::string out_dir = "out/validate";
-  bool no_plot = false, no_progress = false;
+  bool no_plot = false, no_progress = false, no_shared_approach = false;
   TrialSettings settings;
   cmd.Text("map", &spec.map_path, "published map CSV (step_mm,beta,pref_pa,successes_of_3)");
   cmd.Text("scene", &spec.scene_name, "scene (name under scenes/ or a path)");
@@ -39,11 +39,14 @@ int RunValidateCommand(int argc, char** argv) {
   cmd.OutputDir("out", &out_dir, "output directory");
   cmd.Flag("no-plot", &no_plot, "skip the PNG figure");
   cmd.Flag("no-progress", &no_progress, "no progress bar even on a terminal");
+  cmd.Flag("no-shared-approach", &no_shared_approach,
+           "simulate every trial's approach itself (as ssc sweep --no-shared-approach)");
   AddTrialSettingOptions(&cmd, &spec.base, &settings);
   if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
   spec.seeds = static_cast<int>(seeds);
   spec.threads = static_cast<int>(threads);
   spec.out_dir = out_dir;
+  spec.share_approach = !no_shared_approach;
 
   // Every input before any output: the map and each cell's trial, then the scene.
   std::string error;
@@ -97,6 +100,7 @@ int RunValidateCommand(int argc, char** argv) {
   std::printf("  class match (3 trials/cell)   %.1f %%\n", 100 * score.class_match);
   std::printf("  expected agreement            %.3f\n", score.expected_agreement);
   std::printf("  opposite cells                %d\n", score.opposite);
+  PrintApproachSharing(spec.share_approach, summary);
   std::printf("wrote %s/cells.csv, %s/validate.json\n", out_dir.c_str(), out_dir.c_str());
   if (!no_plot) {
     const std::string png = out_dir + "/validate.png";

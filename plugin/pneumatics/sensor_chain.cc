@@ -47,6 +47,11 @@ double CounterGaussian(std::uint64_t seed, std::int64_t sample_index, int chambe
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(6.283185307179586 * u2);
 }
 
+double NoisySample(const SensorChainParams& params, double clean_pa, std::int64_t sample_index,
+                   int chamber) {
+  return clean_pa + params.noise_pa * CounterGaussian(params.seed, sample_index, chamber);
+}
+
 int TakeSamples(const SensorChainParams& params, std::int64_t sample_index,
                 const std::array<double, kNumChambers>& tap_pa, SensorChainState* state) {
   const std::int64_t last = static_cast<std::int64_t>(state->last_sample_index);
@@ -65,14 +70,26 @@ int TakeSamples(const SensorChainParams& params, std::int64_t sample_index,
     for (int c = 0; c < kNumChambers; ++c) {
       double& lagged = state->lagged_pa[c];
       lagged = (first && taken == 0) ? tap_pa[c] : lagged + alpha * (tap_pa[c] - lagged);
-      state->window_pa[slot][c] = lagged + params.noise_pa * CounterGaussian(params.seed, k, c);
+      state->clean_pa[slot][c] = lagged;
+      state->window_pa[slot][c] = NoisySample(params, lagged, k, c);
     }
+    state->slot_index[slot] = static_cast<double>(k);
     state->head = static_cast<double>((slot + 1) % params.average_samples);
     if (state->count < params.average_samples) state->count += 1.0;
     ++taken;
   }
   state->last_sample_index = static_cast<double>(sample_index);
   return taken;
+}
+
+void ReseedSensorChain(const SensorChainParams& params, SensorChainState* state) {
+  const int n = static_cast<int>(state->count);
+  for (int slot = 0; slot < n; ++slot) {
+    const auto k = static_cast<std::int64_t>(state->slot_index[slot]);
+    for (int c = 0; c < kNumChambers; ++c) {
+      state->window_pa[slot][c] = NoisySample(params, state->clean_pa[slot][c], k, c);
+    }
+  }
 }
 
 std::array<double, kNumChambers> FilteredOutput(const SensorChainState& state) {

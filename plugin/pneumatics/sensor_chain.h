@@ -38,7 +38,11 @@ struct SensorChainState {
   double count;              // samples in the window, <= average_samples
   double head;               // next slot to write
   double lagged_pa[kNumChambers];
-  double window_pa[kMaxAverageSamples][kNumChambers];
+  double window_pa[kMaxAverageSamples][kNumChambers];  // noisy samples (what the host averages)
+  // Each slot's sample before its noise and its sample index: with them the window can be
+  // re-derived for another seed (ReseedSensorChain) exactly as TakeSamples would have written it.
+  double clean_pa[kMaxAverageSamples][kNumChambers];
+  double slot_index[kMaxAverageSamples];
 };
 inline constexpr int kSensorChainStateSize = sizeof(SensorChainState) / sizeof(double);
 
@@ -50,11 +54,22 @@ std::int64_t SampleIndexAt(const SensorChainParams& params, double time_s);
 // Standard-normal deviate for (seed, sample index, chamber).
 double CounterGaussian(std::uint64_t seed, std::int64_t sample_index, int chamber);
 
+// One noisy sample: `clean_pa` plus the noise of (seed, sample index, chamber). The one place the
+// noise is added (TakeSamples and ReseedSensorChain both call it, so their results are identical
+// to the bit).
+double NoisySample(const SensorChainParams& params, double clean_pa, std::int64_t sample_index,
+                   int chamber);
+
 // Takes samples up to `sample_index` (one per missed index, at most the window length) of the
 // tap pressures `tap_pa`, through lag and noise, into the window. Returns the number of samples
 // taken (0 when `sample_index` was already taken).
 int TakeSamples(const SensorChainParams& params, std::int64_t sample_index,
                 const std::array<double, kNumChambers>& tap_pa, SensorChainState* state);
+
+// Rewrites the window's noisy samples for `params.seed` (the lag state and the sample times are
+// unchanged: noise never feeds back). The state then equals what TakeSamples would have left with
+// that seed from the start.
+void ReseedSensorChain(const SensorChainParams& params, SensorChainState* state);
 
 // The host's moving average of the window (0 before the first sample).
 std::array<double, kNumChambers> FilteredOutput(const SensorChainState& state);
