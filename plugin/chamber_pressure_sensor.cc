@@ -91,6 +91,7 @@ class ChamberPressureSensor final : public ChamberPressureDiagnostics {
   // Ring bending: each segment's slide joint, its angle, the ring radius and the mode cap.
   std::vector<int> segment_dof_, segment_qpos_;
   std::vector<double> segment_angle_;
+  RingModeShapes ring_shapes_;  // at segment_angle_, made once
   mutable std::vector<double> ring_u_, ring_force_;
   double lip_radius_m_ = 5.5e-3;
   double ring_mode_cap_n_per_m_ = kNoModeCap;
@@ -310,6 +311,7 @@ bool ChamberPressureSensor::BindLip(const mjModel* m, std::string* error) {
   if (!segment_dof_.empty()) ring_mode_cap_n_per_m_ = min_mass / (dt * dt);
   ring_u_.assign(n_seg, 0.0);
   ring_force_.assign(n_seg, 0.0);
+  ring_shapes_ = MakeRingModeShapes(segment_angle_.data(), n_seg);
 
   // Carrier joints: slides shear, hinges tilt; each may be pinned by a joint equality.
   bool has_shear = false, has_tilt = false;
@@ -538,8 +540,8 @@ void ChamberPressureSensor::ApplyLipForces(const mjModel* m, mjData* d) const {
       ring_u_[i] = d->qpos[segment_qpos_[i]];
       ring_force_[i] = 0.0;
     }
-    AddRingBendingForce(ring_u_.data(), segment_angle_.data(), n, lip.bending_stiffness_nm2,
-                        lip_radius_m_, ring_mode_cap_n_per_m_, ring_force_.data());
+    AddRingBendingForce(ring_u_.data(), ring_shapes_, lip.bending_stiffness_nm2, lip_radius_m_,
+                        ring_mode_cap_n_per_m_, ring_force_.data());
     for (int i = 0; i < n; ++i) d->qfrc_passive[segment_dof_[i]] += ring_force_[i];
   }
   // The carrier's shear slides and tilt hinges: springs when soft, locked by their equality

@@ -10,11 +10,15 @@
 //
 // Per segment the mode-k stiffness is lambda_k = 2 pi EI k^4 / (N R^3) (N/m). Short waves are
 // stiff (k^4); `mode_cap_n_per_m` caps lambda_k so an explicit integrator stays stable at its time
-// step (the adapter derives the cap from the step and the segment mass). Never allocates.
+// step (the adapter derives the cap from the step and the segment mass).
+//
+// The mode shapes at the segments' angles (RingModeShapes) depend on the angles only: the plugin
+// makes them once, and the per-step force then needs no trigonometry and never allocates.
 #ifndef SSC_PLUGIN_PNEUMATICS_LIP_RING_H_
 #define SSC_PLUGIN_PNEUMATICS_LIP_RING_H_
 
 #include <limits>
+#include <vector>
 
 namespace ssc {
 
@@ -32,6 +36,23 @@ struct LipMechanics {
 // Mode-k per-segment stiffness, N/m (k >= 2), before any cap.
 double RingModeStiffness(int k, int n_segments, double bending_stiffness_nm2, double radius_m);
 
+// cos(k theta_i) and sin(k theta_i) for the modes k = 2 .. n/2 (index (k - 2) * n + i).
+struct RingModeShapes {
+  int n = 0;
+  std::vector<double> cos_k, sin_k;
+};
+RingModeShapes MakeRingModeShapes(const double* theta_rad, int n);
+
+// Bending energy (J) of displacements u[0..shapes.n).
+double RingBendingEnergy(const double* u, const RingModeShapes& shapes,
+                         double bending_stiffness_nm2, double radius_m,
+                         double mode_cap_n_per_m = kNoModeCap);
+// Adds the bending force -dE/du (N) to force[0..shapes.n). Never allocates.
+void AddRingBendingForce(const double* u, const RingModeShapes& shapes,
+                         double bending_stiffness_nm2, double radius_m, double mode_cap_n_per_m,
+                         double* force);
+
+// The same from the angles (makes the shapes on each call: for tests and tools).
 // Bending energy (J) of displacements u[0..n) at angles theta_rad[0..n) (evenly spaced).
 double RingBendingEnergy(const double* u, const double* theta_rad, int n,
                          double bending_stiffness_nm2, double radius_m,
