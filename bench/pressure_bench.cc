@@ -67,6 +67,10 @@ mjModel* CompileVariant(const std::string& path, bool lip_joints, std::string* e
     *error = parse_error;
     return nullptr;
   }
+  if (!ssc::RemoveListedJoints(spec, error)) {
+    mj_deleteSpec(spec);
+    return nullptr;
+  }
   auto remove_all = [&](mjtObj type, auto keep) {
     for (mjsElement* e = mjs_firstElement(spec, type); e;) {
       mjsElement* next = mjs_nextElement(spec, e);

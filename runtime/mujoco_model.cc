@@ -10,6 +10,7 @@
 #include <fstream>
 #include <mutex>
 #include <sstream>
+#include <vector>
 
 #include "common/input_file.h"
 #include "plugin/chamber_pressure_config.h"
@@ -92,7 +93,47 @@ ModelPtr CheckedModel(mjModel* m, const std::string& label, std::string* error) 
   return ModelPtr(m);
 }
 
+// Compiles a parsed scene (joint removals first); null with *error (the compiler's message).
+mjModel* CompileSpec(mjSpec* spec, const mjVFS* vfs, std::string* error) {
+  if (!RemoveListedJoints(spec, error)) return nullptr;
+  mjModel* m = mj_compile(spec, vfs);
+  if (m == nullptr) *error = mjs_getError(spec);
+  return m;
+}
+
 }  // namespace
+
+bool RemoveListedJoints(mjSpec* spec, std::string* error) {
+  mjsElement* listed = mjs_findElement(spec, mjOBJ_TEXT, kRemoveJointsText);
+  if (listed == nullptr) return true;
+  std::istringstream names(mjs_getString(mjs_asText(listed)->data));
+  std::vector<std::string> removed;
+  for (std::string name; names >> name;) {
+    mjsElement* joint = mjs_findElement(spec, mjOBJ_JOINT, name.c_str());
+    if (joint == nullptr) {
+      *error = std::string("<custom><text name=\"") + kRemoveJointsText + "\"> names joint '" +
+               name + "', which the model does not have";
+      return false;
+    }
+    mjs_delete(spec, joint);
+    removed.push_back(name);
+  }
+  auto is_removed = [&removed](const mjString* name) {
+    const char* n = mjs_getString(name);
+    for (const std::string& r : removed)
+      if (r == n) return true;
+    return false;
+  };
+  for (mjsElement* e = mjs_firstElement(spec, mjOBJ_EQUALITY); e;) {
+    mjsElement* next = mjs_nextElement(spec, e);
+    const mjsEquality* eq = mjs_asEquality(e);
+    if (eq->type == mjEQ_JOINT && (is_removed(eq->name1) || is_removed(eq->name2))) {
+      mjs_delete(spec, e);
+    }
+    e = next;
+  }
+  return true;
+}
 
 std::string CheckMuJoCoVersion() {
   if (mj_version() != mjVERSION_HEADER) {
@@ -151,8 +192,9 @@ ModelPtr LoadModelFromTexts(const ModelTexts& texts, const std::string& label, s
     WarningCapture capture(&warnings);  // (also keeps MuJoCo from writing MUJOCO_LOG.TXT)
     mjSpec* spec = mj_parseXMLString(texts.main_xml.c_str(), &vfs, buffer, sizeof(buffer));
     if (spec != nullptr) {
-      m = mj_compile(spec, &vfs);
-      if (m == nullptr) std::snprintf(buffer, sizeof(buffer), "%s", mjs_getError(spec));
+      std::string compile_error;
+      m = CompileSpec(spec, &vfs, &compile_error);
+      if (m == nullptr) std::snprintf(buffer, sizeof(buffer), "%s", compile_error.c_str());
       mj_deleteSpec(spec);
     }
   }
@@ -183,7 +225,13 @@ ModelPtr LoadModel(const std::string& path, std::string* error) {
   mjModel* m = nullptr;
   {
     WarningCapture capture(&warnings);
-    m = mj_loadXML(path.c_str(), nullptr, buffer, sizeof(buffer));
+    mjSpec* spec = mj_parseXML(path.c_str(), nullptr, buffer, sizeof(buffer));
+    if (spec != nullptr) {
+      std::string compile_error;
+      m = CompileSpec(spec, nullptr, &compile_error);
+      if (m == nullptr) std::snprintf(buffer, sizeof(buffer), "%s", compile_error.c_str());
+      mj_deleteSpec(spec);
+    }
   }
   if (m == nullptr) {
     *error = path + ": " + buffer;
