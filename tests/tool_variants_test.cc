@@ -77,5 +77,38 @@ TEST(ToolVariantsTest, VariantsCompileInMemoryWithTheirConfig) {
   EXPECT_NE(error.find("ssc.chamber_pressure"), std::string::npos) << error;
 }
 
+// The light scene leaves the lip carrier's joints and their locks out (<custom> ssc_remove_joints),
+// from its file and as in-memory variants; a variant that switches the lip shear on is refused
+// with the plugin's message; a name the model lacks is an error naming it.
+TEST(ToolVariantsTest, LightSceneLeavesTheListedJointsOut) {
+  std::string error;
+  ModelPtr gantry = LoadModel(SourceDir() + "/scenes/disk_benchmark_gantry.xml", &error);
+  ModelPtr light = LoadModel(SourceDir() + "/scenes/disk_benchmark_light.xml", &error);
+  ASSERT_TRUE(gantry && light) << error;
+  EXPECT_EQ(light->nv, gantry->nv - 4);
+  EXPECT_EQ(light->neq, gantry->neq - 4);
+  for (const char* j :
+       {"ssc_flex_tilt_x", "ssc_flex_tilt_y", "ssc_flex_shear_x", "ssc_flex_shear_y"}) {
+    EXPECT_GE(mj_name2id(gantry.get(), mjOBJ_JOINT, j), 0) << j;
+    EXPECT_EQ(mj_name2id(light.get(), mjOBJ_JOINT, j), -1) << j;
+  }
+  const auto variants =
+      ToolModelVariants::Read(SourceDir() + "/scenes/disk_benchmark_light.xml", &error);
+  ASSERT_TRUE(variants) << error;
+  ModelPtr variant = variants->Compile({{{"noise_pa", "3"}}, 0}, &error);
+  ASSERT_TRUE(variant) << error;
+  EXPECT_EQ(variant->nv, light->nv);
+  EXPECT_FALSE(variants->Compile({{{"lip_shear_n_per_mm", "1"}}, 0}, &error));
+  EXPECT_NE(error.find("lip_shear_n_per_mm"), std::string::npos) << error;
+
+  ModelTexts texts;
+  texts.main_xml =
+      "<mujoco><custom><text name=\"ssc_remove_joints\" data=\"a nope\"/></custom>"
+      "<worldbody><body><joint name=\"a\"/><geom size=\"0.1\"/></body></worldbody></mujoco>";
+  error.clear();
+  EXPECT_FALSE(LoadModelFromTexts(texts, "t", &error));
+  EXPECT_NE(error.find("'nope'"), std::string::npos) << error;
+}
+
 }  // namespace
 }  // namespace ssc
