@@ -203,8 +203,9 @@ TEST(RobotEffectsKeysTest, ParseIsStrictAndOffTurnsEverythingOff) {
   ASSERT_TRUE(ParseRobotEffects("jitter_s=0.02,tilt_decades=0.1", &p, &error)) << error;
   EXPECT_EQ(p.loop.jitter_s, 0.02);
   EXPECT_EQ(p.lip.tilt_decades, 0.1);
-  for (const char* bad : {"jitter_s=", "jitter_s=0x10", "tilt_decades=2", "nope=1", "jitter_s=0.1,",
-                          "slip_mm=nan", "drift_pa=1e3", "gain_spread"}) {
+  for (const char* bad :
+       {"jitter_s=", "jitter_s=0x10", "tilt_decades=2", "nope=1", "jitter_s=0.1,", "slip_mm=nan",
+        "drift_pa=1e3", "gain_spread", "slip_mm=1,slip_mm=2", "drift_pa=5Pa", "drift_pa= "}) {
     RobotEffectsParams q = p;
     EXPECT_FALSE(ParseRobotEffects(bad, &q, &error)) << bad;
     EXPECT_FALSE(error.empty());

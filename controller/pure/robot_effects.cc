@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "common/counter_rng.h"
+#include "common/strict_number.h"
 
 namespace ssc {
 namespace {
@@ -60,6 +61,7 @@ bool ParseRobotEffects(const std::string& text, RobotEffectsParams* p, std::stri
   }
   if (text == "default") return true;
   std::size_t pos = 0;
+  std::string seen = ",";
   while (pos <= text.size()) {
     const std::size_t end = std::min(text.find(',', pos), text.size());
     const std::string item = text.substr(pos, end - pos);
@@ -79,14 +81,16 @@ bool ParseRobotEffects(const std::string& text, RobotEffectsParams* p, std::stri
       *error = "effects: unknown key '" + key + "' (keys: " + names + ")";
       return false;
     }
-    char* stop = nullptr;
-    const double v = value.empty() ? NAN : std::strtod(value.c_str(), &stop);
-    if (value.empty() || stop != value.c_str() + value.size() || !std::isfinite(v) ||
-        value.find_first_of("xXpP") != std::string::npos || v < found->min || v > found->max) {
-      std::ostringstream os;
-      os << "effects: " << key << " = '" << value << "' must be a number in [" << found->min << ", "
-         << found->max << "] " << found->unit;
-      *error = os.str();
+    // A key given twice is a typo, not an override: which one was meant is unknowable.
+    if (seen.find("," + key + ",") != std::string::npos) {
+      *error = "effects: " + key + " is given twice";
+      return false;
+    }
+    seen += key + ",";
+    double v = 0;
+    std::string why;
+    if (!ParseNumber(value, NumberRange::Closed(found->min, found->max), &v, &why)) {
+      *error = "effects: " + key + " = '" + value + "': " + why + " (" + found->unit + ")";
       return false;
     }
     *found->field(p) = v;
