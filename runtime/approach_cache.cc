@@ -84,20 +84,10 @@ void ApproachCache::Offer(const ApproachKey& key, const mjData* d, const FollowS
 TrialResult RunTrialShared(const mjModel* m, const TrialConfig& config, ApproachCache* cache,
                            std::string* error) {
   if (cache == nullptr || cache->model() != m) return RunTrial(m, config, false, error);
-  DataPtr data = MakeData(m, error);
-  if (!data) {
-    TrialResult r;
-    r.outcome = Outcome::kUnstable;
-    r.detail = "could not make mjData: " + *error;
-    return r;
-  }
-  auto trial = ContourTrial::Create(m, data.get(), config, false, error);
-  if (!trial) {
-    TrialResult r;
-    r.outcome = Outcome::kUnstable;
-    r.detail = *error;
-    return r;
-  }
+  DataPtr data;
+  TrialResult failed;
+  auto trial = CreateTrialWithData(m, config, false, &data, &failed, error);
+  if (!trial) return failed;
   // Callbacks that could read the pressures into the physics (mjcb_control is the trials').
   const bool callbacks = mjcb_passive || mjcb_act_dyn || mjcb_act_gain || mjcb_act_bias ||
                          mjcb_sensor || mjcb_contactfilter;

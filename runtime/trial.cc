@@ -490,29 +490,32 @@ TrialResult ContourTrial::Run(double max_sim_s) {
   return result_;
 }
 
+std::unique_ptr<ContourTrial> CreateTrialWithData(const mjModel* m, const TrialConfig& config,
+                                                  bool keep_log, DataPtr* data, TrialResult* failed,
+                                                  std::string* error) {
+  *data = MakeData(m, error);
+  std::unique_ptr<ContourTrial> trial;
+  if (*data) trial = ContourTrial::Create(m, data->get(), config, keep_log, error);
+  if (!trial) {
+    *failed = TrialResult();
+    failed->outcome = Outcome::kUnstable;
+    failed->detail = *data ? *error : "could not make mjData: " + *error;
+  }
+  return trial;
+}
+
 bool CheckTrialSetup(const mjModel* m, const TrialConfig& config, std::string* error) {
-  DataPtr data = MakeData(m, error);
-  if (!data) return false;
-  return ContourTrial::Create(m, data.get(), config, false, error) != nullptr;
+  DataPtr data;
+  TrialResult failed;
+  return CreateTrialWithData(m, config, false, &data, &failed, error) != nullptr;
 }
 
 TrialResult RunTrial(const mjModel* m, const TrialConfig& config, bool keep_log,
                      std::string* error) {
-  DataPtr data = MakeData(m, error);
-  if (!data) {
-    TrialResult r;
-    r.outcome = Outcome::kUnstable;
-    r.detail = "could not make mjData: " + *error;
-    return r;
-  }
-  auto trial = ContourTrial::Create(m, data.get(), config, keep_log, error);
-  if (!trial) {
-    TrialResult r;
-    r.outcome = Outcome::kUnstable;
-    r.detail = *error;
-    return r;
-  }
-  return trial->Run();
+  DataPtr data;
+  TrialResult failed;
+  auto trial = CreateTrialWithData(m, config, keep_log, &data, &failed, error);
+  return trial ? trial->Run() : failed;
 }
 
 }  // namespace ssc

@@ -23,6 +23,7 @@
 #include "controller/pure/trial_outcome.h"
 #include "plugin/chamber_pressure_sensor.h"
 #include "runtime/control_dispatch.h"
+#include "runtime/mujoco_model.h"
 #include "runtime/tool_servo.h"
 
 namespace ssc {
@@ -220,6 +221,12 @@ class ContourTrial : public ControlCallback {
 // running it: studies call it once before any row is written, so a scene that cannot run a
 // trial is an error naming what is missing, never a table of "unstable" rows.
 bool CheckTrialSetup(const mjModel* m, const TrialConfig& config, std::string* error);
+
+// Makes the trial's mjData (*data, which must outlive the trial) and the trial. On failure returns
+// null and *failed is the row a study records: outcome unstable, the reason in its detail.
+std::unique_ptr<ContourTrial> CreateTrialWithData(const mjModel* m, const TrialConfig& config,
+                                                  bool keep_log, DataPtr* data, TrialResult* failed,
+                                                  std::string* error);
 
 TrialResult RunTrial(const mjModel* m, const TrialConfig& config, bool keep_log,
                      std::string* error);
