@@ -51,6 +51,11 @@ nb::object ToNumpy(std::vector<double> values, std::vector<size_t> shape) {
   return ToNumpy<double>(std::move(values), std::move(shape));
 }
 
+// One value per chamber as a NumPy vector.
+nb::object PerChamber(const std::array<double, 4>& a) {
+  return ToNumpy({a[0], a[1], a[2], a[3]}, {4});
+}
+
 template <size_t N>
 nb::object Rows(const std::vector<std::array<double, N>>& rows) {
   std::vector<double> flat;
@@ -525,14 +530,11 @@ NB_MODULE(_core, m) {
               nb::gil_scoped_release release;
               r = p.Read(x_m, y_m, yaw_rad, surface_z_m, compression_m, settle_s);
             }
-            auto arr = [](const std::array<double, 4>& a) {
-              return ToNumpy({a[0], a[1], a[2], a[3]}, {4});
-            };
             nb::dict d;
-            d["filtered_pa"] = arr(r.filtered_pa);
-            d["static_pa"] = arr(r.static_pa);
-            d["sealed_area_mm2"] = arr(r.sealed_area_mm2);
-            d["leak_area_mm2"] = arr(r.leak_area_mm2);
+            d["filtered_pa"] = PerChamber(r.filtered_pa);
+            d["static_pa"] = PerChamber(r.static_pa);
+            d["sealed_area_mm2"] = PerChamber(r.sealed_area_mm2);
+            d["leak_area_mm2"] = PerChamber(r.leak_area_mm2);
             d["lip_contacts"] = r.lip_contacts;
             d["pbar_pa"] = r.pbar_pa;
             d["dpx_pa"] = r.dpx_pa;
@@ -563,14 +565,11 @@ NB_MODULE(_core, m) {
         }
         if (!ok) Fail(error);
         const ReplayComparison& c = result.replay;
-        auto arr = [](const std::array<double, 4>& a) {
-          return ToNumpy({a[0], a[1], a[2], a[3]}, {4});
-        };
         nb::dict d;
-        d["rms_pa"] = arr(c.rms_pa);
-        d["rms_log10"] = arr(c.rms_log10);
-        d["correlation"] = arr(c.correlation);
-        d["mean_ratio"] = arr(c.mean_ratio);
+        d["rms_pa"] = PerChamber(c.rms_pa);
+        d["rms_log10"] = PerChamber(c.rms_log10);
+        d["correlation"] = PerChamber(c.correlation);
+        d["mean_ratio"] = PerChamber(c.mean_ratio);
         d["pbar_rms_pa"] = c.pbar_rms_pa;
         d["pbar_bias_pa"] = c.pbar_bias_pa;
         d["direction_rms_deg"] = c.direction_rms_deg;
