@@ -10,7 +10,7 @@ namespace {
 
 // A new field in these structs must be judged for the key (ApproachKeyOf).
 static_assert(sizeof(ServoParams) == 2 * sizeof(double), "ServoParams changed: see ApproachKeyOf");
-static_assert(sizeof(LipShearParams) == 2 * sizeof(double),
+static_assert(sizeof(LipShearParams) == 3 * sizeof(double),
               "LipShearParams changed: see ApproachKeyOf");
 
 std::uint64_t Bits(double v) {
@@ -36,6 +36,7 @@ ApproachKey ApproachKeyOf(const TrialConfig& c) {
           Bits(t.max_compression_m),
           Bits(c.effects.lip.slip_mm),
           Bits(c.effects.lip.tilt_decades),
+          Bits(c.effects.lip.peel_decades),
           Bits(c.log_period_s)};
 }
 

@@ -21,6 +21,8 @@ const std::vector<DynamicParameter>& DynamicParameters() {
       {"slip_mm", "mm", 0.2, 2.0, [](TrialConfig* c) { return &c->effects.lip.slip_mm; }},
       {"tilt_decades", "decades", 0.0, 0.4,
        [](TrialConfig* c) { return &c->effects.lip.tilt_decades; }},
+      {"peel_decades", "decades", 0.0, 1.0,
+       [](TrialConfig* c) { return &c->effects.lip.peel_decades; }},
       {"gain_spread", "1", 0.0, 0.2,
        [](TrialConfig* c) { return &c->effects.chambers.gain_spread; }},
       {"offset_spread_pa", "Pa", 0.0, 20.0,

@@ -178,6 +178,33 @@ TEST(LipShearTest, ShearSaturatesAtSlipAndTiltsLeadingUpTrailingDown) {
   EXPECT_NEAR(flat[0], 100, 1e-9);
 }
 
+TEST(LipShearTest, PeelLowersOnlyTrailingChambers) {
+  LipShearParams p;
+  p.slip_mm = 1.0;
+  p.peel_decades = 0.6;
+  LipShearState s;
+  AdvanceLipShear(p, {0.003, 0.0}, &s);  // south (+x_tool): SE, SW lead; NE, NW trail
+  std::array<double, 4> pa = {200, 200, 200, 200};
+  ApplyLipTilt(p, s, &pa);
+  const double trail = 200 * std::pow(10.0, -0.6 * std::sqrt(0.5));
+  EXPECT_EQ(pa[0], 200.0);
+  EXPECT_EQ(pa[3], 200.0);
+  EXPECT_NEAR(pa[1], trail, 1e-9);
+  EXPECT_NEAR(pa[2], trail, 1e-9);
+  // With a tilt too, the two add in decades on the trailing side.
+  p.tilt_decades = 0.2;
+  std::array<double, 4> both = {200, 200, 200, 200};
+  ApplyLipTilt(p, s, &both);
+  EXPECT_NEAR(both[0], 200 * std::pow(10.0, 0.2 * std::sqrt(0.5)), 1e-9);
+  EXPECT_NEAR(both[1], 200 * std::pow(10.0, -0.8 * std::sqrt(0.5)), 1e-9);
+  // Without friction (no shear) the peel is off.
+  p.slip_mm = 0;
+  std::array<double, 4> still = {200, 200, 200, 200};
+  AdvanceLipShear(p, {0.003, 0.0}, &s);
+  ApplyLipTilt(p, s, &still);
+  EXPECT_EQ(still, (std::array<double, 4>{200, 200, 200, 200}));
+}
+
 TEST(LipShearTest, ForwardTiltTurnsTheTravelAwayFromTheObject) {
   // East edge, object west, moving north (object on the left): the NW chamber leads.
   LipShearParams p;

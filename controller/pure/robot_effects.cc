@@ -28,8 +28,8 @@ std::string Bad(const char* field, double v, const std::string& range) {
 
 }  // namespace
 
-const std::array<EffectKey, 9>& EffectKeys() {
-  static const std::array<EffectKey, 9> kKeys = {{
+const std::array<EffectKey, 10>& EffectKeys() {
+  static const std::array<EffectKey, 10> kKeys = {{
       {"jitter_s", "s", 0, 5, "half-width of the uniform jitter of the loop period",
        [](RobotEffectsParams* p) { return &p->loop.jitter_s; }},
       {"pose_delay_s", "s", 0, 10, "pressures read -> pose read (the live plot in between)",
@@ -38,6 +38,8 @@ const std::array<EffectKey, 9>& EffectKeys() {
        [](RobotEffectsParams* p) { return &p->lip.slip_mm; }},
       {"tilt_decades", "decades", 0, 1, "vacuum change of a leading/trailing chamber at full shear",
        [](RobotEffectsParams* p) { return &p->lip.tilt_decades; }},
+      {"peel_decades", "decades", 0, 1.5, "vacuum loss of a trailing chamber at full shear",
+       [](RobotEffectsParams* p) { return &p->lip.peel_decades; }},
       {"gain_spread", "1", 0, 0.3, "1-sigma relative gain spread between chambers",
        [](RobotEffectsParams* p) { return &p->chambers.gain_spread; }},
       {"offset_spread_pa", "Pa", 0, 30,
@@ -131,6 +133,8 @@ std::string RobotEffectsParams::Validate(double period_s) const {
                "below the period");
   if (!In(lip.slip_mm, 0, 3)) return Bad("lip slip_mm", lip.slip_mm, "[0, 3] mm");
   if (!In(lip.tilt_decades, 0, 1)) return Bad("lip tilt_decades", lip.tilt_decades, "[0, 1]");
+  if (!In(lip.peel_decades, 0, 1.5))
+    return Bad("lip peel_decades", lip.peel_decades, "[0, 1.5]");
   if (!In(chambers.gain_spread, 0, 0.3))
     return Bad("chamber gain_spread", chambers.gain_spread, "[0, 0.3]");
   if (!In(chambers.offset_spread_pa, 0, 30))
@@ -145,7 +149,7 @@ std::string RobotEffectsParams::Validate(double period_s) const {
 }
 
 bool RobotEffectsParams::AnyOn() const {
-  return loop.jitter_s > 0 || loop.pose_delay_s > 0 || (lip.slip_mm > 0 && lip.tilt_decades > 0) ||
+  return loop.jitter_s > 0 || loop.pose_delay_s > 0 || (lip.slip_mm > 0 && (lip.tilt_decades > 0 || lip.peel_decades > 0)) ||
          chambers.gain_spread > 0 || chambers.offset_spread_pa > 0 || chambers.drift_pa > 0 ||
          chambers.drift_relative > 0;
 }
@@ -182,13 +186,15 @@ std::array<double, 2> ChamberDirection(int chamber) {
 }
 
 void ApplyLipTilt(const LipShearParams& p, const LipShearState& s, std::array<double, 4>* p_pa) {
-  if (p.slip_mm <= 0 || p.tilt_decades <= 0) return;
+  if (p.slip_mm <= 0 || (p.tilt_decades <= 0 && p.peel_decades <= 0)) return;
   const double slip_m = p.slip_mm * 1e-3;
   for (int i = 0; i < 4; ++i) {
     const std::array<double, 2> d = ChamberDirection(i);
-    // Leading chambers (along the shear: the way the body moved) are pressed, trailing lifted.
+    // Leading chambers (along the shear: the way the body moved) are pressed, trailing lifted;
+    // trailing ones (along < 0) also peel.
     const double along = (d[0] * s.shear_m[0] + d[1] * s.shear_m[1]) / slip_m;
-    (*p_pa)[static_cast<std::size_t>(i)] *= std::pow(10.0, p.tilt_decades * along);
+    const double decades = p.tilt_decades * along + p.peel_decades * std::fmin(along, 0.0);
+    (*p_pa)[static_cast<std::size_t>(i)] *= std::pow(10.0, decades);
   }
 }
 

@@ -11,6 +11,8 @@
 //                     shear reaches slip_mm (Coulomb: mu * F_n / k_shear), and the sheared lip
 //                     tilts, pressing the leading lip and lifting the trailing one; a chamber's
 //                     vacuum scales by 10^(tilt_decades * (shear along the chamber) / slip).
+//                     The trailing lip may also peel (peel_decades): a trailing chamber leaks and
+//                     reads less, a leading one no more than a sealed lip gives.
 //   ChamberSpreadParams  the four sensors and tubes: gain spread between chambers (drawn per
 //                     trial: the twin does not know the real cup's), and slow noise the
 //                     7-sample average cannot remove (tube/pump pulsation; Ornstein-Uhlenbeck),
@@ -41,6 +43,12 @@ struct LipShearParams {
   double slip_mm = 0.0;
   // Change of a fully leading / trailing chamber's vacuum at full shear, decades: [0, 1].
   double tilt_decades = 0.0;
+  // Loss of a fully trailing chamber's vacuum at full shear, decades: [0, 1.5]; 0 = off. The
+  // dragged lip peels at its trailing edge and leaks, while the pressed leading edge cannot seal
+  // better than sealed, so only trailing chambers change: the moving cup reads less than the
+  // static one at the same inset. 1.5 decades takes a covered chamber (~200 Pa) to the
+  // open-cup level (~5-10 Pa): a trailing lip lifted clear.
+  double peel_decades = 0.0;
 };
 
 struct ChamberSpreadParams {
@@ -71,7 +79,7 @@ struct EffectKey {
   const char* what;
   double* (*field)(RobotEffectsParams*);
 };
-const std::array<EffectKey, 9>& EffectKeys();
+const std::array<EffectKey, 10>& EffectKeys();
 // Parses "key=value,key=value" (or "off": every effect off) onto *p. Values must be whole,
 // finite numbers in the key's range; the error names the key, the value and the range.
 bool ParseRobotEffects(const std::string& text, RobotEffectsParams* p, std::string* error);
@@ -101,7 +109,7 @@ void AdvanceLipShear(const LipShearParams& p, const std::array<double, 2>& body_
 // Chamber i's centre direction seen from the cup axis, tool frame (unit): chambers 1..4 =
 // SE, NE, NW, SW with north = -x_tool, west = +y_tool (controller/pure/contour_law.h).
 std::array<double, 2> ChamberDirection(int chamber);
-// Multiplies each chamber's vacuum by the tilt the shear gives it.
+// Multiplies each chamber's vacuum by the tilt and the trailing-lip peel the shear gives it.
 void ApplyLipTilt(const LipShearParams& p, const LipShearState& s, std::array<double, 4>* p_pa);
 
 // Per-trial chamber gains and the slow noise state.
