@@ -133,8 +133,7 @@ std::string RobotEffectsParams::Validate(double period_s) const {
                "below the period");
   if (!In(lip.slip_mm, 0, 3)) return Bad("lip slip_mm", lip.slip_mm, "[0, 3] mm");
   if (!In(lip.tilt_decades, 0, 1)) return Bad("lip tilt_decades", lip.tilt_decades, "[0, 1]");
-  if (!In(lip.peel_decades, 0, 1.5))
-    return Bad("lip peel_decades", lip.peel_decades, "[0, 1.5]");
+  if (!In(lip.peel_decades, 0, 1.5)) return Bad("lip peel_decades", lip.peel_decades, "[0, 1.5]");
   if (!In(chambers.gain_spread, 0, 0.3))
     return Bad("chamber gain_spread", chambers.gain_spread, "[0, 0.3]");
   if (!In(chambers.offset_spread_pa, 0, 30))
@@ -149,7 +148,8 @@ std::string RobotEffectsParams::Validate(double period_s) const {
 }
 
 bool RobotEffectsParams::AnyOn() const {
-  return loop.jitter_s > 0 || loop.pose_delay_s > 0 || (lip.slip_mm > 0 && (lip.tilt_decades > 0 || lip.peel_decades > 0)) ||
+  return loop.jitter_s > 0 || loop.pose_delay_s > 0 ||
+         (lip.slip_mm > 0 && (lip.tilt_decades > 0 || lip.peel_decades > 0)) ||
          chambers.gain_spread > 0 || chambers.offset_spread_pa > 0 || chambers.drift_pa > 0 ||
          chambers.drift_relative > 0;
 }
