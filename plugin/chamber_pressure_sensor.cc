@@ -69,6 +69,13 @@ class ChamberPressureSensor final : public ChamberPressureDiagnostics {
   bool BindLip(const mjModel* m, std::string* error);
   // World pose of the opening's frame (the tool frame carried by the lip).
   void OpeningFrame(const mjData* d, mjtNum pos[3], mjtNum mat[9]) const;
+  // Lists the geoms the rays can see now (ray_geoms_), once per sample.
+  void ListRayGeoms(const mjModel* m) const;
+  // Distance along `dir` (a unit vector) from `start` to the first of ray_geoms_ it hits, -1 when
+  // none: what mj_ray(m, d, start, dir, ray_groups, 1, -1, ...) returns, without its pass over
+  // every geom of the model per ray.
+  mjtNum CastRay(const mjModel* m, const mjData* d, const mjtNum start[3],
+                 const mjtNum dir[3]) const;
 
   ChamberPressureConfig config_;
   int instance_;
@@ -100,6 +107,10 @@ class ChamberPressureSensor final : public ChamberPressureDiagnostics {
     bool is_tilt = false;              // hinge (tilt) or slide (shear)
   };
   std::vector<CarrierJoint> carrier_joints_;
+  // The geoms mj_ray would test with ray_groups (in a group of ray_groups, not invisible: alpha
+  // of the geom or its material not 0), in id order; capacity ngeom, made at each sample.
+  mutable std::vector<int> ray_geoms_;
+  mutable bool ray_geoms_need_mj_ray_ = false;  // an SDF geom among them: mj_ray casts each ray
   std::vector<mjtNum> ray_dirs_local_;  // unit radial directions in the site frame, 3 per ray
   mutable std::vector<mjtNum> ray_dirs_world_;
   mutable std::vector<int> ray_geom_;
@@ -218,6 +229,7 @@ ChamberPressureSensor* ChamberPressureSensor::Create(const mjModel* m, int insta
       dir[2] = 0.0;
     }
   }
+  sensor->ray_geoms_.reserve(m->ngeom);
   sensor->ray_dirs_world_.resize(3 * n_rays);
   sensor->ray_geom_.resize(n_rays);
   sensor->ray_dist_.resize(n_rays);
@@ -398,23 +410,63 @@ void ChamberPressureSensor::OpeningFrame(const mjData* d, mjtNum pos[3], mjtNum 
   mju_mulMatMat(mat, cmat, opening_offset_mat_, 3, 3, 3);
 }
 
+void ChamberPressureSensor::ListRayGeoms(const mjModel* m) const {
+  // mj_ray's own test of each geom (engine_ray.c, ray_eliminate) with flg_static = 1 and no body
+  // excluded: the geom's group is among ray_groups and it is not invisible.
+  ray_geoms_.clear();
+  ray_geoms_need_mj_ray_ = false;
+  for (int g = 0; g < m->ngeom; ++g) {
+    const int mat = m->geom_matid[g];
+    const float alpha = mat < 0 ? m->geom_rgba[4 * g + 3] : m->mat_rgba[4 * mat + 3];
+    if (alpha == 0) continue;
+    const int group = std::min(mjNGROUP - 1, std::max(0, m->geom_group[g]));
+    if (!config_.ray_groups[group]) continue;
+    ray_geoms_.push_back(g);
+    if (m->geom_type[g] == mjGEOM_SDF) ray_geoms_need_mj_ray_ = true;
+  }
+}
+
+mjtNum ChamberPressureSensor::CastRay(const mjModel* m, const mjData* d, const mjtNum start[3],
+                                      const mjtNum dir[3]) const {
+  if (ray_geoms_need_mj_ray_) {
+    return mj_ray(m, d, start, dir, config_.ray_groups.data(), 1, -1, nullptr, nullptr);
+  }
+  // mj_ray's loop over the geoms it keeps: the same functions, the nearest hit, ties to the
+  // lower id; bit for bit its answer.
+  mjtNum dist = -1;
+  for (const int g : ray_geoms_) {
+    const int type = m->geom_type[g];
+    mjtNum x;
+    if (type == mjGEOM_MESH) {
+      x = mj_rayMesh(m, d, g, start, dir, nullptr);
+    } else if (type == mjGEOM_HFIELD) {
+      x = mj_rayHfield(m, d, g, start, dir, nullptr);
+    } else {
+      x = mju_rayGeom(d->geom_xpos + 3 * g, d->geom_xmat + 9 * g, m->geom_size + 3 * g, start, dir,
+                      type, nullptr);
+    }
+    if (x >= 0 && (x < dist || dist < 0)) dist = x;
+  }
+  return dist;
+}
+
 void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
                                     ChamberPressureSample* sample) const {
   const CupGeometry& geo = config_.geometry;
   const mjtByte* groups = config_.ray_groups.data();
+  ListRayGeoms(m);
   // The opening moves with the lip (its carrier shears and tilts when the lip is soft).
   mjtNum origin_lip[3], frame[9];
   OpeningFrame(d, origin_lip, frame);
   mjtNum axis_z[3];
   Axis(frame, 2, axis_z);
-  int geom_hit = -1;
   int rays = 0;
   // Depth below the lip plane of the first surface under a point of the lip plane (kNoSurfaceGapM
   // when none): a vertical ray from ray_start above it.
   auto surface_depth_at = [&](const mjtNum point[3]) {
     mjtNum start[3];
     for (int q = 0; q < 3; ++q) start[q] = point[q] - config_.ray_start_m * axis_z[q];
-    const mjtNum t = mj_ray(m, d, start, axis_z, groups, 1, -1, &geom_hit, nullptr);
+    const mjtNum t = CastRay(m, d, start, axis_z);
     ++rays;
     return t < 0 ? kNoSurfaceGapM : t - config_.ray_start_m;
   };
@@ -485,7 +537,7 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
       const double from = t + kStepPast;
       mjtNum start[3];
       for (int q = 0; q < 3; ++q) start[q] = origin[q] + from * dir[q];
-      const mjtNum next = mj_ray(m, d, start, dir, groups, 1, -1, &geom_hit, nullptr);
+      const mjtNum next = CastRay(m, d, start, dir);
       ++rays;
       t = next >= 0 ? from + next : -1.0;
     }
