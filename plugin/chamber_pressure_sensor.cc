@@ -112,9 +112,6 @@ class ChamberPressureSensor final : public ChamberPressureDiagnostics {
   mutable std::vector<int> ray_geoms_;
   mutable bool ray_geoms_need_mj_ray_ = false;  // an SDF geom among them: mj_ray casts each ray
   std::vector<mjtNum> ray_dirs_local_;  // unit radial directions in the site frame, 3 per ray
-  mutable std::vector<mjtNum> ray_dirs_world_;
-  mutable std::vector<int> ray_geom_;
-  mutable std::vector<mjtNum> ray_dist_;
   ChamberPressureSample sample_;
 };
 
@@ -230,9 +227,6 @@ ChamberPressureSensor* ChamberPressureSensor::Create(const mjModel* m, int insta
     }
   }
   sensor->ray_geoms_.reserve(m->ngeom);
-  sensor->ray_dirs_world_.resize(3 * n_rays);
-  sensor->ray_geom_.resize(n_rays);
-  sensor->ray_dist_.resize(n_rays);
   sensor->sample_.wedges.resize(n_rays);
   // Each wedge's rim lies between the two lip segments either side of its bisector.
   sensor->wedge_rim_.resize(n_rays);
@@ -453,7 +447,6 @@ mjtNum ChamberPressureSensor::CastRay(const mjModel* m, const mjData* d, const m
 void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
                                     ChamberPressureSample* sample) const {
   const CupGeometry& geo = config_.geometry;
-  const mjtByte* groups = config_.ray_groups.data();
   ListRayGeoms(m);
   // The opening moves with the lip (its carrier shears and tilts when the lip is soft).
   mjtNum origin_lip[3], frame[9];
@@ -506,22 +499,18 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
 
   // Radial rays in a plane open_depth below the lip tips find where surfaces begin and end
   // (exactly); each stretch between them is sampled by vertical rays, so the seams between convex
-  // pieces of one object, overlapping geoms and height fields all read right. The first hit of
-  // all rays comes from one batched call.
+  // pieces of one object, overlapping geoms and height fields all read right. (One CastRay per
+  // radial ray: mj_multiRay's batch, which culls geoms per ray by bounding angles, cost more here
+  // than it saves, and any hit it returns is the nearest one, which CastRay finds too.)
   mjtNum origin[3];
   for (int k = 0; k < 3; ++k) origin[k] = origin_lip[k] + plane_depth * axis_z[k];
   const int per = geo.rays_per_chamber;
   const int n_rays = per * kNumChambers;
-  for (int r = 0; r < n_rays; ++r) {
-    mju_mulMatVec3(ray_dirs_world_.data() + 3 * r, frame, ray_dirs_local_.data() + 3 * r);
-  }
   const double radius = geo.opening_radius_m;
-  mj_multiRay(m, const_cast<mjData*>(d), origin, ray_dirs_world_.data(), groups, 1, -1,
-              ray_geom_.data(), ray_dist_.data(), nullptr, n_rays, radius);
-  rays += n_rays;
   constexpr double kStepPast = 1e-6;  // restart just past a crossing, metres
   for (int r = 0; r < n_rays; ++r) {
-    const mjtNum* dir = ray_dirs_world_.data() + 3 * r;
+    mjtNum dir[3];
+    mju_mulMatVec3(dir, frame, ray_dirs_local_.data() + 3 * r);
     auto depth_along = [&](double along) {
       mjtNum point[3];
       for (int q = 0; q < 3; ++q) point[q] = origin_lip[q] + along * dir[q];
@@ -531,7 +520,9 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
     double cuts[kMaxCrossings + 2];
     int n = 0;
     cuts[n++] = 0.0;
-    double t = ray_dist_[r];
+    // A hit at or beyond the radius (or none, -1) is no crossing inside the opening.
+    double t = CastRay(m, d, origin, dir);
+    ++rays;
     for (int k = 0; t >= 0 && t < radius && k < kMaxCrossings; ++k) {
       cuts[n++] = t;
       const double from = t + kStepPast;
