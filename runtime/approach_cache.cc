@@ -89,6 +89,7 @@ TrialResult RunTrialShared(const mjModel* m, const TrialConfig& config, Approach
   TrialResult failed;
   auto trial = CreateTrialWithData(m, config, false, &data, &failed, error);
   if (!trial) return failed;
+  trial->SetResultOnly(true);  // the data dies here (the cache copies it before Run)
   // Callbacks that could read the pressures into the physics (mjcb_control is the trials').
   const bool callbacks = mjcb_passive || mjcb_act_dyn || mjcb_act_gain || mjcb_act_bias ||
                          mjcb_sensor || mjcb_contactfilter;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "common/tool_names.h"
+#include "runtime/deferred_sensor_step.h"
 #include "runtime/mujoco_model.h"
 
 namespace ssc {
@@ -401,9 +402,23 @@ bool ContourTrial::ReachTimedOut(double t, const char* what, const Vec3& point) 
   return true;
 }
 
+bool ContourTrial::FtReadAfterThisStep() const {
+  // While following, only a control iteration reads the F/T (the failure checks), and the log.
+  // The next step's callback runs at d->time + timestep; a whole step more of margin for the
+  // round-off of the time sum.
+  if (phase_ != TrialPhase::kFollow || keep_log_ || external_policy_) return true;
+  const double after_next_s = d_->time + 2 * m_->opt.timestep;
+  return after_next_s + 1e-9 >= next_iteration_s_ || after_next_s >= run_until_s_;
+}
+
 bool ContourTrial::Step() {
   if (phase_ == TrialPhase::kDone) return false;
-  mj_step(m_, d_);
+  if (defer_acc_sensors_) {
+    const mjtNum start = StepToAccSensors(m_, d_);  // runs this step's control callback
+    FinishStep(m_, d_, FtReadAfterThisStep(), start);
+  } else {
+    mj_step(m_, d_);
+  }
   // A numerically broken run is never a controller result.
   if (d_->warning[mjWARN_BADQACC].number > 0) {
     Finish(Outcome::kUnstable, "MuJoCo warning: bad qacc (simulation diverged)");
@@ -482,8 +497,11 @@ void ContourTrial::ResumeAtFollowStart(const mjData* follow_start_data, const Fo
 
 TrialResult ContourTrial::Run(double max_sim_s) {
   const auto t0 = std::chrono::steady_clock::now();
+  defer_acc_sensors_ = result_only_ && CanDeferAccSensors(m_);
+  run_until_s_ = max_sim_s;
   while (d_->time < max_sim_s && Step()) {
   }
+  defer_acc_sensors_ = false;
   if (phase_ != TrialPhase::kDone) Finish(Outcome::kTimeout, "simulation time limit");
   result_.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -515,7 +533,9 @@ TrialResult RunTrial(const mjModel* m, const TrialConfig& config, bool keep_log,
   DataPtr data;
   TrialResult failed;
   auto trial = CreateTrialWithData(m, config, keep_log, &data, &failed, error);
-  return trial ? trial->Run() : failed;
+  if (!trial) return failed;
+  trial->SetResultOnly(true);  // the data dies here
+  return trial->Run();
 }
 
 }  // namespace ssc

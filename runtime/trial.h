@@ -127,6 +127,11 @@ class ContourTrial : public ControlCallback {
 
   // Steps until the trial ends (or max_sim_s of simulated time). Returns the result.
   TrialResult Run(double max_sim_s = 1e9);
+  // For callers that use only what Run returns and never read the mjData during or after it
+  // (studies running many trials; RunTrial and RunTrialShared): Run then evaluates the F/T (the
+  // acceleration-stage sensors, runtime/deferred_sensor_step.h) only on the steps whose reading
+  // the controller uses. The result is the same to the bit.
+  void SetResultOnly(bool on) { result_only_ = on; }
   // One physics step with instability checks; false when the trial has ended.
   bool Step();
 
@@ -176,6 +181,9 @@ class ContourTrial : public ControlCallback {
   // timeout naming the point once it has waited kReachWaitS; true when it did.
   bool ReachTimedOut(double t, const char* what, const Vec3& point);
   double FtNormalForce() const;
+  // Whether the next step's control callback (or a caller once Run returns) may read the F/T
+  // that the current step's forward pass leaves in sensordata.
+  bool FtReadAfterThisStep() const;
   void Log(bool iteration);
   // The effects' draws come from the trial seed, in streams apart from the plugin's noise.
   std::uint64_t EffectsSeed() const { return config_.seed ^ 0x5EEDEFFEC7ULL; }
@@ -212,8 +220,11 @@ class ContourTrial : public ControlCallback {
   TrialResult result_;
   std::unique_ptr<ScopedControl> registration_;
   bool external_policy_ = false, awaiting_step_ = false;
-  Vec3 iteration_tool_{};  // measured tool position at the waiting iteration
-  Point2 goal_start_{};    // the cup where the goal tracker started following
+  bool result_only_ = false;
+  bool defer_acc_sensors_ = false;  // while Run runs, for result_only_
+  double run_until_s_ = 0;          // Run's max_sim_s
+  Vec3 iteration_tool_{};           // measured tool position at the waiting iteration
+  Point2 goal_start_{};             // the cup where the goal tracker started following
 };
 
 // Loads nothing: runs one trial on an existing model with its own mjData.

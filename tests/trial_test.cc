@@ -13,8 +13,10 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "common/tool_names.h"
 #include "runtime/approach_cache.h"
 #include "runtime/control_dispatch.h"
+#include "runtime/deferred_sensor_step.h"
 #include "runtime/mujoco_model.h"
 #include "studies/sweep.h"
 #include "studies/trial_io.h"
@@ -428,6 +430,124 @@ TEST(TrialEndsTest, AControlPeriodLongerThanTheTimeoutIsRefused) {
   EXPECT_EQ(c.Validate(), "");
   c.control_period_s = 1.5;
   EXPECT_NE(c.Validate().find("longer than timeout_s"), std::string::npos) << c.Validate();
+}
+
+// mj_step in two parts (runtime/deferred_sensor_step.h): with the acceleration-stage sensors
+// asked for, every step is mj_step's to the bit; without, the physics goes on the same and only
+// the F/T's reading stays the last one evaluated.
+TEST(DeferredSensorStepTest, AskedForItIsMjStepToTheBitWithoutItOnlyTheFtLags) {
+  const mjModel* m = Scene();
+  ASSERT_TRUE(CanDeferAccSensors(m));
+  std::string error;
+  DataPtr da = MakeData(m, &error), db = MakeData(m, &error);
+  ASSERT_TRUE(da && db) << error;
+  for (mjData* d : {da.get(), db.get()}) {
+    mj_resetDataKeyframe(m, d, 0);
+    d->ctrl[2] -= 0.006;  // the gantry presses the cup onto the disk: the F/T reading moves
+  }
+  const int ft = m->sensor_adr[mj_name2id(m, mjOBJ_SENSOR, kToolForceSensorName)];
+  auto split_step = [&](bool acc_sensors) {
+    const mjtNum start = StepToAccSensors(m, db.get());
+    FinishStep(m, db.get(), acc_sensors, start);
+  };
+  for (int i = 0; i < 400; ++i) {
+    mj_step(m, da.get());
+    split_step(true);
+  }
+  ExpectSameData(m, da.get(), db.get());
+  for (int i = 0; i < 6 * m->nbody; ++i) {
+    ASSERT_EQ(da->cfrc_int[i], db->cfrc_int[i]) << i;
+  }
+  const double ft_z = db->sensordata[ft + 2];
+  for (int i = 0; i < 20; ++i) {
+    mj_step(m, da.get());
+    split_step(false);
+  }
+  EXPECT_EQ(db->sensordata[ft + 2], ft_z);  // not evaluated: the last reading
+  EXPECT_NE(da->sensordata[ft + 2], ft_z);  // (it did move)
+  for (int i = 0; i < m->nsensordata; ++i) {
+    if (i < ft || i >= ft + 6) {
+      EXPECT_EQ(da->sensordata[i], db->sensordata[i]) << i;
+    }
+  }
+  for (int i = 0; i < m->nq; ++i) EXPECT_EQ(da->qpos[i], db->qpos[i]) << i;
+  for (int i = 0; i < m->nv; ++i) EXPECT_EQ(da->qvel[i], db->qvel[i]) << i;
+  mj_step(m, da.get());
+  split_step(true);  // one evaluation brings it back
+  ExpectSameData(m, da.get(), db.get());
+}
+
+// What each control iteration of a trial read from the F/T, recorded around the control callback.
+struct IterationReads {
+  const ContourTrial* trial = nullptr;
+  int ft_adr = 0;
+  std::vector<std::pair<double, double>> reads{};  // (time, F/T z) at each iteration
+  int follow_steps = 0, new_readings = 0;          // while following
+  double last_ft = 0;
+};
+IterationReads* g_reads = nullptr;
+mjfGeneric g_dispatch = nullptr;
+void RecordingControl(const mjModel* m, mjData* d) {
+  IterationReads& r = *g_reads;
+  const int before = r.trial->result().iterations;
+  const bool following = r.trial->phase() == TrialPhase::kFollow;
+  const double ft = d->sensordata[r.ft_adr + 2];
+  g_dispatch(m, d);
+  if (r.trial->result().iterations != before) r.reads.emplace_back(d->time, ft);
+  if (following) {
+    ++r.follow_steps;
+    if (ft != r.last_ft) ++r.new_readings;
+  }
+  r.last_ft = ft;
+}
+
+// A trial run for its result only evaluates the F/T on few steps, yet every control iteration
+// reads what mj_step would have given it, and the row, the path and the final state are the
+// same to the bit (iterations every 0.15 s with jitter and a pose delay, and at every step).
+TEST(DeferredSensorStepTest, AResultOnlyRunReadsTheSameFtAtEveryIteration) {
+  std::string error;
+  ModelPtr light = LoadModel(SourceDir() + "/scenes/disk_benchmark_light.xml", &error);
+  ASSERT_TRUE(light) << error;
+  TrialConfig jittered = SharedApproachConfig(100, 2, 5, 4);
+  ASSERT_TRUE(ParseRobotEffects("jitter_s=0.02,pose_delay_s=0.03,slip_mm=1,drift_pa=1",
+                                &jittered.effects, &error))
+      << error;
+  TrialConfig every_step = SharedApproachConfig(100, 2, 5, 5);
+  every_step.effects = RobotEffectsParams();
+  every_step.control_period_s = 0.002;
+  every_step.timeout_s = 0.5;
+  for (const mjModel* m : {Scene(), static_cast<const mjModel*>(light.get())}) {
+    for (const TrialConfig& c : {jittered, every_step}) {
+      DataPtr da = MakeData(m, &error), db = MakeData(m, &error);
+      auto a = ContourTrial::Create(m, da.get(), c, false, &error);
+      auto b = ContourTrial::Create(m, db.get(), c, false, &error);
+      ASSERT_TRUE(a && b) << error;
+      b->SetResultOnly(true);
+      const int ft = m->sensor_adr[mj_name2id(m, mjOBJ_SENSOR, kToolForceSensorName)];
+      IterationReads ra{a.get(), ft}, rb{b.get(), ft};
+      g_dispatch = mjcb_control;
+      mjcb_control = RecordingControl;
+      g_reads = &ra;
+      const TrialResult result_a = a->Run();
+      g_reads = &rb;
+      const TrialResult result_b = b->Run();
+      mjcb_control = g_dispatch;
+      ASSERT_FALSE(ra.reads.empty());
+      EXPECT_EQ(ra.reads, rb.reads);
+      EXPECT_EQ(SweepCsvRow("s", c, 0, result_a), SweepCsvRow("s", c, 0, result_b));
+      EXPECT_EQ(a->path(), b->path());
+      ExpectSameData(m, da.get(), db.get());
+      // While following, the F/T was evaluated on few steps (on every one when iterating at
+      // every step); mj_step gives a new reading at nearly every step.
+      EXPECT_GT(ra.new_readings, ra.follow_steps * 9 / 10);
+      if (c.control_period_s > 0.1) {
+        EXPECT_LT(rb.new_readings, rb.follow_steps / 10)
+            << rb.new_readings << " new readings in " << rb.follow_steps << " steps";
+      } else {
+        EXPECT_EQ(rb.new_readings, ra.new_readings);
+      }
+    }
+  }
 }
 
 TEST(TrialEndsTest, DivergingSimulationIsUnstableNotAControllerResult) {
