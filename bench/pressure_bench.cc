@@ -144,6 +144,7 @@ struct Scene {
   // Runs the trial (untimed) until the cup has followed the edge for a second.
   bool ToFollowing() {
     trial->Reset();
+    trial->SetResultOnly(true);  // as sweeps run it: the F/T only where the controller reads it
     while (trial->phase() != ssc::TrialPhase::kFollow && trial->Step()) {
     }
     for (int i = 0; i < 500 && trial->Step(); ++i) {

@@ -402,6 +402,8 @@ bool ContourTrial::ReachTimedOut(double t, const char* what, const Vec3& point) 
   return true;
 }
 
+void ContourTrial::SetResultOnly(bool on) { defer_acc_sensors_ = on && CanDeferAccSensors(m_); }
+
 bool ContourTrial::FtReadAfterThisStep() const {
   // While following, only a control iteration reads the F/T (the failure checks), and the log.
   // The next step's callback runs at d->time + timestep; a whole step more of margin for the
@@ -497,11 +499,10 @@ void ContourTrial::ResumeAtFollowStart(const mjData* follow_start_data, const Fo
 
 TrialResult ContourTrial::Run(double max_sim_s) {
   const auto t0 = std::chrono::steady_clock::now();
-  defer_acc_sensors_ = result_only_ && CanDeferAccSensors(m_);
   run_until_s_ = max_sim_s;
   while (d_->time < max_sim_s && Step()) {
   }
-  defer_acc_sensors_ = false;
+  run_until_s_ = 1e300;
   if (phase_ != TrialPhase::kDone) Finish(Outcome::kTimeout, "simulation time limit");
   result_.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -127,11 +127,13 @@ class ContourTrial : public ControlCallback {
 
   // Steps until the trial ends (or max_sim_s of simulated time). Returns the result.
   TrialResult Run(double max_sim_s = 1e9);
-  // For callers that use only what Run returns and never read the mjData during or after it
-  // (studies running many trials; RunTrial and RunTrialShared): Run then evaluates the F/T (the
-  // acceleration-stage sensors, runtime/deferred_sensor_step.h) only on the steps whose reading
-  // the controller uses. The result is the same to the bit.
-  void SetResultOnly(bool on) { result_only_ = on; }
+  // For callers that read no sensor from the mjData themselves, only results (studies running
+  // many trials through RunTrial and RunTrialShared, the bench): Step and Run then evaluate the
+  // F/T (the acceleration-stage sensors, runtime/deferred_sensor_step.h) only on the steps whose
+  // reading the controller uses, and on the last step of a Run. Results and trajectories are the
+  // same to the bit; between iterations the F/T in sensordata is an older reading. Off when the
+  // model does not allow it (CanDeferAccSensors, checked here).
+  void SetResultOnly(bool on);
   // One physics step with instability checks; false when the trial has ended.
   bool Step();
 
@@ -220,9 +222,8 @@ class ContourTrial : public ControlCallback {
   TrialResult result_;
   std::unique_ptr<ScopedControl> registration_;
   bool external_policy_ = false, awaiting_step_ = false;
-  bool result_only_ = false;
-  bool defer_acc_sensors_ = false;  // while Run runs, for result_only_
-  double run_until_s_ = 0;          // Run's max_sim_s
+  bool defer_acc_sensors_ = false;  // SetResultOnly(true) and the model allows it
+  double run_until_s_ = 1e300;      // while Run runs: its max_sim_s
   Vec3 iteration_tool_{};           // measured tool position at the waiting iteration
   Point2 goal_start_{};             // the cup where the goal tracker started following
 };
