@@ -124,7 +124,8 @@ bool RunComparison(const CompareOptions& o, CompareResult* r, std::string* error
     }
     return false;
   }
-  if (!ReplayLog(model.get(), scene_log, o.processing.tcp_offset_m, &r->replay, error)) {
+  if (!ReplayLog(model.get(), scene_log, o.processing.tcp_offset_m, o.loop_config.effects.lip,
+                 &r->replay, error)) {
     return false;
   }
   if (!args.history.empty()) {

@@ -11,6 +11,7 @@
 #include "controller/pure/contour_law.h"
 #include "plugin/chamber_pressure_sensor.h"
 #include "robotlog/align.h"
+#include "runtime/tool_servo.h"
 
 namespace ssc {
 namespace {
@@ -44,7 +45,7 @@ std::string CorrelationText(double r) {
 }
 
 bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
-               ReplayComparison* out, std::string* error) {
+               const LipShearParams& lip, ReplayComparison* out, std::string* error) {
   *out = ReplayComparison();
   const int body = mj_name2id(m, mjOBJ_BODY, "probe");
   if (body < 0 || m->body_mocapid[body] < 0) {
@@ -90,13 +91,23 @@ bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
   place(d->time);
   mj_forward(m, d);
   const double ft_tare = ft_adr >= 0 ? d->sensordata[ft_adr] : 0.0;
+  // The lip drags along the path step by step, as in the closed-loop trial.
+  const int site = sensor->site_id();
+  LipShearState shear;
+  std::array<double, 2> last_xy = {d->site_xpos[3 * site], d->site_xpos[3 * site + 1]};
   for (size_t k = 0; k < log.t_s.size(); ++k) {
     while (d->time + 0.5 * m->opt.timestep < log.t_s[k]) {
       place(d->time);
       mj_step(m, d);
+      const mjtNum* xy = d->site_xpos + 3 * site;
+      AdvanceLipShear(lip,
+                      WorldToTool(d->site_xmat + 9 * site, xy[0] - last_xy[0], xy[1] - last_xy[1]),
+                      &shear);
+      last_xy = {xy[0], xy[1]};
     }
     std::array<double, 4> sim;
     for (int c = 0; c < 4; ++c) sim[c] = d->sensordata[adr + c];
+    ApplyLipTilt(lip, shear, &sim);
     out->t_s.push_back(log.t_s[k]);
     out->sim_pa.push_back(sim);
     out->log_pa.push_back(log.p_pa[k]);

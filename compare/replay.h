@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "controller/pure/robot_effects.h"
 #include "robotlog/log_types.h"
 
 namespace ssc {
@@ -27,8 +28,11 @@ struct ReplayComparison {
 // Drives the replay scene's mocap body (named "probe", holding tool0) along the logged tool
 // centre point (scene frame) and orientation, stepping the simulation through the log's time
 // span, and samples the plugin output and the F/T force at the log's time stamps.
+// `lip` is the lip-drag reading effect the closed loop applies (controller/pure/robot_effects.h):
+// the replay drags the lip along the logged path and applies it too, so its pressures are what
+// the host would read, as the log's are. LipShearParams{} (slip 0) compares the plugin alone.
 bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
-               ReplayComparison* out, std::string* error);
+               const LipShearParams& lip, ReplayComparison* out, std::string* error);
 
 // Pearson correlation; NaN (undefined) when either side is constant or shorter than 2.
 // CorrelationText shows it: "0.991" or "n/a (constant)".

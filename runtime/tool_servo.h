@@ -17,6 +17,12 @@ namespace ssc {
 
 using Vec3 = std::array<double, 3>;
 
+// A world x/y displacement in the tool frame, given the tool site's rotation (row-major, as
+// mjData.site_xmat holds it): what the lip's footprint feels as the tool slides.
+inline std::array<double, 2> WorldToTool(const mjtNum* R, double wx, double wy) {
+  return {R[0] * wx + R[3] * wy, R[1] * wx + R[4] * wy};
+}
+
 struct ServoParams {
   // First-order smoothing of the commanded tool position toward the target, s: the UR servoL
   // look-ahead (0.2 s on the robot). Each iteration re-bases the target on the measured pose, so

@@ -31,11 +31,6 @@ std::string PointText(const Vec3& p) {
   return os.str();
 }
 
-// World x/y displacement to the tool frame (site rotation, row-major).
-std::array<double, 2> WorldToTool(const mjtNum* R, double wx, double wy) {
-  return {R[0] * wx + R[3] * wy, R[1] * wx + R[4] * wy};
-}
-
 }  // namespace
 
 TrialTarget TrialTarget::Disk(double centre_x_m, double centre_y_m, double radius_m,
@@ -201,7 +196,15 @@ void ContourTrial::Log(bool iteration) {
   TrialLogRow row;
   row.t_s = d_->time;
   row.tool_m = servo_->Measured(d_);
-  row.p_pa = iteration ? host_p_pa_ : Pressures();
+  // Between iterations the chambers as the lip drags them (the peel is in the real chambers,
+  // so a lab log has it in every sample); the sensors' spread and slow noise only at iterations,
+  // where the host drew them.
+  if (iteration) {
+    row.p_pa = host_p_pa_;
+  } else {
+    row.p_pa = Pressures();
+    ApplyLipTilt(config_.effects.lip, lip_shear_, &row.p_pa);
+  }
   row.pbar_pa = last_step_.p_mean_pa;
   row.dpx_pa = last_step_.dpx_pa;
   row.dpy_pa = last_step_.dpy_pa;

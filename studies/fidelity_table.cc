@@ -93,7 +93,8 @@ bool RunFidelityTable(const TrialConfig& trial_config, const TrialResult& trial,
     m->opt.integrator = s.integrator;
     ReplayComparison r;
     const auto t0 = std::chrono::steady_clock::now();
-    if (!ReplayLog(m.get(), path, kToolCentreOffsetM, &r, error)) return false;
+    // The plugin alone: the variants differ in the model, not in the host's reading.
+    if (!ReplayLog(m.get(), path, kToolCentreOffsetM, LipShearParams{}, &r, error)) return false;
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (s.reference) reference = r.sim_pa;

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "compare/comparison.h"
+#include "controller/pure/robot_effects.h"
 #include "lab_log_generator.h"
 #include "runtime/mujoco_model.h"
 #include "studies/tool_variants.h"
@@ -188,6 +189,35 @@ TEST(CompareTest, ClosedLoopTakesItsParametersFromTheMatAlone) {
   EXPECT_LT(r.closed.path_distance_mean_mm, 1.5);
   ASSERT_TRUE(r.history.ran);
   EXPECT_LT(r.history.r_p_median_deg, 5.0);
+}
+
+TEST(CompareTest, ALipThatPeelsIsReplayedOnlyWhenTheReplayDragsTheLipToo) {
+  // The "robot": the twin with the trailing-lip peel on (robot effects: slip 1 mm, 0.6 decades),
+  // so every logged sample has the trailing chambers low. The replay drags the lip along the
+  // logged path with the same effect and reads the same stream (ratio of means 1.00 +- 0.05);
+  // a replay of the plugin alone reads the trailing chambers too high and turns the direction.
+  const Fixture& f = Shared();
+  TrialConfig c = f.config;
+  std::string error;
+  ASSERT_TRUE(ParseRobotEffects("slip_mm=1,peel_decades=0.6", &c.effects, &error)) << error;
+  const TrialResult run = RunTrial(f.gantry.get(), c, true, &error);
+  ASSERT_FALSE(run.log.empty()) << error;
+  testing::LabForms forms;
+  ASSERT_TRUE(testing::WriteLabForms(run, c, f.disk, LabSetup(), LogPerturbation(),
+                                     TempDir("peel_forms"), &forms, &error))
+      << error;
+  CompareOptions with_lip;
+  with_lip.loop_config.effects = c.effects;
+  const CompareResult same = Compare(forms.mat_path, TempDir("out_peel"), false, with_lip);
+  const CompareResult plugin_only = Compare(forms.mat_path, TempDir("out_peel_plugin"));
+  double worst_same = 0, worst_plugin = 0;
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_NEAR(same.replay.mean_ratio[k], 1.0, 0.05) << k;
+    worst_same = std::max(worst_same, std::fabs(same.replay.mean_ratio[k] - 1.0));
+    worst_plugin = std::max(worst_plugin, std::fabs(plugin_only.replay.mean_ratio[k] - 1.0));
+  }
+  EXPECT_GT(worst_plugin, 2 * worst_same);
+  EXPECT_LT(same.replay.direction_median_deg, plugin_only.replay.direction_median_deg);
 }
 
 TEST(CompareTest, ReplayExposesARobotWithAStrongerPump) {
