@@ -9,7 +9,7 @@ namespace ssc {
 namespace {
 
 // A new field in these structs must be judged for the key (ApproachKeyOf).
-static_assert(sizeof(ServoParams) == 2 * sizeof(double), "ServoParams changed: see ApproachKeyOf");
+static_assert(sizeof(ServoParams) == 3 * sizeof(double), "ServoParams changed: see ApproachKeyOf");
 static_assert(sizeof(LipShearParams) == 3 * sizeof(double),
               "LipShearParams changed: see ApproachKeyOf");
 
@@ -25,6 +25,7 @@ ApproachKey ApproachKeyOf(const TrialConfig& c) {
   const TrialTarget& t = c.target;
   return {Bits(c.servo.smoothing_s),
           Bits(c.servo.max_speed_m_s),
+          Bits(c.servo.damping),
           Bits(c.approach_force_n),
           Bits(c.approach_speed_m_s),
           Bits(c.move_speed_m_s),

@@ -15,7 +15,22 @@ Vec3 ToolServo::Measured(const mjData* d) const {
 void ToolServo::Track(const mjModel* m, mjData* d) {
   const double dt = last_time_ < 0 ? 0.0 : std::max(0.0, d->time - last_time_);
   last_time_ = d->time;
-  if (dt > 0) {
+  if (dt > 0 && params_.damping > 0 && params_.smoothing_s > 0) {
+    // Second order, semi-implicit Euler (stable: w dt = 2 ms / >= 30 ms), speed limited.
+    const double w = 1.0 / params_.smoothing_s;
+    double speed = 0;
+    for (int k = 0; k < 3; ++k) {
+      velocity_[k] +=
+          dt * (w * w * (target_[k] - command_[k]) - 2 * params_.damping * w * velocity_[k]);
+      speed += velocity_[k] * velocity_[k];
+    }
+    speed = std::sqrt(speed);
+    const double scale = speed > params_.max_speed_m_s ? params_.max_speed_m_s / speed : 1.0;
+    for (int k = 0; k < 3; ++k) {
+      velocity_[k] *= scale;
+      command_[k] += dt * velocity_[k];
+    }
+  } else if (dt > 0) {
     const double alpha = params_.smoothing_s > 0 ? 1.0 - std::exp(-dt / params_.smoothing_s) : 1.0;
     Vec3 delta;
     double norm = 0;

@@ -32,6 +32,12 @@ struct ServoParams {
   double smoothing_s = 0.15;
   // Speed limit of the commanded point, m/s (UR servoL never jumps).
   double max_speed_m_s = 0.25;
+  // Damping ratio of a second-order tracking of the target, [0, 2]; 0 = the first-order
+  // smoothing above (the default). Above 0 the command follows target'' = w^2 (target - command)
+  // - 2 zeta w command' with w = 1 / smoothing_s: the arm with the tool's payload carries its
+  // velocity into the next step and, below 1, overshoots (UR servoL at gain 100 with 0.2 s
+  // look-ahead is a soft tracker; its damping is not published).
+  double damping = 0.0;
 };
 
 class ToolServo {
@@ -40,6 +46,7 @@ class ToolServo {
   struct State {
     Vec3 target{};
     Vec3 command{};
+    Vec3 velocity{};  // of the command, m/s (second-order tracking only)
     double last_time_s = -1;
   };
 
@@ -54,10 +61,11 @@ class ToolServo {
   const Vec3& command() const { return command_; }
   Vec3 Measured(const mjData* d) const;
   void set_params(const ServoParams& p) { params_ = p; }
-  State state() const { return {target_, command_, last_time_}; }
+  State state() const { return {target_, command_, velocity_, last_time_}; }
   void set_state(const State& s) {
     target_ = s.target;
     command_ = s.command;
+    velocity_ = s.velocity;
     last_time_ = s.last_time_s;
   }
 
@@ -68,6 +76,7 @@ class ToolServo {
   ServoParams params_;
   Vec3 target_{};
   Vec3 command_{};
+  Vec3 velocity_{};
   double last_time_ = -1;
 };
 

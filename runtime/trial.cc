@@ -83,6 +83,8 @@ std::string TrialConfig::Validate() const {
   }
   if (!Finite(servo.smoothing_s) || servo.smoothing_s < 0 || servo.smoothing_s > 5)
     return RangeError("servo smoothing_s", servo.smoothing_s, "[0, 5] s");
+  if (!Finite(servo.damping) || servo.damping < 0 || servo.damping > 2)
+    return RangeError("servo damping", servo.damping, "[0, 2]");
   if (!Finite(log_period_s) || log_period_s <= 0 || log_period_s > 1)
     return RangeError("log_period_s", log_period_s, "(0, 1] s");
   if (const std::string e = effects.Validate(control_period_s); !e.empty()) return e;

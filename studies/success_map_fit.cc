@@ -15,6 +15,7 @@ const std::vector<DynamicParameter>& DynamicParameters() {
   static const std::vector<DynamicParameter> kParams = {
       {"period_s", "s", 0.20, 0.30, [](TrialConfig* c) { return &c->control_period_s; }},
       {"smoothing_s", "s", 0.03, 0.25, [](TrialConfig* c) { return &c->servo.smoothing_s; }},
+      {"servo_damping", "1", 0.2, 1.0, [](TrialConfig* c) { return &c->servo.damping; }},
       {"jitter_s", "s", 0.0, 0.08, [](TrialConfig* c) { return &c->effects.loop.jitter_s; }},
       {"pose_delay_s", "s", 0.0, 0.15,
        [](TrialConfig* c) { return &c->effects.loop.pose_delay_s; }},

@@ -44,6 +44,7 @@ SweepManifest MakeManifest(const mjModel* m, const SweepSpec& spec) {
           {"timeout_s", num(c.timeout_s)},
           {"control_period_s", num(c.control_period_s)},
           {"smoothing_s", num(c.servo.smoothing_s)},
+          {"servo_damping", num(c.servo.damping)},
           {"approach_force_n", num(c.approach_force_n)},
           {"start_x_m", num(c.target.start[0])},
           {"start_y_m", num(c.target.start[1])},

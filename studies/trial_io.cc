@@ -73,6 +73,7 @@ bool WriteTrialSummaryJson(const std::string& path, const std::string& scene, co
                      {"object_on", c.law.side == FollowSide::kObjectOnLeft ? "left" : "right"},
                      {"control_period_s", num(c.control_period_s)},
                      {"servo_smoothing_s", num(c.servo.smoothing_s)},
+                     {"servo_damping", num(c.servo.damping)},
                      {"approach_force_n", num(c.approach_force_n)},
                      {"start_x_mm", num(c.target.start[0] * 1e3)},
                      {"start_y_mm", num(c.target.start[1] * 1e3)},

@@ -230,6 +230,7 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
   j["effects"] = FormatRobotEffects(spec.base.effects);
   j["control_period_s"] = spec.base.control_period_s;
   j["servo_smoothing_s"] = spec.base.servo.smoothing_s;
+  j["servo_damping"] = spec.base.servo.damping;
   j["cells"] = score->cells_scored;
   j["class_match"] = score->class_match;
   j["expected_agreement"] = score->expected_agreement;

@@ -19,6 +19,9 @@ void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* c, TrialSettings* s)
               NumberRange::Closed(0.002, 10));
   cmd->Number("smoothing", &c->servo.smoothing_s, "servo look-ahead smoothing time constant", "s",
               NumberRange::Closed(0, 5));
+  cmd->Number("damping", &c->servo.damping,
+              "servo damping ratio of a second-order tracking (0 = first-order smoothing)", "",
+              NumberRange::Closed(0, 2));
   cmd->Number("timeout", &c->timeout_s, "follow-phase time limit, simulated", "s",
               NumberRange::Positive(3600));
   cmd->Number("approach-force", &c->approach_force_n, "start-up compression read on the F/T", "N",
