@@ -366,8 +366,13 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
       } else {
         // Tool frame -> world with the tool site's rotation (orientation is held).
         const mjtNum* R = d_->site_xmat + 9 * tool_site_;
-        last_step_world_ = {R[0] * last_step_.step_m[0] + R[1] * last_step_.step_m[1],
-                            R[3] * last_step_.step_m[0] + R[4] * last_step_.step_m[1]};
+        std::array<double, 2> step = last_step_.step_m;
+        if (step[0] != 0 || step[1] != 0) {  // a step taken (not held by the dead band) misses
+          const std::array<double, 2> e =
+              StepError(config_.effects.loop, EffectsSeed(), result_.iterations);
+          step = {step[0] + e[0], step[1] + e[1]};
+        }
+        last_step_world_ = {R[0] * step[0] + R[1] * step[1], R[3] * step[0] + R[4] * step[1]};
         // Measured pose + step, height held; with a pose delay, the pose read after the plot.
         if (config_.effects.loop.pose_delay_s > 0) {
           step_pending_ = true;

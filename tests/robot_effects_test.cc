@@ -142,6 +142,31 @@ TEST(ChamberSpreadTest, SlowNoiseHasItsStationarySpreadAndCorrelationTime) {
   EXPECT_NEAR(c, std::exp(-1.0), 0.05);  // lag 4 x 50 ms = tau
 }
 
+TEST(StepErrorTest, EachStepMissesByTheStatedSpreadIndependentlyPerAxisAndZeroIsExact) {
+  LoopTimingParams p;
+  EXPECT_EQ(StepError(p, 7, 3), (std::array<double, 2>{0, 0}));  // off: no draw, no error
+  p.step_error_mm = 1.25;
+  double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+  const int n = 40000;
+  for (int i = 0; i < n; ++i) {
+    const std::array<double, 2> e = StepError(p, 7, static_cast<std::uint64_t>(i));
+    sx += e[0];
+    sy += e[1];
+    sxx += e[0] * e[0];
+    syy += e[1] * e[1];
+    sxy += e[0] * e[1];
+  }
+  // sigma 1.25 mm per axis (standard error of a variance estimate ~0.7 %), mean 0, uncorrelated.
+  EXPECT_NEAR(std::sqrt(sxx / n), 1.25e-3, 0.03e-3);
+  EXPECT_NEAR(std::sqrt(syy / n), 1.25e-3, 0.03e-3);
+  EXPECT_NEAR(sx / n, 0, 0.03e-3);
+  EXPECT_NEAR(sy / n, 0, 0.03e-3);
+  EXPECT_NEAR(sxy / n / (1.25e-3 * 1.25e-3), 0, 0.03);
+  // A pure function of (seed, step index): the same on any thread or rank; another seed differs.
+  EXPECT_EQ(StepError(p, 7, 11), StepError(p, 7, 11));
+  EXPECT_NE(StepError(p, 7, 11), StepError(p, 8, 11));
+}
+
 TEST(LipShearTest, NoFrictionNoShearNoTilt) {
   LipShearParams p;
   p.slip_mm = 0;  // no friction: the footprint never sticks

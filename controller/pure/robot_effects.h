@@ -35,6 +35,10 @@ struct LoopTimingParams {
   // Time from reading the pressures to reading the pose the step is added to, s: [0, period).
   // The lab's loop drew a live plot in between (about 0.05-0.15 s).
   double pose_delay_s = 0.0;
+  // 1-sigma error of where each step ends, per horizontal axis, mm: [0, 3]; 0 = off. The arm
+  // servoing the tool's payload at 4 Hz does not land exactly on its target; the next step is
+  // added to the measured pose, so the errors stay in the path until the law corrects them.
+  double step_error_mm = 0.0;
 };
 
 struct LipShearParams {
@@ -79,7 +83,7 @@ struct EffectKey {
   const char* what;
   double* (*field)(RobotEffectsParams*);
 };
-const std::array<EffectKey, 10>& EffectKeys();
+const std::array<EffectKey, 11>& EffectKeys();
 // Parses "key=value,key=value" (or "off": every effect off) onto *p. Values must be whole,
 // finite numbers in the key's range; the error names the key, the value and the range.
 bool ParseRobotEffects(const std::string& text, RobotEffectsParams* p, std::string* error);
@@ -91,12 +95,21 @@ double EffectGaussian(std::uint64_t seed, std::uint64_t counter, int k);
 double EffectUniform(std::uint64_t seed, std::uint64_t counter, int k);
 
 // Stream ids (the `counter`'s top byte), so the mechanisms never share draws.
-enum class EffectStream : std::uint64_t { kJitter = 1, kGain = 2, kDrift = 3, kOffset = 4 };
+enum class EffectStream : std::uint64_t {
+  kJitter = 1,
+  kGain = 2,
+  kDrift = 3,
+  kOffset = 4,
+  kStepError = 5
+};
 std::uint64_t EffectCounter(EffectStream stream, std::uint64_t index);
 
 // The period of iteration `index`: period_s + jitter_s * U(-1, 1).
 double IterationPeriod(const LoopTimingParams& p, double period_s, std::uint64_t seed,
                        std::uint64_t index);
+
+// The error of step `index`'s end point (tool frame x, y), m: step_error_mm * N(0, 1) per axis.
+std::array<double, 2> StepError(const LoopTimingParams& p, std::uint64_t seed, std::uint64_t index);
 
 // The lip's shear state: the footprint lags the body until |shear| reaches slip (then slides).
 // Unit vectors of the chambers' centres in the tool frame come from ChamberDirection.
