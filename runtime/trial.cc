@@ -369,7 +369,8 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
         std::array<double, 2> step = last_step_.step_m;
         if (step[0] != 0 || step[1] != 0) {  // a step taken (not held by the dead band) misses
           const std::array<double, 2> e =
-              StepError(config_.effects.loop, EffectsSeed(), result_.iterations);
+              StepError(config_.effects.loop, std::hypot(step[0], step[1]), EffectsSeed(),
+                        result_.iterations);
           step = {step[0] + e[0], step[1] + e[1]};
         }
         last_step_world_ = {R[0] * step[0] + R[1] * step[1], R[3] * step[0] + R[4] * step[1]};

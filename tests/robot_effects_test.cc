@@ -142,14 +142,14 @@ TEST(ChamberSpreadTest, SlowNoiseHasItsStationarySpreadAndCorrelationTime) {
   EXPECT_NEAR(c, std::exp(-1.0), 0.05);  // lag 4 x 50 ms = tau
 }
 
-TEST(StepErrorTest, EachStepMissesByTheStatedSpreadIndependentlyPerAxisAndZeroIsExact) {
+TEST(StepErrorTest, EachStepMissesByItsShareOfTheStepIndependentlyPerAxisAndZeroIsExact) {
   LoopTimingParams p;
-  EXPECT_EQ(StepError(p, 7, 3), (std::array<double, 2>{0, 0}));  // off: no draw, no error
-  p.step_error_mm = 1.25;
+  EXPECT_EQ(StepError(p, 0.005, 7, 3), (std::array<double, 2>{0, 0}));  // off: no draw, no error
+  p.step_error_relative = 0.25;                                         // of a 5 mm step: 1.25 mm
   double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
   const int n = 40000;
   for (int i = 0; i < n; ++i) {
-    const std::array<double, 2> e = StepError(p, 7, static_cast<std::uint64_t>(i));
+    const std::array<double, 2> e = StepError(p, 0.005, 7, static_cast<std::uint64_t>(i));
     sx += e[0];
     sy += e[1];
     sxx += e[0] * e[0];
@@ -163,8 +163,10 @@ TEST(StepErrorTest, EachStepMissesByTheStatedSpreadIndependentlyPerAxisAndZeroIs
   EXPECT_NEAR(sy / n, 0, 0.03e-3);
   EXPECT_NEAR(sxy / n / (1.25e-3 * 1.25e-3), 0, 0.03);
   // A pure function of (seed, step index): the same on any thread or rank; another seed differs.
-  EXPECT_EQ(StepError(p, 7, 11), StepError(p, 7, 11));
-  EXPECT_NE(StepError(p, 7, 11), StepError(p, 8, 11));
+  EXPECT_EQ(StepError(p, 0.005, 7, 11), StepError(p, 0.005, 7, 11));
+  EXPECT_NE(StepError(p, 0.005, 7, 11), StepError(p, 0.005, 8, 11));
+  // It scales with the step: half the step, half the error, the same draw.
+  EXPECT_NEAR(StepError(p, 0.0025, 7, 11)[0], 0.5 * StepError(p, 0.005, 7, 11)[0], 1e-18);
 }
 
 TEST(LipShearTest, NoFrictionNoShearNoTilt) {

@@ -34,8 +34,9 @@ const std::array<EffectKey, 11>& EffectKeys() {
        [](RobotEffectsParams* p) { return &p->loop.jitter_s; }},
       {"pose_delay_s", "s", 0, 10, "pressures read -> pose read (the live plot in between)",
        [](RobotEffectsParams* p) { return &p->loop.pose_delay_s; }},
-      {"step_error_mm", "mm", 0, 3, "1-sigma error of where each step ends, per axis",
-       [](RobotEffectsParams* p) { return &p->loop.step_error_mm; }},
+      {"step_error_relative", "1", 0, 1,
+       "1-sigma error of where each step ends, per axis, over the step length",
+       [](RobotEffectsParams* p) { return &p->loop.step_error_relative; }},
       {"slip_mm", "mm", 0, 3, "lip shear before the footprint slides (0 = no lip drag)",
        [](RobotEffectsParams* p) { return &p->lip.slip_mm; }},
       {"tilt_decades", "decades", 0, 1, "vacuum change of a leading/trailing chamber at full shear",
@@ -130,8 +131,8 @@ std::string RobotEffectsParams::Validate(double period_s) const {
     return Bad("loop jitter_s", loop.jitter_s, "[0, period/2] s");
   if (!In(loop.pose_delay_s, 0, period_s) || (loop.pose_delay_s >= period_s && period_s > 0))
     return Bad("loop pose_delay_s", loop.pose_delay_s, "[0, period) s");
-  if (!In(loop.step_error_mm, 0, 3))
-    return Bad("loop step_error_mm", loop.step_error_mm, "[0, 3] mm");
+  if (!In(loop.step_error_relative, 0, 1))
+    return Bad("loop step_error_relative", loop.step_error_relative, "[0, 1]");
   if (loop.pose_delay_s + loop.jitter_s >= period_s && loop.pose_delay_s > 0)
     return Bad("loop pose_delay_s + jitter_s", loop.pose_delay_s + loop.jitter_s,
                "below the period");
@@ -152,7 +153,7 @@ std::string RobotEffectsParams::Validate(double period_s) const {
 }
 
 bool RobotEffectsParams::AnyOn() const {
-  return loop.jitter_s > 0 || loop.pose_delay_s > 0 || loop.step_error_mm > 0 ||
+  return loop.jitter_s > 0 || loop.pose_delay_s > 0 || loop.step_error_relative > 0 ||
          (lip.slip_mm > 0 && (lip.tilt_decades > 0 || lip.peel_decades > 0)) ||
          chambers.gain_spread > 0 || chambers.offset_spread_pa > 0 || chambers.drift_pa > 0 ||
          chambers.drift_relative > 0;
@@ -165,12 +166,12 @@ double IterationPeriod(const LoopTimingParams& p, double period_s, std::uint64_t
          p.jitter_s * EffectUniform(seed, EffectCounter(EffectStream::kJitter, index), 0);
 }
 
-std::array<double, 2> StepError(const LoopTimingParams& p, std::uint64_t seed,
+std::array<double, 2> StepError(const LoopTimingParams& p, double step_m, std::uint64_t seed,
                                 std::uint64_t index) {
-  if (p.step_error_mm <= 0) return {0, 0};
+  if (p.step_error_relative <= 0) return {0, 0};
   const std::uint64_t c = EffectCounter(EffectStream::kStepError, index);
-  return {p.step_error_mm * 1e-3 * EffectGaussian(seed, c, 0),
-          p.step_error_mm * 1e-3 * EffectGaussian(seed, c, 1)};
+  const double sigma_m = p.step_error_relative * step_m;
+  return {sigma_m * EffectGaussian(seed, c, 0), sigma_m * EffectGaussian(seed, c, 1)};
 }
 
 void AdvanceLipShear(const LipShearParams& p, const std::array<double, 2>& body_move_m,

@@ -35,10 +35,12 @@ struct LoopTimingParams {
   // Time from reading the pressures to reading the pose the step is added to, s: [0, period).
   // The lab's loop drew a live plot in between (about 0.05-0.15 s).
   double pose_delay_s = 0.0;
-  // 1-sigma error of where each step ends, per horizontal axis, mm: [0, 3]; 0 = off. The arm
-  // servoing the tool's payload at 4 Hz does not land exactly on its target; the next step is
-  // added to the measured pose, so the errors stay in the path until the law corrects them.
-  double step_error_mm = 0.0;
+  // 1-sigma error of where each step ends, per horizontal axis, as a fraction of the step's
+  // length: [0, 1]; 0 = off. The arm servoing the tool's payload at an irregular ~4 Hz does not
+  // land on its target (its tracking lag, the period's jitter, the turn within a step: all grow
+  // with the step); the next step is added to the measured pose, so the error stays in the path
+  // until the law corrects it.
+  double step_error_relative = 0.0;
 };
 
 struct LipShearParams {
@@ -108,8 +110,10 @@ std::uint64_t EffectCounter(EffectStream stream, std::uint64_t index);
 double IterationPeriod(const LoopTimingParams& p, double period_s, std::uint64_t seed,
                        std::uint64_t index);
 
-// The error of step `index`'s end point (tool frame x, y), m: step_error_mm * N(0, 1) per axis.
-std::array<double, 2> StepError(const LoopTimingParams& p, std::uint64_t seed, std::uint64_t index);
+// The error of step `index`'s end point (tool frame x, y), m: step_error_relative * step_m *
+// N(0, 1) per axis, step_m the step's length.
+std::array<double, 2> StepError(const LoopTimingParams& p, double step_m, std::uint64_t seed,
+                                std::uint64_t index);
 
 // The lip's shear state: the footprint lags the body until |shear| reaches slip (then slides).
 // Unit vectors of the chambers' centres in the tool frame come from ChamberDirection.
