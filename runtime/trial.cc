@@ -364,16 +364,7 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
         awaiting_step_ = true;
         iteration_tool_ = tool;
       } else {
-        // Tool frame -> world with the tool site's rotation (orientation is held).
-        const mjtNum* R = d_->site_xmat + 9 * tool_site_;
-        std::array<double, 2> step = last_step_.step_m;
-        if (step[0] != 0 || step[1] != 0) {  // a step taken (not held by the dead band) misses
-          const std::array<double, 2> e =
-              StepError(config_.effects.loop, std::hypot(step[0], step[1]), EffectsSeed(),
-                        result_.iterations);
-          step = {step[0] + e[0], step[1] + e[1]};
-        }
-        last_step_world_ = {R[0] * step[0] + R[1] * step[1], R[3] * step[0] + R[4] * step[1]};
+        last_step_world_ = LandedStepWorld(last_step_.step_m);
         // Measured pose + step, height held; with a pose delay, the pose read after the plot.
         if (config_.effects.loop.pose_delay_s > 0) {
           step_pending_ = true;
@@ -453,12 +444,22 @@ bool ContourTrial::RunToNextIteration(double max_sim_s) {
   return phase_ != TrialPhase::kDone;
 }
 
+std::array<double, 2> ContourTrial::LandedStepWorld(std::array<double, 2> step) const {
+  if (step[0] != 0 || step[1] != 0) {  // a step taken (not held by the dead band) misses
+    const std::array<double, 2> e = StepError(config_.effects.loop, std::hypot(step[0], step[1]),
+                                              EffectsSeed(), result_.iterations);
+    step = {step[0] + e[0], step[1] + e[1]};
+  }
+  // Tool frame -> world with the tool site's rotation (orientation is held).
+  const mjtNum* R = d_->site_xmat + 9 * tool_site_;
+  return {R[0] * step[0] + R[1] * step[1], R[3] * step[0] + R[4] * step[1]};
+}
+
 void ContourTrial::ApplyStep(const std::array<double, 2>& step_m) {
   if (!awaiting_step_) return;
   awaiting_step_ = false;
   last_step_.step_m = step_m;
-  const mjtNum* R = d_->site_xmat + 9 * tool_site_;
-  last_step_world_ = {R[0] * step_m[0] + R[1] * step_m[1], R[3] * step_m[0] + R[4] * step_m[1]};
+  last_step_world_ = LandedStepWorld(step_m);
   servo_->SetTarget({iteration_tool_[0] + last_step_world_[0],
                      iteration_tool_[1] + last_step_world_[1], hold_z_});
 }

@@ -209,6 +209,8 @@ class ContourTrial : public ControlCallback {
   GoalTracker goal_;
   ContourStep last_step_{};
   std::array<double, 2> last_step_world_{};
+  // The step as the arm lands it (robot effects: step error), tool frame -> world.
+  std::array<double, 2> LandedStepWorld(std::array<double, 2> step_m) const;
   std::vector<Point2> path_xy_;
   std::vector<double> path_t_;
   // Robot effects: lip shear, chamber spread, the step waiting for the pose read after the plot.
