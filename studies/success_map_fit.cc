@@ -19,6 +19,8 @@ const std::vector<DynamicParameter>& DynamicParameters() {
       {"jitter_s", "s", 0.0, 0.08, [](TrialConfig* c) { return &c->effects.loop.jitter_s; }},
       {"pose_delay_s", "s", 0.0, 0.15,
        [](TrialConfig* c) { return &c->effects.loop.pose_delay_s; }},
+      {"step_error_relative", "1", 0.0, 0.5,
+       [](TrialConfig* c) { return &c->effects.loop.step_error_relative; }},
       {"slip_mm", "mm", 0.2, 2.0, [](TrialConfig* c) { return &c->effects.lip.slip_mm; }},
       {"tilt_decades", "decades", 0.0, 0.4,
        [](TrialConfig* c) { return &c->effects.lip.tilt_decades; }},
