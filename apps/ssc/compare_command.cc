@@ -6,8 +6,8 @@
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
+#include "apps/ssc/trial_options.h"
 #include "compare/comparison.h"
-#include "controller/pure/robot_effects.h"
 
 namespace ssc {
 
@@ -59,15 +59,10 @@ int RunCompareCommand(int argc, char** argv) {
            "closed loop: use --pref, --beta, --step even when the file records them");
   cmd.Seed("seed", &tc.seed, "closed loop: noise seed");
   std::string effects = "default";
-  cmd.Text("effects", &effects,
-           "robot effects (docs/fidelity.md) of the closed loop, and the lip's (slip_mm, "
-           "tilt_decades, peel_decades) also in the replay: 'default', 'off', or key=value,...; "
-           "defaults " +
-               FormatRobotEffects(tc.effects));
-  cmd.Check([&tc, &effects]() {
-    std::string error;
-    return ParseRobotEffects(effects, &tc.effects, &error) ? std::string() : error;
-  });
+  AddEffectsOption(&cmd,
+                   "robot effects (docs/fidelity.md) of the closed loop, and the lip's (slip_mm, "
+                   "tilt_decades, peel_decades) also in the replay",
+                   &effects, &tc.effects);
   cmd.Flag("no-plot", &no_plot, "skip the PNG plot");
   cmd.Check([&tc]() { return tc.Validate(); });
   cmd.Check([&o]() -> std::string {

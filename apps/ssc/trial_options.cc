@@ -44,18 +44,24 @@ void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* c, TrialSettings* s)
               {"left", "right"});
   cmd->Flag("no-dead-band", &s->no_dead_band,
             "take a step even when both differentials are below P_n");
-  cmd->Text("effects", &s->effects,
-            "robot effects (docs/fidelity.md): 'default', 'off', or key=value,... over the "
-            "defaults; defaults " +
-                FormatRobotEffects(c->effects));
+  AddEffectsOption(cmd, "robot effects (docs/fidelity.md)", &s->effects, &c->effects);
   cmd->Check([c, s]() {
-    std::string error;
-    if (!ParseRobotEffects(s->effects, &c->effects, &error)) return error;
     c->target = TrialTarget::Disk(kWorkspaceX, kWorkspaceY, 0.035, s->start_offset_mm * 1e-3);
     c->target.goal.sweep_deg = s->sweep_deg;
     c->law.side = s->object_on == "right" ? FollowSide::kObjectOnRight : FollowSide::kObjectOnLeft;
     c->law.dead_band = !s->no_dead_band;
     return c->Validate();
+  });
+}
+
+void AddEffectsOption(cli::Command* cmd, const std::string& what, std::string* text,
+                      RobotEffectsParams* effects) {
+  cmd->Text("effects", text,
+            what + ": 'default', 'off', or key=value,... over the defaults; defaults " +
+                FormatRobotEffects(*effects));
+  cmd->Check([text, effects]() {
+    std::string error;
+    return ParseRobotEffects(*text, effects, &error) ? std::string() : error;
   });
 }
 

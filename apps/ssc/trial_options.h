@@ -25,6 +25,10 @@ struct TrialSettings {
   std::string effects = "default";
 };
 void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* config, TrialSettings* settings);
+// --effects: the text goes to *text and is parsed onto *effects by a check registered here (so
+// before any check registered after it). `what` leads the help line.
+void AddEffectsOption(cli::Command* cmd, const std::string& what, std::string* text,
+                      RobotEffectsParams* effects);
 
 // One summary line on the shared approach (runtime/approach_cache.h) of this rank's trials.
 void PrintApproachSharing(bool on, const SweepSummary& summary);
