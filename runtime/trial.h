@@ -66,8 +66,9 @@ struct TrialConfig {
   double timeout_s = 120;        // follow phase limit, simulated seconds
   std::uint64_t seed = 1;        // sensor noise seed for this trial
   double log_period_s = 0.02;    // path sampling for metrics and the log
-  // The real loop, lip and sensors (controller/pure/robot_effects.h); all zero = ideal.
-  RobotEffectsParams effects;
+  // The real loop, lip and sensors (controller/pure/robot_effects.h): the fitted set by
+  // default (each step lands off target); all zero (`--effects off`) = the ideal loop.
+  RobotEffectsParams effects = FittedRobotEffects();
 
   // Empty when valid, else names the field and its range.
   std::string Validate() const;

@@ -16,8 +16,8 @@ std::vector<WanderTarget> PublishedWanderTargets() {
 }
 
 bool FitWander(const std::string& scene, const std::vector<WanderTarget>& targets, double step_mm,
-               int seeds, int max_evaluations, double noise0, double lag0, WanderFit* fit,
-               std::string* error) {
+               const RobotEffectsParams& effects, int seeds, int max_evaluations, double noise0,
+               double lag0, WanderFit* fit, std::string* error) {
   const auto variants = ToolModelVariants::Read(scene, error);
   if (!variants) return false;
   bool failed = false;
@@ -41,6 +41,7 @@ bool FitWander(const std::string& scene, const std::vector<WanderTarget>& target
         TrialConfig c;
         c.law.beta = t.beta;
         c.law.step_mm = step_mm;
+        c.effects = effects;
         c.seed = static_cast<std::uint64_t>(k + 1);
         std::string e;
         const TrialResult r = RunTrial(m.get(), c, false, &e);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "calibration/pneumatic_fit.h"
+#include "controller/pure/robot_effects.h"
 
 namespace ssc {
 
@@ -31,8 +32,9 @@ struct WanderFit {
 // Fits noise_pa and lag_ms from (noise0, lag0). `scene` is a disk scene with the tool; it is
 // read once, and each evaluation compiles its tool variant in memory (studies/tool_variants.h).
 // False + *error on read or load failure.
+// `effects`: the robot effects its trials run with (the twin's defaults in ssc calibrate).
 bool FitWander(const std::string& scene, const std::vector<WanderTarget>& targets, double step_mm,
-               int seeds, int max_evaluations, double noise0, double lag0, WanderFit* fit,
+               const RobotEffectsParams& effects, int seeds, int max_evaluations, double noise0, double lag0, WanderFit* fit,
                std::string* error);
 
 // params.json of ssc calibrate: the static fit (cost, parameters, targets published vs model)

@@ -19,8 +19,10 @@ const std::vector<DynamicParameter>& DynamicParameters() {
       {"jitter_s", "s", 0.0, 0.08, [](TrialConfig* c) { return &c->effects.loop.jitter_s; }},
       {"pose_delay_s", "s", 0.0, 0.15,
        [](TrialConfig* c) { return &c->effects.loop.pose_delay_s; }},
-      {"step_error_relative", "1", 0.0, 0.5,
+      {"step_error_relative", "1", 0.0, 1.0,
        [](TrialConfig* c) { return &c->effects.loop.step_error_relative; }},
+      {"step_error_max_mm", "mm", 0.3, 3.0,
+       [](TrialConfig* c) { return &c->effects.loop.step_error_max_mm; }},
       {"slip_mm", "mm", 0.2, 2.0, [](TrialConfig* c) { return &c->effects.lip.slip_mm; }},
       {"tilt_decades", "decades", 0.0, 0.4,
        [](TrialConfig* c) { return &c->effects.lip.tilt_decades; }},
@@ -54,7 +56,10 @@ std::vector<MetricTarget> PublishedMetricTargets() {
 std::vector<MapCell> PublishedOutcomeCells() {
   return {{2.5, 1.0, 70, MapClass::kThreeOfThree},
           {2.5, 2.0, 100, MapClass::kThreeOfThree},
-          {7.5, 2.0, 100, MapClass::kThreeOfThree}};
+          {7.5, 2.0, 100, MapClass::kThreeOfThree},
+          // issue #11, "what the robot did": beta <= 0.5 always failed (at every step).
+          {2.5, 0.5, 100, MapClass::kAtMostOne},
+          {7.5, 0.5, 100, MapClass::kAtMostOne}};
 }
 
 namespace {

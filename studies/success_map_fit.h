@@ -41,7 +41,8 @@ struct MetricTarget {
 std::vector<MetricTarget> PublishedMetricTargets();
 // The published outcomes beside the map (calibration targets in smart-suction-cup.md): the pilot
 // controller (P_ref 70, beta 1, dL 2.5 mm) succeeds; P_ref 100, beta 2 succeeds 3/3 at dL 2.5,
-// 5 and 7.5 mm. The fit scores them like map cells.
+// 5 and 7.5 mm; and beta 0.5 fails (at P_ref 100, dL 2.5 and 7.5 mm: "beta <= 0.5 always
+// failed"). The fit scores them like map cells.
 std::vector<MapCell> PublishedOutcomeCells();
 
 struct DynamicFitSpec {

@@ -169,6 +169,49 @@ TEST(StepErrorTest, EachStepMissesByItsShareOfTheStepIndependentlyPerAxisAndZero
   EXPECT_NEAR(StepError(p, 0.0025, 7, 11)[0], 0.5 * StepError(p, 0.005, 7, 11)[0], 1e-18);
 }
 
+TEST(StepErrorTest, TheCapBoundsTheErrorOfLongStepsAndLeavesShortStepsTheirShare) {
+  LoopTimingParams p;
+  p.step_error_relative = 0.5;
+  p.step_error_max_mm = 1.0;  // 1 mm: reached at a 2 mm step
+  // Below the cap the share rules (0.5 mm step: sigma 0.25 mm); above it the cap (the same draw
+  // scaled): 2.5 and 7.5 mm steps both miss by sigma 1 mm, not 1.25 and 3.75 mm.
+  const std::array<double, 2> unit = [&] {
+    LoopTimingParams q;
+    q.step_error_relative = 1.0;
+    return StepError(q, 1e-3, 7, 11);  // sigma 1 mm: the draw in mm
+  }();
+  EXPECT_NEAR(StepError(p, 0.0005, 7, 11)[0], 0.25 * unit[0], 1e-15);
+  EXPECT_NEAR(StepError(p, 0.0025, 7, 11)[1], unit[1], 1e-15);
+  EXPECT_NEAR(StepError(p, 0.0075, 7, 11)[0], unit[0], 1e-15);
+  // 0 = no cap: the share again.
+  p.step_error_max_mm = 0;
+  EXPECT_NEAR(StepError(p, 0.0075, 7, 11)[0], 3.75 * unit[0], 1e-15);
+  // The cap alone does nothing: the share switches the mechanism on.
+  p.step_error_relative = 0;
+  p.step_error_max_mm = 1.0;
+  EXPECT_EQ(StepError(p, 0.0075, 7, 11), (std::array<double, 2>{0, 0}));
+  RobotEffectsParams e;
+  e.loop.step_error_max_mm = 3.5;
+  EXPECT_NE(e.Validate(0.25).find("step_error_max_mm"), std::string::npos);
+}
+
+TEST(StepErrorTest, TheFittedDefaultIsTheStepErrorAloneAndOffSwitchesItOff) {
+  RobotEffectsParams p = FittedRobotEffects();
+  EXPECT_EQ(p.Validate(0.15), "");
+  EXPECT_TRUE(p.AnyOn());
+  EXPECT_GT(p.loop.step_error_relative, 0);
+  EXPECT_GT(p.loop.step_error_max_mm, 0);
+  // Nothing else: the fit put the peel at 0.02 decades, and no other effect was fitted on.
+  RobotEffectsParams only_step;
+  only_step.loop.step_error_relative = p.loop.step_error_relative;
+  only_step.loop.step_error_max_mm = p.loop.step_error_max_mm;
+  EXPECT_EQ(FormatRobotEffects(p), FormatRobotEffects(only_step));
+  std::string error;
+  ASSERT_TRUE(ParseRobotEffects("off", &p, &error)) << error;
+  EXPECT_FALSE(p.AnyOn());
+  EXPECT_EQ(StepError(p.loop, 0.005, 7, 3), (std::array<double, 2>{0, 0}));
+}
+
 TEST(LipShearTest, NoFrictionNoShearNoTilt) {
   LipShearParams p;
   p.slip_mm = 0;  // no friction: the footprint never sticks

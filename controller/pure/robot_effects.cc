@@ -28,8 +28,8 @@ std::string Bad(const char* field, double v, const std::string& range) {
 
 }  // namespace
 
-const std::array<EffectKey, 11>& EffectKeys() {
-  static const std::array<EffectKey, 11> kKeys = {{
+const std::array<EffectKey, 12>& EffectKeys() {
+  static const std::array<EffectKey, 12> kKeys = {{
       {"jitter_s", "s", 0, 5, "half-width of the uniform jitter of the loop period",
        [](RobotEffectsParams* p) { return &p->loop.jitter_s; }},
       {"pose_delay_s", "s", 0, 10, "pressures read -> pose read (the live plot in between)",
@@ -37,6 +37,9 @@ const std::array<EffectKey, 11>& EffectKeys() {
       {"step_error_relative", "1", 0, 1,
        "1-sigma error of where each step ends, per axis, over the step length",
        [](RobotEffectsParams* p) { return &p->loop.step_error_relative; }},
+      {"step_error_max_mm", "mm", 0, 3,
+       "cap of that 1-sigma error (the lip's stick-slip; 0 = no cap)",
+       [](RobotEffectsParams* p) { return &p->loop.step_error_max_mm; }},
       {"slip_mm", "mm", 0, 3, "lip shear before the footprint slides (0 = no lip drag)",
        [](RobotEffectsParams* p) { return &p->lip.slip_mm; }},
       {"tilt_decades", "decades", 0, 1, "vacuum change of a leading/trailing chamber at full shear",
@@ -126,6 +129,13 @@ std::uint64_t EffectCounter(EffectStream stream, std::uint64_t index) {
   return (static_cast<std::uint64_t>(stream) << 56) ^ index;
 }
 
+RobotEffectsParams FittedRobotEffects() {
+  RobotEffectsParams p;
+  p.loop.step_error_relative = 0.38;
+  p.loop.step_error_max_mm = 1.34;
+  return p;
+}
+
 std::string RobotEffectsParams::Validate(double period_s) const {
   if (!In(loop.jitter_s, 0, period_s / 2))
     return Bad("loop jitter_s", loop.jitter_s, "[0, period/2] s");
@@ -133,6 +143,8 @@ std::string RobotEffectsParams::Validate(double period_s) const {
     return Bad("loop pose_delay_s", loop.pose_delay_s, "[0, period) s");
   if (!In(loop.step_error_relative, 0, 1))
     return Bad("loop step_error_relative", loop.step_error_relative, "[0, 1]");
+  if (!In(loop.step_error_max_mm, 0, 3))
+    return Bad("loop step_error_max_mm", loop.step_error_max_mm, "[0, 3] mm");
   if (loop.pose_delay_s + loop.jitter_s >= period_s && loop.pose_delay_s > 0)
     return Bad("loop pose_delay_s + jitter_s", loop.pose_delay_s + loop.jitter_s,
                "below the period");
@@ -170,7 +182,8 @@ std::array<double, 2> StepError(const LoopTimingParams& p, double step_m, std::u
                                 std::uint64_t index) {
   if (p.step_error_relative <= 0) return {0, 0};
   const std::uint64_t c = EffectCounter(EffectStream::kStepError, index);
-  const double sigma_m = p.step_error_relative * step_m;
+  double sigma_m = p.step_error_relative * step_m;
+  if (p.step_error_max_mm > 0) sigma_m = std::min(sigma_m, p.step_error_max_mm * 1e-3);
   return {sigma_m * EffectGaussian(seed, c, 0), sigma_m * EffectGaussian(seed, c, 1)};
 }
 

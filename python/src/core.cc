@@ -94,8 +94,9 @@ ModelPtr Load(const std::string& scene) {
   return m;
 }
 
+// effects: "default" (the fitted set), "off" or key=value,... (as --effects).
 TrialConfig MakeConfig(double pref, double beta, double step_mm, std::uint64_t seed,
-                       const std::string& object, std::string* scene) {
+                       const std::string& object, const std::string& effects, std::string* scene) {
   TrialConfig config;
   config.law.p_ref_pa = pref;
   config.law.beta = beta;
@@ -115,6 +116,7 @@ TrialConfig MakeConfig(double pref, double beta, double step_mm, std::uint64_t s
             .string();
     config = ObjectTrialConfig(spec, config.law, seed);
   }
+  if (std::string e; !ParseRobotEffects(effects, &config.effects, &e)) Fail(e);
   if (const std::string e = config.Validate(); !e.empty()) Fail(e);
   return config;
 }
@@ -272,9 +274,10 @@ nb::dict CellsDict(const std::vector<CellScore>& cells) {
 class SteppedTrial {
  public:
   SteppedTrial(const std::string& scene, double pref, double beta, double step_mm,
-               std::uint64_t seed, const std::string& object, double timeout_s) {
+               std::uint64_t seed, const std::string& object, double timeout_s,
+               const std::string& effects) {
     scene_ = scene;
-    config_ = MakeConfig(pref, beta, step_mm, seed, object, &scene_);
+    config_ = MakeConfig(pref, beta, step_mm, seed, object, effects, &scene_);
     if (timeout_s > 0) config_.timeout_s = timeout_s;
     if (const std::string e = config_.Validate(); !e.empty()) Fail(e);
     model_ = Load(scene_);
@@ -386,9 +389,10 @@ NB_MODULE(_core, m) {
   m.def(
       "run_trial",
       [](const std::string& scene, double pref, double beta, double step_mm, std::uint64_t seed,
-         const std::string& object, bool keep_log, double stop_at_s, double timeout_s) {
+         const std::string& object, bool keep_log, double stop_at_s, double timeout_s,
+         const std::string& effects) {
         std::string scene_path = scene;
-        TrialConfig config = MakeConfig(pref, beta, step_mm, seed, object, &scene_path);
+        TrialConfig config = MakeConfig(pref, beta, step_mm, seed, object, effects, &scene_path);
         if (timeout_s > 0) config.timeout_s = timeout_s;
         if (const std::string e = config.Validate(); !e.empty()) Fail(e);
         ModelPtr model = Load(scene_path);
@@ -407,7 +411,9 @@ NB_MODULE(_core, m) {
       },
       "scene"_a = "disk_benchmark", "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 7.5,
       "seed"_a = 1, "object"_a = "", "keep_log"_a = true, "stop_at_s"_a = 0.0, "timeout_s"_a = 0.0,
-      "One contour-following trial, as `ssc trial` runs it. object: a test object by name "
+      "effects"_a = "default",
+      "One contour-following trial, as `ssc trial` runs it. effects: 'default' (the fitted set), "
+      "'off' or key=value,... as --effects. object: a test object by name "
       "(its arm scene; 'gantry' in scene picks the gantry one).");
 
   m.def(
@@ -590,9 +596,9 @@ NB_MODULE(_core, m) {
   m.def(
       "write_robot_log",
       [](const std::string& dir, const std::string& scene, double pref, double beta, double step_mm,
-         std::uint64_t seed) {
+         std::uint64_t seed, const std::string& effects) {
         std::string scene_path = scene;
-        const TrialConfig config = MakeConfig(pref, beta, step_mm, seed, "", &scene_path);
+        const TrialConfig config = MakeConfig(pref, beta, step_mm, seed, "", effects, &scene_path);
         ModelPtr model = Load(scene_path);
         std::string error;
         TrialResult r;
@@ -607,14 +613,15 @@ NB_MODULE(_core, m) {
         return std::string(OutcomeName(r.outcome));
       },
       "dir"_a, "scene"_a = "disk_benchmark", "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 7.5,
-      "seed"_a = 1, "Runs a trial and writes it as a lab recording (ssc trial --robot-log).");
+      "seed"_a = 1, "effects"_a = "default",
+      "Runs a trial and writes it as a lab recording (ssc trial --robot-log).");
 
   nb::class_<SteppedTrial>(m, "SteppedTrial",
                            "A trial stepped one control iteration at a time from Python.")
       .def(nb::init<const std::string&, double, double, double, std::uint64_t, const std::string&,
-                    double>(),
+                    double, const std::string&>(),
            "scene"_a = "disk_benchmark_gantry", "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 7.5,
-           "seed"_a = 1, "object"_a = "", "timeout_s"_a = 0.0)
+           "seed"_a = 1, "object"_a = "", "timeout_s"_a = 0.0, "effects"_a = "default")
       .def("reset", &SteppedTrial::Reset, "seed"_a)
       .def("set_external_policy", &SteppedTrial::SetExternalPolicy, "on"_a,
            "On: each following iteration waits for apply_step instead of taking the law's step.")

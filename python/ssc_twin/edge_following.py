@@ -41,7 +41,7 @@ class EdgeFollowingEnv(gym.Env):
     metadata = {"render_modes": []}
 
     def __init__(self, objects=None, include_ft=False, max_step_mm=10.0, pref=100.0, beta=2.0,
-                 failure_penalty=10.0, terminal_reward=10.0, timeout_s=None):
+                 failure_penalty=10.0, terminal_reward=10.0, timeout_s=None, effects="default"):
         super().__init__()
         # None: the disk benchmark scene; else test objects by name, one drawn per episode.
         self.objects = [None] if not objects else list(objects)
@@ -55,6 +55,9 @@ class EdgeFollowingEnv(gym.Env):
         self.pref, self.beta = float(pref), float(beta)
         self.failure_penalty, self.terminal_reward = float(failure_penalty), float(terminal_reward)
         self.timeout_s = float(timeout_s) if timeout_s else 0.0
+        # The robot effects (docs/fidelity.md): "default" (the fitted set: each step lands off
+        # target), "off" (the ideal loop) or "key=value,...".
+        self.effects = str(effects)
         n = 10 if self.include_ft else 4
         low = np.full(n, PRESSURE_LOW_PA, dtype=np.float32)
         high = np.full(n, PRESSURE_HIGH_PA, dtype=np.float32)
@@ -71,7 +74,8 @@ class EdgeFollowingEnv(gym.Env):
     def _trial_for(self, name):
         if name not in self._trials:
             t = _core.SteppedTrial(scene="disk_benchmark_gantry", pref=self.pref, beta=self.beta,
-                                   step_mm=7.5, seed=1, object=name or "", timeout_s=self.timeout_s)
+                                   step_mm=7.5, seed=1, object=name or "", timeout_s=self.timeout_s,
+                                   effects=self.effects)
             t.set_external_policy(True)
             self._trials[name] = t
         return self._trials[name]

@@ -169,7 +169,8 @@ class PackageTest(unittest.TestCase):
     def test_compare_replays_a_twin_log(self):
         import ssc_twin
         log_dir = os.path.join(self.tmp, "robot_log")
-        self.assertEqual(ssc_twin.write_robot_log(log_dir, seed=2), "success")
+        # The ideal loop (effects off): the replay is compared with a run it can reproduce.
+        self.assertEqual(ssc_twin.write_robot_log(log_dir, seed=2, effects="off"), "success")
         c = ssc_twin.compare(log_dir, out_dir=os.path.join(self.tmp, "compare"))
         self.assertEqual(c["sim_pa"].shape, c["log_pa"].shape)
         self.assertGreater(c["sim_pa"].shape[0], 100)
