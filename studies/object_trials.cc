@@ -32,14 +32,17 @@ TrialConfig ObjectTrialConfig(const ObjectSpec& spec, const ContourLawParams& la
 }
 
 ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,
-                              const ContourLawParams& law, std::uint64_t seed, bool keep_log) {
+                              const ContourLawParams& law, const RobotEffectsParams& effects,
+                              std::uint64_t seed, bool keep_log) {
   ObjectTrialRow row;
   row.object = spec.name;
   row.kind = ObjectKindName(spec.kind);
   row.param = spec.param;
   row.seed = seed;
   std::string error;
-  row.result = RunTrial(model, ObjectTrialConfig(spec, law, seed), keep_log, &error);
+  TrialConfig config = ObjectTrialConfig(spec, law, seed);
+  config.effects = effects;
+  row.result = RunTrial(model, config, keep_log, &error);
   const double steps = row.result.sim_time_s / model->opt.timestep;
   row.step_cost_us = steps > 0 ? row.result.wall_time_s / steps * 1e6 : 0;
   if (spec.closed()) {

@@ -28,9 +28,11 @@ struct ObjectTrialRow {
   double step_cost_us = 0;           // wall time per physics step of this trial
 };
 
-// Runs one object trial on `model` (a scene written by WriteObjectScenes).
+// Runs one object trial on `model` (a scene written by WriteObjectScenes) with `effects` (the
+// robot effects; the twin's defaults are FittedRobotEffects()).
 ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,
-                              const ContourLawParams& law, std::uint64_t seed, bool keep_log);
+                              const ContourLawParams& law, const RobotEffectsParams& effects,
+                              std::uint64_t seed, bool keep_log);
 
 std::string ObjectTableHeader();
 std::string ObjectTableRow(const ObjectTrialRow& row);

@@ -576,7 +576,7 @@ void ExpectOutcome(const char* name, Outcome expected, double goal_arc_m = -1) {
   ASSERT_TRUE(l.m);
   ContourLawParams law;
   law.step_mm = 0.5;
-  const ObjectTrialRow row = RunObjectTrial(l.m.get(), spec, law, 1, false);
+  const ObjectTrialRow row = RunObjectTrial(l.m.get(), spec, law, FittedRobotEffects(), 1, false);
   EXPECT_EQ(row.result.outcome, expected)
       << name << ": " << OutcomeName(row.result.outcome) << ", " << row.result.detail;
   EXPECT_LT(row.result.metrics.contour_mean_mm, 5.0) << name;
@@ -597,7 +597,7 @@ TEST(ObjectTrialsTest, DiskSmallerThanTheOpeningIsNotFollowed) {
   ASSERT_TRUE(l.m);
   ContourLawParams law;
   law.step_mm = 0.5;
-  const ObjectTrialRow row = RunObjectTrial(l.m.get(), spec, law, 1, false);
+  const ObjectTrialRow row = RunObjectTrial(l.m.get(), spec, law, FittedRobotEffects(), 1, false);
   EXPECT_NE(row.result.outcome, Outcome::kSuccess) << row.result.detail;
 }
 TEST(ObjectTrialsTest, FilletSharpEnd) { ExpectOutcome("fillet", Outcome::kSuccess, 0.040); }

@@ -32,13 +32,15 @@ int RunObjectsCommand(int argc, char** argv) {
   cmd.Choice("scene-kind", &kind, "'gantry' (light, for tables) or 'arm' (the UR-10 scenes)",
              {"gantry", "arm"});
   AddLawOptions(&cmd, &law);
+  ObjectStudySpec spec;
+  std::string effects_text = "default";
+  AddEffectsOption(&cmd, "robot effects (docs/fidelity.md)", &effects_text, &spec.effects);
   cmd.Integer("threads", &threads, "worker threads", NumberRange::Closed(1, 256));
   cmd.OutputDir("out", &out_dir, "output directory (scenes in OUT/scenes)");
   cmd.Flag("write-only", &write_only, "only write the scenes");
   cmd.Flag("no-plot", &no_plot, "skip the PNG plot");
   cmd.Check([&law]() { return law.Validate(); });
   if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
-  ObjectStudySpec spec;
   if (std::string e; !ObjectsByNames(names, &spec.objects, &e)) return cmd.Fail("--objects: " + e);
   spec.seeds = static_cast<int>(seeds);
   spec.seed = seed;

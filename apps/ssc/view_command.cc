@@ -61,7 +61,9 @@ int RunViewCommand(int argc, char** argv) {
             .string();
     const ContourLawParams law = v.config.law;
     const std::uint64_t run_seed = v.config.seed;
+    const RobotEffectsParams effects = v.config.effects;  // --effects holds on objects too
     v.config = ObjectTrialConfig(spec, law, run_seed);
+    v.config.effects = effects;
   }
   v.create_outputs = [&cmd]() { return cmd.CreateOutputs(); };
   return RunViewer(v);
