@@ -34,8 +34,8 @@ struct WanderFit {
 // False + *error on read or load failure.
 // `effects`: the robot effects its trials run with (the twin's defaults in ssc calibrate).
 bool FitWander(const std::string& scene, const std::vector<WanderTarget>& targets, double step_mm,
-               const RobotEffectsParams& effects, int seeds, int max_evaluations, double noise0, double lag0, WanderFit* fit,
-               std::string* error);
+               const RobotEffectsParams& effects, int seeds, int max_evaluations, double noise0,
+               double lag0, WanderFit* fit, std::string* error);
 
 // params.json of ssc calibrate: the static fit (cost, parameters, targets published vs model)
 // and, when given, the wander fit (noise_pa, lag_ms, cost). One JSON object.

@@ -72,7 +72,9 @@ bool RunObjectStudy(const ObjectStudySpec& spec,
   JobSet set;
   set.count = jobs.size();
   set.cost = [&](size_t j) {  // the follow timeout grows with the edge to follow
-    return ObjectTrialConfig(spec.objects[jobs[j].object], spec.law, 1).timeout_s;
+    TrialConfig base;
+    base.law = spec.law;
+    return ObjectTrialConfig(spec.objects[jobs[j].object], base).timeout_s;
   };
   // One job: its table row, after a line for the progress report.
   set.run = [&](size_t j) {

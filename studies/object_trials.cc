@@ -3,16 +3,16 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <utility>
 
 namespace ssc {
 
-TrialConfig ObjectTrialConfig(const ObjectSpec& spec, const ContourLawParams& law,
-                              std::uint64_t seed) {
-  TrialConfig c;
-  c.law = law;
-  c.seed = seed;
+TrialConfig ObjectTrialConfig(const ObjectSpec& spec, TrialConfig base) {
+  TrialConfig c = std::move(base);
+  const ContourLawParams& law = c.law;
   const ObjectTrialSetup& setup = spec.trial;
   TrialTarget& t = c.target;
+  t = TrialTarget();  // the object's, not the disk's
   t.approach = setup.landing_xy_m;
   t.start = setup.start_xy_m;
   t.goal = setup.goal;
@@ -40,9 +40,11 @@ ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,
   row.param = spec.param;
   row.seed = seed;
   std::string error;
-  TrialConfig config = ObjectTrialConfig(spec, law, seed);
-  config.effects = effects;
-  row.result = RunTrial(model, config, keep_log, &error);
+  TrialConfig base;
+  base.law = law;
+  base.seed = seed;
+  base.effects = effects;
+  row.result = RunTrial(model, ObjectTrialConfig(spec, base), keep_log, &error);
   const double steps = row.result.sim_time_s / model->opt.timestep;
   row.step_cost_us = steps > 0 ? row.result.wall_time_s / steps * 1e6 : 0;
   if (spec.closed()) {

@@ -11,11 +11,10 @@
 
 namespace ssc {
 
-// Trial settings for an object from its ObjectTrialSetup (landing and start points, goal) and
-// exact edge (metrics, tracked arc position), with a follow timeout from the edge length at the
-// expected speed.
-TrialConfig ObjectTrialConfig(const ObjectSpec& spec, const ContourLawParams& law,
-                              std::uint64_t seed);
+// Trial settings for an object: `base` (its law, seed, effects, loop and servo) with the target
+// from the object's ObjectTrialSetup (landing and start points, goal) and exact edge (metrics,
+// tracked arc position), and a follow timeout from the edge length at the expected speed.
+TrialConfig ObjectTrialConfig(const ObjectSpec& spec, TrialConfig base);
 
 struct ObjectTrialRow {
   std::string object, kind;

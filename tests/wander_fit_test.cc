@@ -18,11 +18,11 @@ TEST(WanderFitTest, FitsOnATinyBudgetAndImprovesOnTheInitialSimplex) {
   std::string error;
   WanderFit start, fit;
   // Budget 1: only the initial simplex is evaluated.
-  ASSERT_TRUE(FitWander(SourceDir() + "/scenes/disk_benchmark_gantry.xml", targets, 5.0, RobotEffectsParams(), 1, 1, 6.0,
-                        20.0, &start, &error))
+  ASSERT_TRUE(FitWander(SourceDir() + "/scenes/disk_benchmark_gantry.xml", targets, 5.0,
+                        RobotEffectsParams(), 1, 1, 6.0, 20.0, &start, &error))
       << error;
-  ASSERT_TRUE(FitWander(SourceDir() + "/scenes/disk_benchmark_gantry.xml", targets, 5.0, RobotEffectsParams(), 1, 6, 6.0,
-                        20.0, &fit, &error))
+  ASSERT_TRUE(FitWander(SourceDir() + "/scenes/disk_benchmark_gantry.xml", targets, 5.0,
+                        RobotEffectsParams(), 1, 6, 6.0, 20.0, &fit, &error))
       << error;
   ASSERT_EQ(fit.model.size(), 1u);
   EXPECT_TRUE(std::isfinite(fit.model[0].sigma_r_mm) && std::isfinite(fit.model[0].s_c));

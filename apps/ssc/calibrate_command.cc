@@ -200,7 +200,8 @@ int RunCalibrateCommand(int argc, char** argv) {
     WanderFit w;
     const std::vector<WanderTarget> targets = PublishedWanderTargets();
     if (!FitWander(SourceDir() + "/scenes/disk_benchmark_gantry.xml", targets, step,
-                   dyn_base.effects, static_cast<int>(seeds), static_cast<int>(evals), 6.0, 20.0, &w, &error)) {
+                   dyn_base.effects, static_cast<int>(seeds), static_cast<int>(evals), 6.0, 20.0,
+                   &w, &error)) {
       std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
       return 1;
     }

@@ -59,11 +59,7 @@ int RunViewCommand(int argc, char** argv) {
     v.scene_path =
         std::filesystem::absolute(std::filesystem::path(dir) / ObjectFileNames(spec.name).arm_scene)
             .string();
-    const ContourLawParams law = v.config.law;
-    const std::uint64_t run_seed = v.config.seed;
-    const RobotEffectsParams effects = v.config.effects;  // --effects holds on objects too
-    v.config = ObjectTrialConfig(spec, law, run_seed);
-    v.config.effects = effects;
+    v.config = ObjectTrialConfig(spec, v.config);  // the options hold on objects too
   }
   v.create_outputs = [&cmd]() { return cmd.CreateOutputs(); };
   return RunViewer(v);

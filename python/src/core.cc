@@ -114,7 +114,7 @@ TrialConfig MakeConfig(double pref, double beta, double step_mm, std::uint64_t s
     *scene =
         (dir / (scene->find("gantry") != std::string::npos ? files.gantry_scene : files.arm_scene))
             .string();
-    config = ObjectTrialConfig(spec, config.law, seed);
+    config = ObjectTrialConfig(spec, config);
   }
   if (std::string e; !ParseRobotEffects(effects, &config.effects, &e)) Fail(e);
   if (const std::string e = config.Validate(); !e.empty()) Fail(e);
