@@ -67,7 +67,8 @@ struct TrialConfig {
   std::uint64_t seed = 1;        // sensor noise seed for this trial
   double log_period_s = 0.02;    // path sampling for metrics and the log
   // The real loop, lip and sensors (controller/pure/robot_effects.h): the fitted set by
-  // default (each step lands off target); all zero (`--effects off`) = the ideal loop.
+  // default (each step lands off target; each chamber keeps a tare offset); all zero
+  // (`--effects off`) = the ideal loop.
   RobotEffectsParams effects = FittedRobotEffects();
 
   // Empty when valid, else names the field and its range.

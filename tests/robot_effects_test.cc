@@ -195,17 +195,19 @@ TEST(StepErrorTest, TheCapBoundsTheErrorOfLongStepsAndLeavesShortStepsTheirShare
   EXPECT_NE(e.Validate(0.25).find("step_error_max_mm"), std::string::npos);
 }
 
-TEST(StepErrorTest, TheFittedDefaultIsTheStepErrorAloneAndOffSwitchesItOff) {
+TEST(StepErrorTest, TheFittedDefaultIsTheStepErrorAndTheTareOffsetAndOffSwitchesThemOff) {
   RobotEffectsParams p = FittedRobotEffects();
   EXPECT_EQ(p.Validate(0.15), "");
   EXPECT_TRUE(p.AnyOn());
   EXPECT_GT(p.loop.step_error_relative, 0);
   EXPECT_GT(p.loop.step_error_max_mm, 0);
+  EXPECT_GT(p.chambers.offset_spread_pa, 0);
   // Nothing else: the fit put the peel at 0.02 decades, and no other effect was fitted on.
-  RobotEffectsParams only_step;
-  only_step.loop.step_error_relative = p.loop.step_error_relative;
-  only_step.loop.step_error_max_mm = p.loop.step_error_max_mm;
-  EXPECT_EQ(FormatRobotEffects(p), FormatRobotEffects(only_step));
+  RobotEffectsParams fitted_only;
+  fitted_only.loop.step_error_relative = p.loop.step_error_relative;
+  fitted_only.loop.step_error_max_mm = p.loop.step_error_max_mm;
+  fitted_only.chambers.offset_spread_pa = p.chambers.offset_spread_pa;
+  EXPECT_EQ(FormatRobotEffects(p), FormatRobotEffects(fitted_only));
   std::string error;
   ASSERT_TRUE(ParseRobotEffects("off", &p, &error)) << error;
   EXPECT_FALSE(p.AnyOn());

@@ -133,6 +133,7 @@ RobotEffectsParams FittedRobotEffects() {
   RobotEffectsParams p;
   p.loop.step_error_relative = 0.38;
   p.loop.step_error_max_mm = 1.34;
+  p.chambers.offset_spread_pa = 7.9;
   return p;
 }
 
