@@ -6,7 +6,8 @@ the high P_ref x beta corner where the robot grasped, and controls the robot pas
 three published outcomes beside the map (the pilot at dL 2.5 mm; P_ref 100 / beta 2 at dL 2.5 and
 7.5 mm) and beta 0.5 at dL 2.5 and 7.5 mm (the reference says beta <= 0.5 always failed). Every
 configuration runs `ssc validate` with the same seeds (common random numbers); one line per
-configuration lists each cell as step/beta/P_ref:published>twin successes and main failure mode.
+configuration gives how many cells land in their published class (successes scaled to 3 trials),
+then each cell as step/beta/P_ref:published>twin successes and main failure mode.
 
   tools/fidelity_probe.py --out out/probe --seeds 3 \
       r1_tilt0.3="--effects slip_mm=1,tilt_decades=0.3" \
@@ -33,13 +34,20 @@ CELLS = [
 MODE = {"failure_I": "I", "failure_II": "II", "timeout": "T", "unstable": "U"}
 
 
+def in_class(published, successes, trials):
+    """The twin's successes, scaled to 3 trials, land in the published class ('3', '2', '<=1')."""
+    k = round(3 * successes / trials)
+    return {"3": k == 3, "2": k == 2, "<=1": k <= 1}[published]
+
+
 def line(name, out):
-    cells = []
+    cells, hits = [], 0
     with open(os.path.join(out, "cells.csv")) as f:
         for r in csv.DictReader(f):
+            hits += in_class(r["published"], int(r["successes"]), int(r["trials"]))
             cells.append(f"{float(r['step_mm']):g}/{float(r['beta']):g}/{float(r['pref_pa']):g}:"
                          f"{r['published']}>{r['successes']}{MODE.get(r['main_failure'], '')}")
-    return name + " " + " ".join(cells)
+    return f"{name} in-class {hits}/{len(cells)} " + " ".join(cells)
 
 
 def main():
