@@ -22,6 +22,10 @@ using Vec3 = std::array<double, 3>;
 inline std::array<double, 2> WorldToTool(const mjtNum* R, double wx, double wy) {
   return {R[0] * wx + R[3] * wy, R[1] * wx + R[4] * wy};
 }
+// The inverse: a tool-frame x/y displacement (a step) in world x/y.
+inline std::array<double, 2> ToolToWorld(const mjtNum* R, double tx, double ty) {
+  return {R[0] * tx + R[1] * ty, R[3] * tx + R[4] * ty};
+}
 
 struct ServoParams {
   // First-order smoothing of the commanded tool position toward the target, s: the UR servoL

@@ -451,8 +451,7 @@ std::array<double, 2> ContourTrial::LandedStepWorld(std::array<double, 2> step) 
     step = {step[0] + e[0], step[1] + e[1]};
   }
   // Tool frame -> world with the tool site's rotation (orientation is held).
-  const mjtNum* R = d_->site_xmat + 9 * tool_site_;
-  return {R[0] * step[0] + R[1] * step[1], R[3] * step[0] + R[4] * step[1]};
+  return ToolToWorld(d_->site_xmat + 9 * tool_site_, step[0], step[1]);
 }
 
 void ContourTrial::ApplyStep(const std::array<double, 2>& step_m) {

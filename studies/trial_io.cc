@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "controller/pure/robot_effects.h"
+
 namespace ssc {
 namespace {
 
@@ -77,7 +79,8 @@ bool WriteTrialSummaryJson(const std::string& path, const std::string& scene, co
                      {"approach_force_n", num(c.approach_force_n)},
                      {"start_x_mm", num(c.target.start[0] * 1e3)},
                      {"start_y_mm", num(c.target.start[1] * 1e3)},
-                     {"timeout_s", num(c.timeout_s)}};
+                     {"timeout_s", num(c.timeout_s)},
+                     {"effects", FormatRobotEffects(c.effects)}};
   j["seed"] = c.seed;
   j["outcome"] = OutcomeName(r.outcome);
   j["detail"] = r.detail;
