@@ -51,17 +51,22 @@ double Cost(const std::vector<FitTarget>& targets) {
 
 }  // namespace
 
-std::vector<FitTarget> EvaluatePublishedTargets(const PneumaticModel& m) {
-  std::vector<FitTarget> t = {{"offset_at_40pa_mm", "mm", 0.7, 0.1},
-                              {"offset_at_100pa_mm", "mm", 2.5, 0.1},
-                              {"offset_at_200pa_mm", "mm", 3.2, 0.1},
+double StaticMeanVacuum(const PneumaticModel& model, double offset_m) {
+  return Mean(Taps(model, offset_m));
+}
+
+std::vector<FitTarget> EvaluatePublishedTargets(const PneumaticModel& m,
+                                                const StaticDepthPressures& depth_pa) {
+  std::vector<FitTarget> t = {{"offset_at_40pa_mm", "mm", kDepthTargetOffsetMm[0], 0.1},
+                              {"offset_at_100pa_mm", "mm", kDepthTargetOffsetMm[1], 0.1},
+                              {"offset_at_200pa_mm", "mm", kDepthTargetOffsetMm[2], 0.1},
                               {"differential_at_100pa_pa", "Pa", 200, 20},
                               {"air_mean_pa", "Pa", 4, 1},
                               {"plate_min_pa", "Pa", 20000, 1000}};
-  const double d100 = OffsetFor(m, 100);
-  t[0].model = OffsetFor(m, 40) * 1e3;
+  const double d100 = OffsetFor(m, depth_pa[1]);
+  t[0].model = OffsetFor(m, depth_pa[0]) * 1e3;
   t[1].model = d100 * 1e3;
-  t[2].model = OffsetFor(m, 200) * 1e3;
+  t[2].model = OffsetFor(m, depth_pa[2]) * 1e3;
   const auto p = Taps(m, d100);
   t[3].model = std::hypot(0.5 * (p[1] + p[2]) - 0.5 * (p[0] + p[3]),
                           0.5 * (p[2] + p[3]) - 0.5 * (p[0] + p[1]));
@@ -71,17 +76,34 @@ std::vector<FitTarget> EvaluatePublishedTargets(const PneumaticModel& m) {
   return t;
 }
 
-PneumaticFit FitPublishedTargets(const PneumaticModel& start) {
+StaticDepthPressures NextDepthPressures(const PneumaticModel& model,
+                                        const StaticDepthPressures& current,
+                                        const std::array<double, 3>& loop_dr_mm) {
+  StaticDepthPressures next = current;
+  for (int k = 0; k < 3; ++k) {
+    const double at_target = StaticMeanVacuum(model, kDepthTargetOffsetMm[k] * 1e-3);
+    const double at_loop = StaticMeanVacuum(model, -loop_dr_mm[k] * 1e-3);
+    // The loop settles where the static curve reads what it reads at the loop's depth; ask the
+    // next curve to read that at the published depth.
+    double factor = at_target > 0 ? at_loop / at_target : 2.0;
+    if (!std::isfinite(factor)) factor = 1.0;
+    next[k] = current[k] * std::clamp(factor, 0.5, 2.0);
+  }
+  return next;
+}
+
+PneumaticFit FitPublishedTargets(const PneumaticModel& start,
+                                 const StaticDepthPressures& depth_pa) {
   const std::vector<double> x0 = {
       std::log(start.pneumatics.pump_free_flow_m3_s), std::log(start.pneumatics.port_area_m2),
       std::log(start.pneumatics.jet_area_m2), std::log(start.geometry.lip_roughness_gap_m)};
   auto f = [&](const std::vector<double>& x) {
-    return Cost(EvaluatePublishedTargets(WithLog(start, x)));
+    return Cost(EvaluatePublishedTargets(WithLog(start, x), depth_pa));
   };
   const NelderMeadResult r = NelderMead(f, x0, {0.3, 0.3, 0.3, 0.3}, 1e-10, 1500);
   PneumaticFit fit;
   fit.model = WithLog(start, r.x);
-  fit.targets = EvaluatePublishedTargets(fit.model);
+  fit.targets = EvaluatePublishedTargets(fit.model, depth_pa);
   fit.cost = Cost(fit.targets);
   fit.evaluations = r.evaluations;
   const char* keys[4] = {"pump_free_flow_lpm", "port_area_mm2", "jet_area_mm2", "lip_roughness_um"};

@@ -5,6 +5,7 @@
 #ifndef SSC_CALIBRATION_PNEUMATIC_FIT_H_
 #define SSC_CALIBRATION_PNEUMATIC_FIT_H_
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -40,11 +41,36 @@ struct PneumaticFit {
   int evaluations = 0;
 };
 
-// Evaluates the targets for a model (fills FitTarget::model).
-std::vector<FitTarget> EvaluatePublishedTargets(const PneumaticModel& model);
+// The published P_ref of the three depth targets, and where the cup rode at each (mm inside the
+// disk edge, the published -dr at beta 1.5).
+inline constexpr std::array<double, 3> kDepthTargetPrefPa = {40, 100, 200};
+inline constexpr std::array<double, 3> kDepthTargetOffsetMm = {0.7, 2.5, 3.2};
+
+// The static mean vacuum the depth targets ask for at those offsets. The published depths are
+// closed-loop results: P_ref is where the loop aims, not necessarily what the static probe reads
+// where the cup rode. By default the two are taken equal (the open-loop reading); a closed-loop
+// calibration (studies/loop_calibration.h) moves them to what the twin's loop actually settles on.
+using StaticDepthPressures = std::array<double, 3>;
+inline constexpr StaticDepthPressures kOpenLoopDepthPressures = kDepthTargetPrefPa;
+
+// Evaluates the targets for a model (fills FitTarget::model): the offsets where the static mean
+// vacuum is `depth_pa`, the differential at the middle one.
+std::vector<FitTarget> EvaluatePublishedTargets(
+    const PneumaticModel& model, const StaticDepthPressures& depth_pa = kOpenLoopDepthPressures);
 
 // Fits pump free flow, port area, jet area and lip roughness (log scale) from `start`.
-PneumaticFit FitPublishedTargets(const PneumaticModel& start);
+PneumaticFit FitPublishedTargets(const PneumaticModel& start,
+                                 const StaticDepthPressures& depth_pa = kOpenLoopDepthPressures);
+
+// Static mean vacuum with the cup centre `offset_m` inside a straight sharp edge, Pa.
+double StaticMeanVacuum(const PneumaticModel& model, double offset_m);
+
+// The next static pressures of a closed-loop calibration (studies/loop_calibration.h): each q
+// scaled by Pstatic(loop depth) / Pstatic(published depth) on the iteration's fitted model, the factor
+// clamped to [0.5, 2] so one noisy iteration cannot throw the fit far.
+StaticDepthPressures NextDepthPressures(const PneumaticModel& model,
+                                        const StaticDepthPressures& current,
+                                        const std::array<double, 3>& loop_dr_mm);
 
 }  // namespace ssc
 

@@ -52,5 +52,50 @@ TEST(PneumaticFitTest, RecoversTheTargetsFromAPerturbedStart) {
   EXPECT_EQ(fit.parameters[0].key, "pump_free_flow_lpm");
 }
 
+TEST(PneumaticFitTest, DepthPressuresReadAtThePublishedOffsetsGiveThoseOffsets) {
+  const PneumaticModel m;
+  StaticDepthPressures q{};
+  for (int k = 0; k < 3; ++k) q[k] = StaticMeanVacuum(m, kDepthTargetOffsetMm[k] * 1e-3);
+  // The static curve rises inward: deeper reads more vacuum.
+  EXPECT_LT(q[0], q[1]);
+  EXPECT_LT(q[1], q[2]);
+  const std::vector<FitTarget> t = EvaluatePublishedTargets(m, q);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(t[k].model, kDepthTargetOffsetMm[k], 1e-3) << t[k].name;
+}
+
+TEST(PneumaticFitTest, FitsMovedDepthPressuresThatAnotherPumpDraws) {
+  // A curve the model can draw: the pressures a 30 % weaker pump reads at the published offsets.
+  PneumaticModel weak;
+  weak.pneumatics.pump_free_flow_m3_s *= 0.7;
+  StaticDepthPressures q{};
+  for (int k = 0; k < 3; ++k) q[k] = StaticMeanVacuum(weak, kDepthTargetOffsetMm[k] * 1e-3);
+  const PneumaticModel defaults;
+  ASSERT_GT(std::fabs(q[1] - StaticMeanVacuum(defaults, 2.5e-3)), 10.0);  // the curves differ
+  const PneumaticFit fit = FitPublishedTargets(defaults, q);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(fit.targets[k].model, kDepthTargetOffsetMm[k], 0.3) << fit.targets[k].name;
+  }
+}
+
+TEST(PneumaticFitTest, NextDepthPressuresMoveTowardWhereTheLoopRode) {
+  const PneumaticModel m;
+  const StaticDepthPressures q = kOpenLoopDepthPressures;
+  // The loop rode at the published depths: nothing moves.
+  const StaticDepthPressures same = NextDepthPressures(m, q, {-0.7, -2.5, -3.2});
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(same[k], q[k], 1e-9 * q[k]);
+  // Deeper than published at 40 Pa, shallower at 200 Pa: the next curve must read more at 0.7 mm
+  // and less at 3.2 mm, by the static ratio between the two depths (hand value from the curve).
+  const StaticDepthPressures next = NextDepthPressures(m, q, {-1.2, -2.5, -3.0});
+  const double ratio40 = StaticMeanVacuum(m, 1.2e-3) / StaticMeanVacuum(m, 0.7e-3);
+  EXPECT_GT(ratio40, 1.0);
+  EXPECT_NEAR(next[0], q[0] * ratio40, 1e-9 * q[0]);
+  EXPECT_NEAR(next[1], q[1], 1e-9 * q[1]);
+  EXPECT_LT(next[2], q[2]);
+  // A loop far off the curve (off the edge) moves a pressure by at most a factor of two.
+  const StaticDepthPressures wild = NextDepthPressures(m, q, {-6.0, 3.0, -3.2});
+  EXPECT_DOUBLE_EQ(wild[0], 2 * q[0]);
+  EXPECT_DOUBLE_EQ(wild[1], 0.5 * q[1]);
+}
+
 }  // namespace
 }  // namespace ssc

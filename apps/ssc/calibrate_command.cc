@@ -12,6 +12,7 @@
 #include "controller/pure/robot_effects.h"
 #include "runtime/mujoco_model.h"
 #include "studies/dynamic_calibration.h"
+#include "studies/loop_calibration.h"
 #include "studies/success_map_fit.h"
 #include "studies/tool_variants.h"
 #include "studies/validation.h"
@@ -72,6 +73,17 @@ int RunCalibrateCommand(int argc, char** argv) {
   cmd.Number("dynamic-metric-weight", &dyn_weight,
              "weight of the Fig. 6 targets against the map's log-loss", "",
              NumberRange::Closed(0, 100));
+  std::string scene = "disk_benchmark_gantry";
+  cmd.Text("scene", &scene,
+           "disk scene for --dynamic and --closed-loop (name under scenes/ or a path)");
+  long loop_iterations = 0, loop_seeds = 10;
+  cmd.Integer("closed-loop", &loop_iterations,
+              "fit the static curve so that the twin's own loop (beta 1.5, dL 5 mm, gantry, "
+              "--effects) rides at the published depths: this many iterations of static fit + "
+              "loop trials (0 = the open-loop fit: the static probe reads P_ref there)",
+              NumberRange::Closed(0, 50));
+  cmd.Integer("closed-loop-seeds", &loop_seeds, "trials per P_ref per closed-loop iteration",
+              NumberRange::Closed(1, 1000));
   cmd.OutputDir("out", &out_dir, "output directory");
   AddTrialSettingOptions(&cmd, &dyn_base, &settings);
   std::vector<std::string> keys;
@@ -103,7 +115,7 @@ int RunCalibrateCommand(int argc, char** argv) {
     spec.max_evaluations = static_cast<int>(dyn_evals);
     spec.algorithm = dyn_algorithm;
     spec.metric_weight = dyn_weight;
-    ModelPtr model = LoadModel(ResolveScenePath("disk_benchmark_gantry"), &error);
+    ModelPtr model = LoadModel(ResolveScenePath(scene), &error);
     if (!model) {
       std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
       return 1;
@@ -167,7 +179,36 @@ int RunCalibrateCommand(int argc, char** argv) {
   start.pneumatics.port_area_m2 *= scale;
   start.pneumatics.jet_area_m2 *= scale;
   start.geometry.lip_roughness_gap_m *= scale;
-  const PneumaticFit fit = FitPublishedTargets(start);
+  PneumaticFit fit;
+  if (loop_iterations > 0) {
+    LoopCalibrationSpec spec;
+    spec.scene_path = ResolveScenePath(scene);
+    spec.base = dyn_base;
+    spec.seeds = static_cast<int>(loop_seeds);
+    spec.iterations = static_cast<int>(loop_iterations);
+    spec.threads = static_cast<int>(dyn_threads);
+    LoopCalibrationResult loop;
+    if (!CalibrateClosedLoop(
+            spec,
+            [](const std::string& line) {
+              std::printf("%s\n", line.c_str());
+              std::fflush(stdout);
+            },
+            &loop, &error)) {
+      std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
+      return 1;
+    }
+    const LoopCalibrationIteration& best = loop.iterations[static_cast<std::size_t>(loop.best)];
+    const StaticDepthPressures& depth_pa = best.depth_pa;
+    fit = best.fit;
+    std::printf("closed loop: iteration %d kept (rms depth error %.2f mm); static targets %.1f / "
+                "%.1f / %.1f Pa at %.1f / %.1f / %.1f mm\n\n",
+                loop.best + 1, loop.RmsDepthErrorMm(loop.best), depth_pa[0], depth_pa[1],
+                depth_pa[2], kDepthTargetOffsetMm[0], kDepthTargetOffsetMm[1],
+                kDepthTargetOffsetMm[2]);
+  } else {
+    fit = FitPublishedTargets(start);
+  }
   std::printf("%-26s %10s %10s %9s\n", "target", "published", "model", "residual");
   for (const FitTarget& t : fit.targets) {
     std::printf("%-26s %10.3g %10.3g %9.2f  %s\n", t.name.c_str(), t.target, t.model, t.residual(),
