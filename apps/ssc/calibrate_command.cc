@@ -84,10 +84,19 @@ int RunCalibrateCommand(int argc, char** argv) {
               NumberRange::Closed(0, 50));
   cmd.Integer("closed-loop-seeds", &loop_seeds, "trials per P_ref per closed-loop iteration",
               NumberRange::Closed(1, 1000));
+  std::vector<double> depth_list(kOpenLoopDepthPressures.begin(), kOpenLoopDepthPressures.end());
+  cmd.NumberList("depth-pa", &depth_list,
+                 "static mean vacuum the straight-edge probe must read at the published depths "
+                 "0.7, 2.5, 3.2 mm (three values; the open-loop reading is P_ref there; "
+                 "--closed-loop finds them)",
+                 "Pa", NumberRange::Positive(1e5));
   cmd.OutputDir("out", &out_dir, "output directory");
   AddTrialSettingOptions(&cmd, &dyn_base, &settings);
   std::vector<std::string> keys;
   cmd.Check([&]() -> std::string {
+    if (depth_list.size() != 3) return "--depth-pa: three values (Pa at 0.7, 2.5, 3.2 mm)";
+    if (!(depth_list[0] < depth_list[1] && depth_list[1] < depth_list[2]))
+      return "--depth-pa: the values must rise with depth (the covered cup reads more vacuum)";
     if (!dynamic) return "";
     std::string e;
     if (!ParseNameList(dyn_keys, &keys, &e)) return "--dynamic-keys: " + e;
@@ -207,7 +216,7 @@ int RunCalibrateCommand(int argc, char** argv) {
                 depth_pa[2], kDepthTargetOffsetMm[0], kDepthTargetOffsetMm[1],
                 kDepthTargetOffsetMm[2]);
   } else {
-    fit = FitPublishedTargets(start);
+    fit = FitPublishedTargets(start, {depth_list[0], depth_list[1], depth_list[2]});
   }
   std::printf("%-26s %10s %10s %9s\n", "target", "published", "model", "residual");
   for (const FitTarget& t : fit.targets) {
