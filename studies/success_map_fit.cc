@@ -23,6 +23,8 @@ const std::vector<DynamicParameter>& DynamicParameters() {
        [](TrialConfig* c) { return &c->effects.loop.step_error_relative; }},
       {"step_error_max_mm", "mm", 0.3, 3.0,
        [](TrialConfig* c) { return &c->effects.loop.step_error_max_mm; }},
+      {"step_error_corr", "1", 0.0, 0.95,
+       [](TrialConfig* c) { return &c->effects.loop.step_error_corr; }},
       {"slip_mm", "mm", 0.2, 2.0, [](TrialConfig* c) { return &c->effects.lip.slip_mm; }},
       {"tilt_decades", "decades", 0.0, 0.4,
        [](TrialConfig* c) { return &c->effects.lip.tilt_decades; }},

@@ -28,8 +28,8 @@ std::string Bad(const char* field, double v, const std::string& range) {
 
 }  // namespace
 
-const std::array<EffectKey, 12>& EffectKeys() {
-  static const std::array<EffectKey, 12> kKeys = {{
+const std::array<EffectKey, 13>& EffectKeys() {
+  static const std::array<EffectKey, 13> kKeys = {{
       {"jitter_s", "s", 0, 5, "half-width of the uniform jitter of the loop period",
        [](RobotEffectsParams* p) { return &p->loop.jitter_s; }},
       {"pose_delay_s", "s", 0, 10, "pressures read -> pose read (the live plot in between)",
@@ -40,6 +40,9 @@ const std::array<EffectKey, 12>& EffectKeys() {
       {"step_error_max_mm", "mm", 0, 3,
        "cap of that 1-sigma error (the lip's stick-slip; 0 = no cap)",
        [](RobotEffectsParams* p) { return &p->loop.step_error_max_mm; }},
+      {"step_error_corr", "1", 0, 0.95,
+       "correlation of successive steps' landing errors (the arm still settling; 0 = independent)",
+       [](RobotEffectsParams* p) { return &p->loop.step_error_corr; }},
       {"slip_mm", "mm", 0, 3, "lip shear before the footprint slides (0 = no lip drag)",
        [](RobotEffectsParams* p) { return &p->lip.slip_mm; }},
       {"tilt_decades", "decades", 0, 1, "vacuum change of a leading/trailing chamber at full shear",
@@ -146,6 +149,8 @@ std::string RobotEffectsParams::Validate(double period_s) const {
     return Bad("loop step_error_relative", loop.step_error_relative, "[0, 1]");
   if (!In(loop.step_error_max_mm, 0, 3))
     return Bad("loop step_error_max_mm", loop.step_error_max_mm, "[0, 3] mm");
+  if (!In(loop.step_error_corr, 0, 0.95))
+    return Bad("loop step_error_corr", loop.step_error_corr, "[0, 0.95]");
   if (loop.pose_delay_s + loop.jitter_s >= period_s && loop.pose_delay_s > 0)
     return Bad("loop pose_delay_s + jitter_s", loop.pose_delay_s + loop.jitter_s,
                "below the period");
@@ -185,7 +190,20 @@ std::array<double, 2> StepError(const LoopTimingParams& p, double step_m, std::u
   const std::uint64_t c = EffectCounter(EffectStream::kStepError, index);
   double sigma_m = p.step_error_relative * step_m;
   if (p.step_error_max_mm > 0) sigma_m = std::min(sigma_m, p.step_error_max_mm * 1e-3);
-  return {sigma_m * EffectGaussian(seed, c, 0), sigma_m * EffectGaussian(seed, c, 1)};
+  const double rho = p.step_error_corr;
+  if (rho <= 0) return {sigma_m * EffectGaussian(seed, c, 0), sigma_m * EffectGaussian(seed, c, 1)};
+  // u_k = sqrt(1 - rho^2) sum_j rho^j n_{k-j}; the oldest draw (step 0) weighs
+  // rho^k so that u_0 = n_0 and every u_k has unit variance.
+  const double fresh = std::sqrt(1 - rho * rho);
+  std::array<double, 2> u{0, 0};
+  double w = 1;
+  for (std::uint64_t j = 0; j <= index && w >= 1e-6; ++j, w *= rho) {
+    const std::uint64_t cj = EffectCounter(EffectStream::kStepError, index - j);
+    const double weight = j == index ? w : fresh * w;
+    u[0] += weight * EffectGaussian(seed, cj, 0);
+    u[1] += weight * EffectGaussian(seed, cj, 1);
+  }
+  return {sigma_m * u[0], sigma_m * u[1]};
 }
 
 void AdvanceLipShear(const LipShearParams& p, const std::array<double, 2>& body_move_m,

@@ -46,6 +46,13 @@ struct LoopTimingParams {
   // slides by up to its slip length, mu * F_n / k_shear ~ 0.5-3 mm) and the servo's settling at
   // the payload. sigma = min(step_error_relative * step, step_error_max_mm).
   double step_error_max_mm = 0.0;
+  // Correlation of successive steps' landing errors: [0, 0.95]; 0 = independent. The arm is
+  // still settling from one step when the next is added to its measured pose, and the lip's
+  // stick-slip keeps its sense for a while, so the misses persist: error_k = rho * error_{k-1} +
+  // sqrt(1 - rho^2) * fresh draw (an AR(1) with the same 1-sigma). The law removes a
+  // slowly varying miss only as fast as its gain allows, so a persistent miss takes a weak
+  // correction (small beta) further off the edge than a strong one.
+  double step_error_corr = 0.0;
 };
 
 struct LipShearParams {
@@ -98,7 +105,7 @@ struct EffectKey {
   const char* what;
   double* (*field)(RobotEffectsParams*);
 };
-const std::array<EffectKey, 12>& EffectKeys();
+const std::array<EffectKey, 13>& EffectKeys();
 // Parses "key=value,key=value" (or "off": every effect off) onto *p. Values must be whole,
 // finite numbers in the key's range; the error names the key, the value and the range.
 bool ParseRobotEffects(const std::string& text, RobotEffectsParams* p, std::string* error);
@@ -123,9 +130,12 @@ std::uint64_t EffectCounter(EffectStream stream, std::uint64_t index);
 double IterationPeriod(const LoopTimingParams& p, double period_s, std::uint64_t seed,
                        std::uint64_t index);
 
-// The error of step `index`'s end point (tool frame x, y), m: sigma * N(0, 1) per axis, with
+// The error of step `index`'s end point (tool frame x, y), m: sigma * u per axis, with
 // sigma = step_error_relative * step_m capped at step_error_max_mm (when > 0), step_m the step's
-// length.
+// length, and u a unit-variance AR(1) sequence with correlation step_error_corr over the step
+// index (u = N(0, 1) draws when 0). A pure function of (seed, index): u_k is summed from the
+// draws of steps k, k-1, ... with weights sqrt(1 - rho^2) rho^j (the first weight 1 when
+// index = 0: the sequence starts stationary), cut where rho^j < 1e-6.
 std::array<double, 2> StepError(const LoopTimingParams& p, double step_m, std::uint64_t seed,
                                 std::uint64_t index);
 
