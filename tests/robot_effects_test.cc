@@ -169,6 +169,37 @@ TEST(StepErrorTest, EachStepMissesByItsShareOfTheStepIndependentlyPerAxisAndZero
   EXPECT_NEAR(StepError(p, 0.0025, 7, 11)[0], 0.5 * StepError(p, 0.005, 7, 11)[0], 1e-18);
 }
 
+TEST(StepErrorTest, CorrelatedMissesKeepTheirSigmaAndCarryRhoFromOneStepToTheNext) {
+  LoopTimingParams p;
+  p.step_error_relative = 1.0;  // of a 1 mm step: sigma 1 mm, the draws in mm
+  const std::array<double, 2> n0 = StepError(p, 1e-3, 7, 0), n1 = StepError(p, 1e-3, 7, 1);
+  p.step_error_corr = 0.6;
+  // By hand: u_0 = n_0 (the sequence starts stationary), u_1 = 0.6 n_0 + 0.8 n_1.
+  EXPECT_NEAR(StepError(p, 1e-3, 7, 0)[0], n0[0], 1e-15);
+  EXPECT_NEAR(StepError(p, 1e-3, 7, 1)[1], 0.6 * n0[1] + 0.8 * n1[1], 1e-15);
+  // Over many trials (seeds): unit sigma at every step, lag-1 correlation rho, lag-3 rho^3.
+  const int n = 20000;
+  double s20 = 0, s21 = 0, c1 = 0, c3 = 0, s0 = 0;
+  for (int seed = 0; seed < n; ++seed) {
+    const auto e = [&](std::uint64_t k) { return 1e3 * StepError(p, 1e-3, seed, k)[0]; };
+    const double a = e(40), b = e(41), d = e(43);
+    s0 += e(0) * e(0);
+    s20 += a * a;
+    s21 += b * b;
+    c1 += a * b;
+    c3 += a * d;
+  }
+  EXPECT_NEAR(std::sqrt(s0 / n), 1.0, 0.02);
+  EXPECT_NEAR(std::sqrt(s20 / n), 1.0, 0.02);
+  EXPECT_NEAR(std::sqrt(s21 / n), 1.0, 0.02);
+  EXPECT_NEAR(c1 / n, 0.6, 0.03);
+  EXPECT_NEAR(c3 / n, 0.216, 0.03);
+  // Out of range is refused by name.
+  RobotEffectsParams bad;
+  bad.loop.step_error_corr = 0.99;
+  EXPECT_NE(bad.Validate(0.15).find("step_error_corr"), std::string::npos);
+}
+
 TEST(StepErrorTest, TheCapBoundsTheErrorOfLongStepsAndLeavesShortStepsTheirShare) {
   LoopTimingParams p;
   p.step_error_relative = 0.5;
