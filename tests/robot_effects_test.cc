@@ -232,11 +232,14 @@ TEST(StepErrorTest, TheFittedDefaultIsTheStepErrorAndTheTareOffsetAndOffSwitches
   EXPECT_TRUE(p.AnyOn());
   EXPECT_GT(p.loop.step_error_relative, 0);
   EXPECT_GT(p.loop.step_error_max_mm, 0);
+  EXPECT_GT(p.loop.step_error_corr, 0);
+  EXPECT_LT(p.loop.step_error_corr, 0.5);  // persistent, not a drift: half-life under a step
   EXPECT_GT(p.chambers.offset_spread_pa, 0);
   // Nothing else: the fit put the peel at 0.02 decades, and no other effect was fitted on.
   RobotEffectsParams fitted_only;
   fitted_only.loop.step_error_relative = p.loop.step_error_relative;
   fitted_only.loop.step_error_max_mm = p.loop.step_error_max_mm;
+  fitted_only.loop.step_error_corr = p.loop.step_error_corr;
   fitted_only.chambers.offset_spread_pa = p.chambers.offset_spread_pa;
   EXPECT_EQ(FormatRobotEffects(p), FormatRobotEffects(fitted_only));
   std::string error;

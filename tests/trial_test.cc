@@ -125,10 +125,10 @@ TEST(TrialTest, BestControllerCompletesTheDiskAtAllThreeSteps) {
 }
 
 TEST(TrialTest, TheDefaultStepErrorWidensTheWanderAtTheIdealLoopsDepth) {
-  // The twin's default effects (the fitted step error: 0.38 of the step, capped at 1.34 mm; a
-  // 7.9 Pa tare offset per chamber) against the ideal loop, P_ref 100 Pa, beta 1.5, dL 5 mm,
-  // seeds 1-3 (both run every seed). Measured: sigma_r 0.85 against 0.55 mm, s_c +3 against -6 %,
-  // dr -2.28 against -2.34 mm. The
+  // The twin's default effects (the fitted step error: 0.38 of the step, capped at 1.43 mm,
+  // successive misses correlated 0.29; a 7.9 Pa tare offset per chamber) against the ideal loop,
+  // P_ref 100 Pa, beta 1.5, dL 5 mm, seeds 1-3 (both run every seed). Measured: sigma_r 0.87
+  // against 0.54 mm, s_c +1.1 against -6.2 %, dr -2.31 against -2.35 mm. The
   // error moves the cup about the edge (toward the published 1.36 mm and +11 %) without moving
   // where it rides; a step error that biased the path, or one that vanished, fails here.
   TrialConfig ideal;

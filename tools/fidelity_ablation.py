@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Ablation of the fidelity mechanisms (docs/fidelity.md): the training scores with each
-mechanism alone and with all but one, at a given point of the dynamic fit.
+mechanism of the default robot effects alone and with all but one.
 
 Runs `ssc validate` once per configuration on the published dL 5 mm map plus the published
-outcomes beside it (the pilot at dL 2.5 mm, P_ref 100 / beta 2 at dL 2.5 and 7.5 mm), with the
+outcomes beside it (the pilot at dL 2.5 mm, P_ref 100 / beta 2 at dL 2.5 and 7.5 mm, beta 0.5
+failing at dL 2.5 and 7.5 mm), with the
 same seeds for every configuration (common random numbers). Each run lives in OUT/<name>/ and
 resumes if interrupted; the table goes to OUT/ablation.csv and OUT/ablation.md.
 
@@ -18,16 +19,18 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-# The fitted point (docs/fidelity.md) split into mechanisms; "off" values are the round-one loop
-# (0.15 s period, 0.15 s smoothing) and every effect at 0.
+# The default robot effects (controller/pure/robot_effects.cc, FittedRobotEffects; docs/fidelity.md
+# round six) split into mechanisms; "off" is the ideal loop's value. The loop's timing is the
+# default's (0.15 s period, 0.15 s smoothing) in every configuration.
 MECHANISMS = {
-    "loop": {"on": {"period": 0.25, "smoothing": 0.056}, "off": {"period": 0.15, "smoothing": 0.15}},
-    "jitter": {"on": {"jitter_s": 0.02}, "off": {"jitter_s": 0}},
-    "pose_delay": {"on": {"pose_delay_s": 0.0375}, "off": {"pose_delay_s": 0}},
-    "lip_tilt": {"on": {"slip_mm": 1, "tilt_decades": 0.082}, "off": {"tilt_decades": 0}},
-    "slow_noise": {"on": {"drift_pa": 1, "drift_time_s": 0.2}, "off": {"drift_pa": 0}},
+    "step_error": {"on": {"step_error_relative": 0.38, "step_error_max_mm": 1.43},
+                   "off": {"step_error_relative": 0, "step_error_max_mm": 0}},
+    "step_corr": {"on": {"step_error_corr": 0.29}, "off": {"step_error_corr": 0}},
+    "tare_offset": {"on": {"offset_spread_pa": 7.9}, "off": {"offset_spread_pa": 0}},
 }
-OUTCOME_CELLS = [(2.5, 1.0, 70, "3"), (2.5, 2.0, 100, "3"), (7.5, 2.0, 100, "3")]
+# The published outcomes beside the map (PublishedOutcomeCells in studies/success_map_fit.cc).
+OUTCOME_CELLS = [(2.5, 1.0, 70, "3"), (2.5, 2.0, 100, "3"), (7.5, 2.0, 100, "3"),
+                 (2.5, 0.5, 100, "<=1"), (7.5, 0.5, 100, "<=1")]
 
 
 def configurations():
@@ -44,11 +47,9 @@ def command(ssc, map_path, out, seeds, on, threads):
     values = {}
     for name, mech in MECHANISMS.items():
         values.update(mech["on"] if name in on else mech["off"])
-    period, smoothing = values.pop("period"), values.pop("smoothing")
     effects = ",".join(f"{k}={v}" for k, v in values.items())
     return [ssc, "validate", "--map", map_path, "--seeds", str(seeds), "--threads", str(threads),
-            "--period", str(period), "--smoothing", str(smoothing), "--effects", effects,
-            "--out", out, "--no-plot", "--no-progress"]
+            "--effects", effects, "--out", out, "--no-plot", "--no-progress"]
 
 
 def main():
@@ -92,16 +93,16 @@ def main():
         w.writerows(rows)
     with open(os.path.join(args.out, "ablation.md"), "w") as f:
         f.write("| configuration | class match (45) | opposite | expected agreement | "
-                "published outcomes (3) | failure I | failure II |\n|---|---|---|---|---|---|---|\n")
+                "published outcomes (5) | failure I | failure II |\n|---|---|---|---|---|---|---|\n")
         for r in rows:
             f.write(f"| {r['config']} | {r['map_class_match']}/45 | {r['map_opposite']} | "
-                    f"{r['map_expected_agreement']:.3f} | {r['outcomes_matched']}/3 | "
+                    f"{r['map_expected_agreement']:.3f} | {r['outcomes_matched']}/{len(OUTCOME_CELLS)} | "
                     f"{r['failure_I']} | {r['failure_II']} |\n")
     print(open(os.path.join(args.out, "ablation.md")).read())
 
 
 def score(name, on, out):
-    """Scores the 45 map cells and the 3 outcome cells apart, from the run's cells.csv."""
+    """Scores the 45 map cells and the outcome cells apart, from the run's cells.csv."""
     with open(os.path.join(out, "cells.csv")) as f:
         cells = list(csv.DictReader(f))
     with open(os.path.join(out, "validate.json")) as f:

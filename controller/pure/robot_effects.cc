@@ -135,7 +135,8 @@ std::uint64_t EffectCounter(EffectStream stream, std::uint64_t index) {
 RobotEffectsParams FittedRobotEffects() {
   RobotEffectsParams p;
   p.loop.step_error_relative = 0.38;
-  p.loop.step_error_max_mm = 1.34;
+  p.loop.step_error_max_mm = 1.43;
+  p.loop.step_error_corr = 0.29;
   p.chambers.offset_spread_pa = 7.9;
   return p;
 }

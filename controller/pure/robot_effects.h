@@ -91,10 +91,11 @@ struct RobotEffectsParams {
 
 // The twin's default effects, fitted globally (`ssc calibrate --dynamic`, BOBYQA, common seeds)
 // to the published dL 5 mm map, the Fig. 6 targets and the published outcomes beside the map
-// (docs/fidelity.md, round five): the landing error of each step (share 0.38 of the step, capped
-// at 1.34 mm, 1 sigma per axis; the peel fitted with it went to 0.02 decades: off) and a residual
-// tare offset per chamber (1 sigma 7.9 Pa, drawn per trial; refitted alone with 10 seeds per
-// cell). Every other effect is off. `--effects off` gives the ideal loop of round one.
+// (docs/fidelity.md, rounds five and six): the landing error of each step (share 0.38 of the
+// step, capped at 1.43 mm, 1 sigma per axis, successive misses correlated 0.29; the peel fitted
+// with it in round five went to 0.02 decades: off) and a residual tare offset per chamber
+// (1 sigma 7.9 Pa, drawn per trial). Every other effect is off. `--effects off` gives the ideal
+// loop of round one.
 RobotEffectsParams FittedRobotEffects();
 
 // The keys of the effects, one table: name, unit, range, what it is (parsing, --help, docs).
