@@ -69,6 +69,11 @@ int RunCalibrateCommand(int argc, char** argv) {
   cmd.Integer("threads", &dyn_threads, "worker threads", NumberRange::Closed(1, 256));
   cmd.Choice("dynamic-algorithm", &dyn_algorithm, "NLopt algorithm", {"bobyqa", "sbplx"});
   cmd.Text("map", &dyn_map, "training map for --dynamic");
+  long holdout_seed = 2;
+  cmd.Integer("holdout-seed", &holdout_seed,
+              "after --dynamic, score the start and the best point again on this base seed, which "
+              "the fit never saw (a fit on common seeds also fits their noise); 0 = skip",
+              NumberRange::Closed(0, 1e15));
   double dyn_weight = 0.02;
   cmd.Number("dynamic-metric-weight", &dyn_weight,
              "weight of the Fig. 6 targets against the map's log-loss", "",
@@ -162,6 +167,29 @@ int RunCalibrateCommand(int argc, char** argv) {
     std::printf("%-32s %10s %10s\n", "target", "published", "twin");
     for (const MetricTarget& t : fit.targets)
       std::printf("%-32s %10.3g %10.3g\n", t.name.c_str(), t.published, t.model);
+    if (holdout_seed > 0) {
+      DynamicFitSpec held = spec;
+      held.seed = static_cast<std::uint64_t>(holdout_seed);
+      if (held.seed == spec.seed) held.seed += 1;
+      double start_cost = 0, best_cost = 0;
+      MapScore start_score, best_score;
+      std::vector<MetricTarget> unused;
+      if (!EvaluateDynamic(model.get(), held, spec.base, &start_cost, &start_score, &unused,
+                           &error) ||
+          !EvaluateDynamic(model.get(), held, fit.best, &best_cost, &best_score, &unused, &error)) {
+        std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
+        return 1;
+      }
+      char line[300];
+      std::snprintf(line, sizeof(line),
+                    "held-out seeds (base seed %llu, %d seeds/cell): start cost %.4g (agreement "
+                    "%.3f, opposite %d), best cost %.4g (agreement %.3f, opposite %d)",
+                    static_cast<unsigned long long>(held.seed), spec.seeds, start_cost,
+                    start_score.expected_agreement, start_score.opposite, best_cost,
+                    best_score.expected_agreement, best_score.opposite);
+      std::printf("%s\n", line);
+      evals_log << line << '\n' << std::flush;
+    }
     std::printf("as options: --period %.4g --smoothing %.4g --effects %s\n",
                 fit.best.control_period_s, fit.best.servo.smoothing_s,
                 FormatRobotEffects(fit.best.effects).c_str());
