@@ -4,13 +4,22 @@
 #include <cmath>
 #include <cstdio>
 
-#include "studies/tool_variants.h"
 #include "studies/validation.h"
 
 namespace ssc {
 namespace {
 constexpr double kMaxStaticCost = 4.0;
 }  // namespace
+
+PluginConfig FittedPluginConfig(const PneumaticFit& fit) {
+  PluginConfig config;
+  char value[32];
+  for (const FitParameter& p : fit.parameters) {
+    std::snprintf(value, sizeof(value), "%.6g", p.value);
+    config[p.key] = value;
+  }
+  return config;
+}
 
 double LoopCalibrationResult::RmsDepthErrorMm(int i) const {
   const LoopCalibrationIteration& it = iterations.at(static_cast<std::size_t>(i));
@@ -28,18 +37,12 @@ bool CalibrateClosedLoop(const LoopCalibrationSpec& spec,
   for (double p : kDepthTargetPrefPa) cells.push_back({5.0, 1.5, p, MapClass::kThreeOfThree});
   result->iterations.clear();
   StaticDepthPressures q = kOpenLoopDepthPressures;
-  PneumaticModel start;
+  PneumaticModel start = spec.start;
   for (int it = 0; it < std::max(1, spec.iterations); ++it) {
     LoopCalibrationIteration step;
     step.depth_pa = q;
     step.fit = FitPublishedTargets(start, q);
-    PluginConfig config;
-    char value[32];
-    for (const FitParameter& p : step.fit.parameters) {
-      std::snprintf(value, sizeof(value), "%.6g", p.value);
-      config[p.key] = value;
-    }
-    ModelPtr m = variants->Compile({config, 0}, error);
+    ModelPtr m = variants->Compile({FittedPluginConfig(step.fit), 0}, error);
     if (!m) return false;
     std::vector<std::vector<MapTrial>> trials;
     if (!RunMapTrials(m.get(), cells, spec.base, spec.seeds, 1, spec.threads, &trials, error)) {

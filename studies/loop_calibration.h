@@ -20,10 +20,16 @@
 
 #include "calibration/pneumatic_fit.h"
 #include "runtime/trial.h"
+#include "studies/tool_variants.h"
 
 namespace ssc {
 
+// The plugin config keys of a static fit (its parameters, as MJCF text), for a tool variant or
+// a calibrated tool model.
+PluginConfig FittedPluginConfig(const PneumaticFit& fit);
+
 struct LoopCalibrationSpec {
+  PneumaticModel start;    // where the first static fit starts
   std::string scene_path;  // a disk scene with the tool (read once; variants compiled in memory)
   TrialConfig base;        // everything but P_ref, beta, step and seed
   int seeds = 10;          // trials per P_ref per iteration (the sweep's seeds, base seed 1)

@@ -74,6 +74,28 @@ const DynamicParameter* FindParameter(const std::string& key) {
 
 }  // namespace
 
+void MeasureMetricTargets(const std::vector<MapCell>& cells,
+                          const std::vector<std::vector<MapTrial>>& results,
+                          std::vector<MetricTarget>* targets) {
+  for (MetricTarget& t : *targets) {
+    double sum = 0;
+    int n = 0;
+    for (std::size_t i = 0; i < cells.size() && i < results.size(); ++i) {
+      if (cells[i].step_mm != 5.0 || cells[i].beta != t.beta || cells[i].pref_pa != t.pref_pa)
+        continue;
+      for (const MapTrial& r : results[i]) {
+        if (r.outcome != OutcomeName(Outcome::kSuccess)) continue;
+        sum += t.metric == MetricTarget::kDr
+                   ? r.dr_mm
+                   : (t.metric == MetricTarget::kSigmaR ? r.sigma_r_mm : r.s_c);
+        ++n;
+      }
+    }
+    t.model = n > 0 ? sum / n : std::numeric_limits<double>::quiet_NaN();
+    t.successes = n;
+  }
+}
+
 bool EvaluateDynamic(const mjModel* m, const DynamicFitSpec& spec, const TrialConfig& config,
                      double* cost, MapScore* score, std::vector<MetricTarget>* targets,
                      std::string* error) {
@@ -93,24 +115,11 @@ bool EvaluateDynamic(const mjModel* m, const DynamicFitSpec& spec, const TrialCo
   for (std::size_t i = 0; i < spec.cells.size(); ++i)
     for (const MapTrial& t : results[i]) trials[i].outcomes.push_back(t.outcome);
   if (!ScoreMap(spec.cells, trials, score, error)) return false;
+  MeasureMetricTargets(cells, results, targets);
   double metric_cost = 0;
-  for (MetricTarget& t : *targets) {
-    double sum = 0;
-    int n = 0;
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-      if (cells[i].step_mm != 5.0 || cells[i].beta != t.beta || cells[i].pref_pa != t.pref_pa)
-        continue;
-      for (const MapTrial& r : results[i]) {
-        if (r.outcome != OutcomeName(Outcome::kSuccess)) continue;
-        sum += t.metric == MetricTarget::kDr
-                   ? r.dr_mm
-                   : (t.metric == MetricTarget::kSigmaR ? r.sigma_r_mm : r.s_c);
-        ++n;
-      }
-    }
-    t.model = n > 0 ? sum / n : std::numeric_limits<double>::quiet_NaN();
+  for (const MetricTarget& t : *targets) {
     // No successful trial: the target cannot be measured; charge a large but finite residual.
-    const double res = n > 0 ? (t.model - t.published) / t.tolerance : 5.0;
+    const double res = t.successes > 0 ? (t.model - t.published) / t.tolerance : 5.0;
     metric_cost +=
         std::min(res * res, 25.0);  // capped: one hopeless target cannot outweigh the map
   }

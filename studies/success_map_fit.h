@@ -14,6 +14,7 @@
 
 #include "runtime/trial.h"
 #include "studies/map_scores.h"
+#include "studies/validation.h"
 
 namespace ssc {
 
@@ -37,8 +38,15 @@ struct MetricTarget {
   enum Metric { kDr, kSigmaR, kSc } metric;
   double published, tolerance;
   double model = 0;  // the twin's mean over successful trials (NaN if none succeeded)
+  int successes = 0;  // the successful trials the mean is over
 };
 std::vector<MetricTarget> PublishedMetricTargets();
+// Fills each target's model and successes from the trials of the cells at dL 5 mm with its beta
+// and P_ref (results[i] are cells[i]'s trials); a target whose cell is absent or never succeeded
+// gets NaN and 0.
+void MeasureMetricTargets(const std::vector<MapCell>& cells,
+                          const std::vector<std::vector<MapTrial>>& results,
+                          std::vector<MetricTarget>* targets);
 // The published outcomes beside the map (calibration targets in smart-suction-cup.md): the pilot
 // controller (P_ref 70, beta 1, dL 2.5 mm) succeeds; P_ref 100, beta 2 succeeds 3/3 at dL 2.5,
 // 5 and 7.5 mm; and beta 0.5 fails (at P_ref 100, dL 2.5 and 7.5 mm: "beta <= 0.5 always

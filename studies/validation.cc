@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -13,6 +14,7 @@
 #include "common/strict_number.h"
 #include "controller/pure/robot_effects.h"
 #include "studies/job_runner.h"
+#include "studies/success_map_fit.h"
 
 namespace ssc {
 namespace {
@@ -43,9 +45,8 @@ CellKey KeyOf(double step, double beta, double pref) {
 }
 
 // Outcomes per (step, beta, pref) and repeat from a sweep CSV.
-bool ReadTrialOutcomes(const std::string& path,
-                       std::map<CellKey, std::map<int, std::string>>* outcomes,
-                       std::string* error) {
+bool ReadTrials(const std::string& path, std::map<CellKey, std::map<int, MapTrial>>* trials,
+                std::string* error) {
   std::ifstream f(path);
   if (!f) {
     *error = path + ": cannot read";
@@ -59,12 +60,18 @@ bool ReadTrialOutcomes(const std::string& path,
   const std::vector<std::string> header = SplitComma(line);
   std::map<std::string, std::size_t> col;
   for (std::size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
-  for (const char* need : {"pref_pa", "beta", "step_mm", "repeat", "outcome"}) {
+  for (const char* need :
+       {"pref_pa", "beta", "step_mm", "repeat", "outcome", "dr_mm", "sigma_r_mm", "s_c"}) {
     if (!col.count(need)) {
       *error = path + ": header has no column '" + need + "'";
       return false;
     }
   }
+  // A trial's path metrics (NaN when not a number: only successful trials' are used).
+  auto metric = [](const std::string& text) {
+    double v = 0;
+    return ReadNumber(text, -1e9, 1e9, &v) ? v : std::numeric_limits<double>::quiet_NaN();
+  };
   while (std::getline(f, line)) {
     const std::vector<std::string> c = SplitComma(line);
     if (c.size() <= col["outcome"] || c[col["outcome"]].empty()) continue;  // torn: rerun
@@ -74,7 +81,12 @@ bool ReadTrialOutcomes(const std::string& path,
         !ReadNumber(c[col["step_mm"]], 0, 1e9, &step) ||
         !ReadNumber(c[col["repeat"]], 0, 1e9, &rep))
       continue;
-    (*outcomes)[KeyOf(step, beta, pref)][static_cast<int>(rep)] = c[col["outcome"]];
+    MapTrial t;
+    t.outcome = c[col["outcome"]];
+    t.dr_mm = metric(c[col["dr_mm"]]);
+    t.sigma_r_mm = metric(c[col["sigma_r_mm"]]);
+    t.s_c = metric(c[col["s_c"]]);
+    (*trials)[KeyOf(step, beta, pref)][static_cast<int>(rep)] = t;
   }
   return true;
 }
@@ -178,7 +190,7 @@ bool PrepareValidation(const ValidateSpec& spec, std::vector<MapCell>* cells, Sw
 
 bool RunValidation(const mjModel* m, const ValidateSpec& spec,
                    const std::function<void(const SweepProgress&)>& progress, MapScore* score,
-                   SweepSummary* summary, std::string* error) {
+                   SweepSummary* summary, std::string* error, std::vector<MetricTarget>* fig6) {
   std::vector<MapCell> cells;
   SweepSpec sweep;
   if (!PrepareValidation(spec, &cells, &sweep, error)) return false;
@@ -189,21 +201,26 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
     return false;
   }
 
-  std::map<CellKey, std::map<int, std::string>> outcomes;
-  if (!ReadTrialOutcomes(sweep.out_csv, &outcomes, error)) return false;
+  std::map<CellKey, std::map<int, MapTrial>> read;
+  if (!ReadTrials(sweep.out_csv, &read, error)) return false;
   std::vector<CellTrials> trials(cells.size());
+  std::vector<std::vector<MapTrial>> results(cells.size());
   for (std::size_t i = 0; i < cells.size(); ++i) {
-    const auto& rows = outcomes[KeyOf(cells[i].step_mm, cells[i].beta, cells[i].pref_pa)];
+    const auto& rows = read[KeyOf(cells[i].step_mm, cells[i].beta, cells[i].pref_pa)];
     for (int r = 0; r < spec.seeds; ++r) {
       const auto it = rows.find(r);
       if (it == rows.end()) {
         *error = sweep.out_csv + ": repeat " + std::to_string(r) + " of a cell is missing";
         return false;
       }
-      trials[i].outcomes.push_back(it->second);
+      trials[i].outcomes.push_back(it->second.outcome);
+      results[i].push_back(it->second);
     }
   }
   if (!ScoreMap(cells, trials, score, error)) return false;
+  // The published Fig. 6 targets the map's cells measure (successful trials only).
+  std::vector<MetricTarget> targets = PublishedMetricTargets();
+  MeasureMetricTargets(cells, results, &targets);
 
   const std::string cells_csv = spec.out_dir + "/cells.csv";
   std::ofstream c(cells_csv);
@@ -236,6 +253,15 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
   j["expected_agreement"] = score->expected_agreement;
   j["opposite_cells"] = score->opposite;
   j["log_loss"] = score->log_loss;
+  j["fig6_targets"] = nlohmann::json::array();
+  for (const MetricTarget& t : targets) {
+    if (t.successes == 0) continue;
+    j["fig6_targets"].push_back({{"name", t.name},
+                                 {"published", t.published},
+                                 {"tolerance", t.tolerance},
+                                 {"twin", t.model},
+                                 {"successes", t.successes}});
+  }
   j["wall_s"] = summary->wall_s;
   std::ofstream js(spec.out_dir + "/validate.json");
   js << j.dump(2) << '\n';
@@ -243,6 +269,7 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
     *error = spec.out_dir + "/validate.json: write failed";
     return false;
   }
+  if (fig6) *fig6 = targets;
   return true;
 }
 

@@ -36,10 +36,15 @@ struct ValidateSpec {
 bool PrepareValidation(const ValidateSpec& spec, std::vector<MapCell>* cells, SweepSpec* sweep,
                        std::string* error);
 
-// Runs and scores. Rank 0 writes the files and fills *score; other ranks only run trials.
+struct MetricTarget;  // studies/success_map_fit.h
+
+// Runs and scores. Rank 0 writes the files and fills *score (and, when given, *fig6: the
+// published Fig. 6 targets measured on the map's cells, in validate.json too); other ranks only
+// run trials.
 bool RunValidation(const mjModel* m, const ValidateSpec& spec,
                    const std::function<void(const SweepProgress&)>& progress, MapScore* score,
-                   SweepSummary* summary, std::string* error);
+                   SweepSummary* summary, std::string* error,
+                   std::vector<MetricTarget>* fig6 = nullptr);
 
 // One trial of a map cell, in memory (for fits: no disk).
 struct MapTrial {

@@ -13,6 +13,7 @@
 
 #include "runtime/mujoco_model.h"
 #include "studies/map_scores.h"
+#include "studies/success_map_fit.h"
 
 namespace ssc {
 namespace {
@@ -167,6 +168,32 @@ TEST(ValidationStudyTest, ATinyMapGetsTheKnownScores) {
   ASSERT_TRUE(RunValidation(model.get(), spec, nullptr, &again, &summary, &error)) << error;
   EXPECT_EQ(summary.ran, 0);
   EXPECT_DOUBLE_EQ(again.expected_agreement, score.expected_agreement);
+}
+
+TEST(MetricTargetsTest, MeansOverTheSuccessfulTrialsOfTheTargetsCellAtFiveMillimetres) {
+  // Hand-made trials: the target's cell (dL 5 mm, beta 1.5, P_ref 100) holds two successes and a
+  // failure whose metrics must not count; the same beta and P_ref at dL 2.5 mm must not count.
+  const std::vector<MapCell> cells = {{5.0, 1.5, 100, MapClass::kThreeOfThree},
+                                      {2.5, 1.5, 100, MapClass::kThreeOfThree},
+                                      {5.0, 3.5, 100, MapClass::kThreeOfThree}};
+  const std::vector<std::vector<MapTrial>> results = {
+      {{"success", -2.0, 1.0, 0.10}, {"failure_I", -9.0, 9.0, 9.0}, {"success", -3.0, 2.0, 0.20}},
+      {{"success", -7.0, 7.0, 7.0}},
+      {{"failure_II", -1.0, 1.0, 1.0}}};
+  std::vector<MetricTarget> targets = PublishedMetricTargets();
+  MeasureMetricTargets(cells, results, &targets);
+  for (const MetricTarget& t : targets) {
+    if (t.beta == 1.5 && t.pref_pa == 100) {
+      EXPECT_EQ(t.successes, 2) << t.name;
+      const double want = t.metric == MetricTarget::kDr       ? -2.5
+                          : t.metric == MetricTarget::kSigmaR ? 1.5
+                                                              : 0.15;
+      EXPECT_DOUBLE_EQ(t.model, want) << t.name;
+    } else {  // beta 3.5 never succeeded; P_ref 40 and 200 are not in this map
+      EXPECT_EQ(t.successes, 0) << t.name;
+      EXPECT_TRUE(std::isnan(t.model)) << t.name;
+    }
+  }
 }
 
 }  // namespace

@@ -100,6 +100,8 @@ int RunCalibrateCommand(int argc, char** argv) {
   std::vector<std::string> keys;
   cmd.Check([&]() -> std::string {
     if (depth_list.size() != 3) return "--depth-pa: three values (Pa at 0.7, 2.5, 3.2 mm)";
+    if (loop_iterations > 0 && cmd.Given("depth-pa"))
+      return "--depth-pa and --closed-loop: give one (--closed-loop finds the pressures)";
     if (!(depth_list[0] < depth_list[1] && depth_list[1] < depth_list[2]))
       return "--depth-pa: the values must rise with depth (the covered cup reads more vacuum)";
     if (!dynamic) return "";
@@ -219,6 +221,7 @@ int RunCalibrateCommand(int argc, char** argv) {
   PneumaticFit fit;
   if (loop_iterations > 0) {
     LoopCalibrationSpec spec;
+    spec.start = start;
     spec.scene_path = ResolveScenePath(scene);
     spec.base = dyn_base;
     spec.seeds = static_cast<int>(loop_seeds);
@@ -259,12 +262,8 @@ int RunCalibrateCommand(int argc, char** argv) {
 
   if (!write(out / "params.json", CalibrationParamsJson(fit, nullptr))) return 1;
   // The tool model with the fitted config.
-  PluginConfig config;
+  PluginConfig config = FittedPluginConfig(fit);
   char value[32];
-  for (const FitParameter& q : fit.parameters) {
-    std::snprintf(value, sizeof(value), "%.6g", q.value);
-    config[q.key] = value;
-  }
   const std::string xml = tool->ToolXml({config, 0}, &error);
   if (xml.empty()) {
     std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());

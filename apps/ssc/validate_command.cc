@@ -12,6 +12,7 @@
 #include "apps/ssc/trial_options.h"
 #include "runtime/mujoco_model.h"
 #include "studies/job_runner.h"
+#include "studies/success_map_fit.h"
 #include "studies/validation.h"
 
 namespace ssc {
@@ -80,7 +81,8 @@ int RunValidateCommand(int argc, char** argv) {
   };
   MapScore score;
   SweepSummary summary;
-  if (!RunValidation(model.get(), spec, progress, &score, &summary, &error)) {
+  std::vector<MetricTarget> fig6;
+  if (!RunValidation(model.get(), spec, progress, &score, &summary, &error, &fig6)) {
     std::fprintf(stderr, "ssc validate: %s\n", error.c_str());
     return 1;
   }
@@ -100,6 +102,16 @@ int RunValidateCommand(int argc, char** argv) {
   std::printf("  class match (3 trials/cell)   %.1f %%\n", 100 * score.class_match);
   std::printf("  expected agreement            %.3f\n", score.expected_agreement);
   std::printf("  opposite cells                %d\n", score.opposite);
+  bool header = false;
+  for (const MetricTarget& t : fig6) {
+    if (t.successes == 0) continue;  // its cell is not in this map, or never succeeded
+    if (!header) {
+      std::printf("published Fig. 6 targets (mean over the successful trials):\n");
+      header = true;
+    }
+    std::printf("  %-32s twin %7.3g (%2d trials)  published %7.3g  (tolerance %g)\n",
+                t.name.c_str(), t.model, t.successes, t.published, t.tolerance);
+  }
   PrintApproachSharing(spec.share_approach, summary);
   std::printf("wrote %s/cells.csv, %s/validate.json\n", out_dir.c_str(), out_dir.c_str());
   if (!no_plot) {

@@ -135,8 +135,8 @@ double IterationPeriod(const LoopTimingParams& p, double period_s, std::uint64_t
 // sigma = step_error_relative * step_m capped at step_error_max_mm (when > 0), step_m the step's
 // length, and u a unit-variance AR(1) sequence with correlation step_error_corr over the step
 // index (u = N(0, 1) draws when 0). A pure function of (seed, index): u_k is summed from the
-// draws of steps k, k-1, ... with weights sqrt(1 - rho^2) rho^j (the first weight 1 when
-// index = 0: the sequence starts stationary), cut where rho^j < 1e-6.
+// draws of steps k, k-1, ... with weights sqrt(1 - rho^2) rho^j, except the oldest (step 0),
+// which weighs rho^k so that the sequence starts stationary; cut where rho^j < 1e-6.
 std::array<double, 2> StepError(const LoopTimingParams& p, double step_m, std::uint64_t seed,
                                 std::uint64_t index);
 
