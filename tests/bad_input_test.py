@@ -222,6 +222,8 @@ CASES = [
     (["calibrate", "--depth-pa", "100,40,200", "--out", "new_out"], 2, "rise with depth"),
     (["calibrate", "--depth-pa", "40,100", "--out", "new_out"], 2, "three values"),
     (["calibrate", "--closed-loop", "51", "--out", "new_out"], 2, "--closed-loop"),
+    (["calibrate", "--closed-loop", "2", "--depth-pa", "40,100,200", "--out", "new_out"], 2,
+     "give one"),
     (["calibrate", "--dynamic", "--holdout-seed", "-1", "--out", "new_out"], 2, "--holdout-seed"),
     (["trial", "--effects", "step_error_corr=0.99", "--out", "new_out"], 2, "step_error_corr"),
     (["compare", FIFO, "--out", "new_out"], 1, "not a regular file"),
