@@ -88,6 +88,34 @@ TEST(ChamberSpreadTest, GainsAreDrawnPerTrialWithTheStatedSpread) {
   for (double g : off.gain) EXPECT_EQ(g, 1.0);
 }
 
+TEST(ChamberSpreadTest, ACupSeedGivesEveryTrialThatCupsGainsAndLeavesTheRestPerTrial) {
+  ChamberSpreadParams params;
+  params.gain_spread = 0.1;
+  params.offset_spread_pa = 5;
+  params.cup_seed = 7;
+  ChamberSpreadState a, b, per_trial;
+  ResetChamberSpread(params, 11, &a);
+  ResetChamberSpread(params, 12, &b);
+  EXPECT_EQ(a.gain, b.gain);            // one cup: the same gains in trials 11 and 12
+  EXPECT_NE(a.offset_pa, b.offset_pa);  // the tare stays per trial
+  // They are cup 7's: what a per-trial draw with seed 7 gives.
+  ChamberSpreadParams fresh = params;
+  fresh.cup_seed = 0;
+  ChamberSpreadState seven;
+  ResetChamberSpread(fresh, 7, &seven);
+  EXPECT_EQ(a.gain, seven.gain);
+  // 0: per trial again.
+  ResetChamberSpread(fresh, 12, &per_trial);
+  EXPECT_NE(per_trial.gain, a.gain);
+  for (double g : a.gain) EXPECT_NE(g, 1.0);
+  // Only whole cup numbers in range.
+  RobotEffectsParams bad;
+  bad.chambers.cup_seed = 2.5;
+  EXPECT_NE(bad.Validate(0.15).find("cup_seed"), std::string::npos);
+  bad.chambers.cup_seed = 2e6;
+  EXPECT_NE(bad.Validate(0.15).find("cup_seed"), std::string::npos);
+}
+
 TEST(ChamberSpreadTest, TareOffsetsAreDrawnPerTrialIndependentAndHeldThroughTheTrial) {
   ChamberSpreadParams params;
   params.offset_spread_pa = 6;

@@ -28,8 +28,8 @@ std::string Bad(const char* field, double v, const std::string& range) {
 
 }  // namespace
 
-const std::array<EffectKey, 13>& EffectKeys() {
-  static const std::array<EffectKey, 13> kKeys = {{
+const std::array<EffectKey, 14>& EffectKeys() {
+  static const std::array<EffectKey, 14> kKeys = {{
       {"jitter_s", "s", 0, 5, "half-width of the uniform jitter of the loop period",
        [](RobotEffectsParams* p) { return &p->loop.jitter_s; }},
       {"pose_delay_s", "s", 0, 10, "pressures read -> pose read (the live plot in between)",
@@ -51,6 +51,9 @@ const std::array<EffectKey, 13>& EffectKeys() {
        [](RobotEffectsParams* p) { return &p->lip.peel_decades; }},
       {"gain_spread", "1", 0, 0.3, "1-sigma relative gain spread between chambers",
        [](RobotEffectsParams* p) { return &p->chambers.gain_spread; }},
+      {"cup_seed", "1", 0, 1e6,
+       "the cup whose chamber gains every trial uses (0 = drawn per trial; a whole number)",
+       [](RobotEffectsParams* p) { return &p->chambers.cup_seed; }},
       {"offset_spread_pa", "Pa", 0, 30,
        "1-sigma residual tare offset per chamber (tared at 30 % PWM)",
        [](RobotEffectsParams* p) { return &p->chambers.offset_spread_pa; }},
@@ -160,6 +163,8 @@ std::string RobotEffectsParams::Validate(double period_s) const {
   if (!In(lip.peel_decades, 0, 1.5)) return Bad("lip peel_decades", lip.peel_decades, "[0, 1.5]");
   if (!In(chambers.gain_spread, 0, 0.3))
     return Bad("chamber gain_spread", chambers.gain_spread, "[0, 0.3]");
+  if (!In(chambers.cup_seed, 0, 1e6) || chambers.cup_seed != std::floor(chambers.cup_seed))
+    return Bad("chamber cup_seed", chambers.cup_seed, "[0, 1e6] (whole numbers)");
   if (!In(chambers.offset_spread_pa, 0, 30))
     return Bad("chamber offset_spread_pa", chambers.offset_spread_pa, "[0, 30] Pa");
   if (!In(chambers.drift_pa, 0, 50))
@@ -246,9 +251,11 @@ void ApplyLipTilt(const LipShearParams& p, const LipShearState& s, std::array<do
 
 void ResetChamberSpread(const ChamberSpreadParams& p, std::uint64_t seed, ChamberSpreadState* s) {
   *s = ChamberSpreadState();
+  // One cup's gains in every trial, or a fresh cup per trial.
+  const std::uint64_t gain_seed = p.cup_seed > 0 ? static_cast<std::uint64_t>(p.cup_seed) : seed;
   for (int i = 0; i < 4; ++i) {
     const double g =
-        1.0 + p.gain_spread * EffectGaussian(seed, EffectCounter(EffectStream::kGain, 0), i);
+        1.0 + p.gain_spread * EffectGaussian(gain_seed, EffectCounter(EffectStream::kGain, 0), i);
     s->gain[static_cast<std::size_t>(i)] = std::fmax(0.2, g);  // a sensor never reads inverted
     s->offset_pa[static_cast<std::size_t>(i)] =
         p.offset_spread_pa * EffectGaussian(seed, EffectCounter(EffectStream::kOffset, 0), i);

@@ -71,6 +71,11 @@ struct LipShearParams {
 
 struct ChamberSpreadParams {
   double gain_spread = 0.0;  // 1-sigma relative gain spread between chambers: [0, 0.3]
+  // Which cup the gains belong to: 0 = drawn afresh in every trial (the twin does not know the
+  // real cup's); a whole number 1..1e6 = the gains of that one cup in every trial (the lab ran
+  // its whole map with one cup, whose chamber gains stayed put). Never chosen to match: a study
+  // reports every cup it ran.
+  double cup_seed = 0.0;
   // 1-sigma residual tare offset per chamber, Pa: [0, 30]. The lab tared the sensors in air
   // with the pump at 30 % PWM and followed at 100 %: each chamber keeps the difference of its
   // open-cup vacuum between the two (and the MPRLS zero drift), drawn per trial.
@@ -106,7 +111,7 @@ struct EffectKey {
   const char* what;
   double* (*field)(RobotEffectsParams*);
 };
-const std::array<EffectKey, 13>& EffectKeys();
+const std::array<EffectKey, 14>& EffectKeys();
 // Parses "key=value,key=value" (or "off": every effect off) onto *p. Values must be whole,
 // finite numbers in the key's range; the error names the key, the value and the range.
 bool ParseRobotEffects(const std::string& text, RobotEffectsParams* p, std::string* error);
