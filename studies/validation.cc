@@ -190,7 +190,8 @@ bool PrepareValidation(const ValidateSpec& spec, std::vector<MapCell>* cells, Sw
 
 bool RunValidation(const mjModel* m, const ValidateSpec& spec,
                    const std::function<void(const SweepProgress&)>& progress, MapScore* score,
-                   SweepSummary* summary, std::string* error, std::vector<MetricTarget>* fig6) {
+                   SweepSummary* summary, std::string* error, std::vector<MetricTarget>* fig6,
+                   std::vector<MapCeiling>* ceilings) {
   std::vector<MapCell> cells;
   SweepSpec sweep;
   if (!PrepareValidation(spec, &cells, &sweep, error)) return false;
@@ -253,6 +254,23 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
   j["expected_agreement"] = score->expected_agreement;
   j["opposite_cells"] = score->opposite;
   j["log_loss"] = score->log_loss;
+  // What any twin can expect against these published classes (studies/map_ceiling.h).
+  std::vector<MapCeiling> ceiling_list;
+  if (!ComputeMapCeilings(cells, kClassMatchGoal, &ceiling_list, error)) {
+    *error = spec.map_path + ": " + *error;
+    return false;
+  }
+  j["ceilings"] = nlohmann::json::array();
+  for (const MapCeiling& ceiling : ceiling_list) {
+    j["ceilings"].push_back({{"prior", ceiling.prior_name},
+                             {"prior_a", ceiling.prior.a},
+                             {"prior_b", ceiling.prior.b},
+                             {"rerun_agreement", ceiling.rerun_agreement},
+                             {"oracle_agreement", ceiling.oracle_agreement},
+                             {"class_match_goal", kClassMatchGoal},
+                             {"rerun_reaches_goal", ceiling.rerun_reaches_goal},
+                             {"oracle_reaches_goal", ceiling.oracle_reaches_goal}});
+  }
   j["fig6_targets"] = nlohmann::json::array();
   for (const MetricTarget& t : targets) {
     if (t.successes == 0) continue;
@@ -270,6 +288,7 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
     return false;
   }
   if (fig6) *fig6 = targets;
+  if (ceilings) *ceilings = ceiling_list;
   return true;
 }
 

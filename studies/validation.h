@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "runtime/trial.h"
+#include "studies/map_ceiling.h"
 #include "studies/map_scores.h"
 #include "studies/sweep.h"
 
@@ -44,7 +45,8 @@ struct MetricTarget;  // studies/success_map_fit.h
 bool RunValidation(const mjModel* m, const ValidateSpec& spec,
                    const std::function<void(const SweepProgress&)>& progress, MapScore* score,
                    SweepSummary* summary, std::string* error,
-                   std::vector<MetricTarget>* fig6 = nullptr);
+                   std::vector<MetricTarget>* fig6 = nullptr,
+                   std::vector<MapCeiling>* ceilings = nullptr);
 
 // One trial of a map cell, in memory (for fits: no disk).
 struct MapTrial {

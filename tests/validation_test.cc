@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 
 #include "runtime/mujoco_model.h"
@@ -153,8 +154,15 @@ TEST(ValidationStudyTest, ATinyMapGetsTheKnownScores) {
   spec.out_dir = dir;
   MapScore score;
   SweepSummary summary;
-  ASSERT_TRUE(RunValidation(model.get(), spec, nullptr, &score, &summary, &error)) << error;
+  std::vector<MapCeiling> ceilings;
+  ASSERT_TRUE(
+      RunValidation(model.get(), spec, nullptr, &score, &summary, &error, nullptr, &ceilings))
+      << error;
   ASSERT_EQ(score.cells.size(), 2u);
+  // Two cells published 3/3: a re-run of the robot under the uniform prior lands there 4/7.
+  ASSERT_EQ(ceilings.size(), 3u);
+  EXPECT_EQ(ceilings[1].prior_name, "uniform");
+  EXPECT_NEAR(ceilings[1].rerun_agreement, 4.0 / 7, 1e-12);
   EXPECT_EQ(score.cells[0].successes, 3);
   EXPECT_EQ(score.cells[1].successes, 0);
   EXPECT_EQ(score.cells[1].failure_off_edge, 3);
@@ -162,7 +170,9 @@ TEST(ValidationStudyTest, ATinyMapGetsTheKnownScores) {
   EXPECT_DOUBLE_EQ(score.expected_agreement, 0.5);
   EXPECT_EQ(score.opposite, 1);
   EXPECT_TRUE(std::filesystem::exists(dir + "/cells.csv"));
-  EXPECT_TRUE(std::filesystem::exists(dir + "/validate.json"));
+  std::ifstream json(dir + "/validate.json");
+  const std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\"rerun_agreement\""), std::string::npos) << text;
   // Resuming runs nothing new and scores the same.
   MapScore again;
   ASSERT_TRUE(RunValidation(model.get(), spec, nullptr, &again, &summary, &error)) << error;

@@ -82,7 +82,8 @@ int RunValidateCommand(int argc, char** argv) {
   MapScore score;
   SweepSummary summary;
   std::vector<MetricTarget> fig6;
-  if (!RunValidation(model.get(), spec, progress, &score, &summary, &error, &fig6)) {
+  std::vector<MapCeiling> ceilings;
+  if (!RunValidation(model.get(), spec, progress, &score, &summary, &error, &fig6, &ceilings)) {
     std::fprintf(stderr, "ssc validate: %s\n", error.c_str());
     return 1;
   }
@@ -102,6 +103,19 @@ int RunValidateCommand(int argc, char** argv) {
   std::printf("  class match (3 trials/cell)   %.1f %%\n", 100 * score.class_match);
   std::printf("  expected agreement            %.3f\n", score.expected_agreement);
   std::printf("  opposite cells                %d\n", score.opposite);
+  std::printf(
+      "what any twin can expect here (each published class is one draw of 3 robot trials;\n"
+      "docs/fidelity.md, 'The ceiling'), by the prior on the robot's success rates:\n");
+  std::printf("  %-36s %-8s %-8s %s\n", "prior", "re-run", "oracle",
+              "P(class match >= goal) re-run / oracle");
+  for (const MapCeiling& c : ceilings) {
+    char name[96];
+    std::snprintf(name, sizeof name, "%s, Beta(%.2f, %.2f)", c.prior_name.c_str(), c.prior.a,
+                  c.prior.b);
+    std::printf("  %-36s %-8.3f %-8.3f %.3f / %.3f (goal %.0f %%)\n", name, c.rerun_agreement,
+                c.oracle_agreement, c.rerun_reaches_goal, c.oracle_reaches_goal,
+                100 * kClassMatchGoal);
+  }
   bool header = false;
   for (const MetricTarget& t : fig6) {
     if (t.successes == 0) continue;  // its cell is not in this map, or never succeeded

@@ -1,0 +1,198 @@
+#include "studies/map_ceiling.h"
+
+#include <algorithm>
+#include <cmath>
+#include <nlopt.hpp>
+
+namespace ssc {
+namespace {
+
+// A class probability as a sum of coef * p^i (1-p)^j.
+struct Term {
+  double coef;
+  int i, j;
+};
+std::vector<Term> ClassTerms(MapClass c) {
+  switch (c) {
+    case MapClass::kThreeOfThree:
+      return {{1, 3, 0}};
+    case MapClass::kTwoOfThree:
+      return {{3, 2, 1}};
+    case MapClass::kAtMostOne:
+      return {{1, 0, 3}, {3, 1, 2}};
+  }
+  return {};
+}
+
+double LogBeta(double a, double b) { return std::lgamma(a) + std::lgamma(b) - std::lgamma(a + b); }
+
+// E[sum of terms] under Beta(a, b): E[p^i (1-p)^j] = B(a+i, b+j) / B(a, b).
+double Expectation(const std::vector<Term>& terms, const BetaPrior& prior) {
+  const double base = LogBeta(prior.a, prior.b);
+  double sum = 0;
+  for (const Term& t : terms)
+    sum += t.coef * std::exp(LogBeta(prior.a + t.i, prior.b + t.j) - base);
+  return sum;
+}
+
+std::vector<Term> Product(const std::vector<Term>& x, const std::vector<Term>& y) {
+  std::vector<Term> out;
+  for (const Term& s : x) {
+    for (const Term& t : y) out.push_back({s.coef * t.coef, s.i + t.i, s.j + t.j});
+  }
+  return out;
+}
+
+// sum_c P_p(c) P_q(c): the expected agreement of rate q with a fresh draw at rate p.
+double AgreementWithDraw(double p, double q) {
+  double sum = 0;
+  for (MapClass c : {MapClass::kThreeOfThree, MapClass::kTwoOfThree, MapClass::kAtMostOne}) {
+    sum += ClassProbability(c, p) * ClassProbability(c, q);
+  }
+  return sum;
+}
+
+}  // namespace
+
+double PriorClassProbability(MapClass c, const BetaPrior& prior) {
+  return Expectation(ClassTerms(c), prior);
+}
+
+double RerunAgreement(MapClass c, const BetaPrior& prior) {
+  const std::vector<Term> terms = ClassTerms(c);
+  return Expectation(Product(terms, terms), prior) / Expectation(terms, prior);
+}
+
+double OracleRate(double p) {
+  p = std::clamp(p, 0.0, 1.0);
+  // f(q) = C + (A - C) q^3 + 3 (B - C) q^2 (1 - q); f'(q) = 3q [(A - 3B + 2C) q + 2 (B - C)].
+  const double a = ClassProbability(MapClass::kThreeOfThree, p);
+  const double b = ClassProbability(MapClass::kTwoOfThree, p);
+  const double c = ClassProbability(MapClass::kAtMostOne, p);
+  double best_q = 0, best = AgreementWithDraw(p, 0);
+  const auto consider = [&](double q) {
+    const double f = AgreementWithDraw(p, q);
+    if (f > best) best = f, best_q = q;
+  };
+  consider(1);
+  const double denom = a - 3 * b + 2 * c;
+  if (denom != 0) {
+    const double q = -2 * (b - c) / denom;
+    if (q > 0 && q < 1) consider(q);
+  }
+  return best_q;
+}
+
+double OracleAgreement(MapClass c, const BetaPrior& prior) {
+  // p = sin^2(theta): the prior's density in theta is 2 sin^(2a-1) cos^(2b-1), finite for
+  // a, b >= 0.5. Weights in logs so that Beta(1000, 1000) does not underflow.
+  constexpr int kNodes = 4000;
+  const double h = 0.5 * M_PI / kNodes;
+  std::vector<double> log_w(kNodes), p(kNodes);
+  double max_log = -INFINITY;
+  for (int k = 0; k < kNodes; ++k) {
+    const double theta = (k + 0.5) * h, s = std::sin(theta), co = std::cos(theta);
+    p[k] = s * s;
+    log_w[k] = (2 * prior.a - 1) * std::log(s) + (2 * prior.b - 1) * std::log(co);
+    max_log = std::max(max_log, log_w[k]);
+  }
+  double num = 0, den = 0;
+  for (int k = 0; k < kNodes; ++k) {
+    const double w = std::exp(log_w[k] - max_log) * ClassProbability(c, p[k]);
+    den += w;
+    num += w * ClassProbability(c, OracleRate(p[k]));
+  }
+  return den > 0 ? num / den : 0;
+}
+
+bool FitClassPrior(const std::array<int, 3>& counts, BetaPrior* prior, std::string* error) {
+  if (counts[0] < 0 || counts[1] < 0 || counts[2] < 0 || counts[0] + counts[1] + counts[2] == 0) {
+    *error = "the map's class counts must be non-negative and not all zero";
+    return false;
+  }
+  struct Data {
+    std::array<int, 3> n;
+  } data{counts};
+  const auto nll = [](const std::vector<double>& x, std::vector<double>&, void* d) {
+    const auto& n = static_cast<Data*>(d)->n;
+    const BetaPrior pr{std::exp(x[0]), std::exp(x[1])};
+    const MapClass classes[3] = {MapClass::kThreeOfThree, MapClass::kTwoOfThree,
+                                 MapClass::kAtMostOne};
+    double sum = 0;
+    for (int c = 0; c < 3; ++c) {
+      if (n[c] > 0) sum -= n[c] * std::log(std::max(PriorClassProbability(classes[c], pr), 1e-300));
+    }
+    return sum;
+  };
+  nlopt::opt opt(nlopt::LN_SBPLX, 2);
+  opt.set_lower_bounds({std::log(kMinBetaPrior), std::log(kMinBetaPrior)});
+  opt.set_upper_bounds({std::log(kMaxBetaPrior), std::log(kMaxBetaPrior)});
+  opt.set_min_objective(nll, &data);
+  opt.set_xtol_abs(1e-9);
+  opt.set_maxeval(4000);
+  std::vector<double> x = {0, 0};
+  double value = 0;
+  try {
+    opt.optimize(x, value);
+  } catch (const std::exception& e) {
+    *error = std::string("fitting the class prior: ") + e.what();
+    return false;
+  }
+  *prior = {std::exp(x[0]), std::exp(x[1])};
+  return true;
+}
+
+double ProbabilityAtLeast(const std::vector<double>& probabilities, int k) {
+  if (k <= 0) return 1;
+  std::vector<double> dist(probabilities.size() + 1, 0.0);  // dist[m] = P(m events so far)
+  dist[0] = 1;
+  for (std::size_t i = 0; i < probabilities.size(); ++i) {
+    const double q = std::clamp(probabilities[i], 0.0, 1.0);
+    for (std::size_t m = i + 1; m > 0; --m) dist[m] = dist[m] * (1 - q) + dist[m - 1] * q;
+    dist[0] *= 1 - q;
+  }
+  double sum = 0;
+  for (std::size_t m = static_cast<std::size_t>(k); m < dist.size(); ++m) sum += dist[m];
+  return sum;
+}
+
+bool ComputeMapCeilings(const std::vector<MapCell>& cells, double class_match_goal,
+                        std::vector<MapCeiling>* ceilings, std::string* error) {
+  if (cells.empty()) {
+    *error = "the map has no cells";
+    return false;
+  }
+  std::array<int, 3> counts{0, 0, 0};
+  for (const MapCell& cell : cells) ++counts[static_cast<int>(cell.published)];
+  BetaPrior fitted;
+  if (!FitClassPrior(counts, &fitted, error)) return false;
+  ceilings->clear();
+  const std::pair<const char*, BetaPrior> priors[] = {
+      {"fitted to the map's classes", fitted}, {"uniform", {1, 1}}, {"Jeffreys", {0.5, 0.5}}};
+  const int goal_cells =
+      static_cast<int>(std::ceil(class_match_goal * static_cast<double>(cells.size()) - 1e-9));
+  for (const auto& [name, prior] : priors) {
+    MapCeiling ceiling;
+    ceiling.prior_name = name;
+    ceiling.prior = prior;
+    // One integral per class, not per cell.
+    std::array<double, 3> rerun_of{}, oracle_of{};
+    for (MapClass c : {MapClass::kThreeOfThree, MapClass::kTwoOfThree, MapClass::kAtMostOne}) {
+      rerun_of[static_cast<int>(c)] = RerunAgreement(c, prior);
+      oracle_of[static_cast<int>(c)] = OracleAgreement(c, prior);
+    }
+    std::vector<double> rerun, oracle;
+    for (const MapCell& cell : cells) {
+      rerun.push_back(rerun_of[static_cast<int>(cell.published)]);
+      oracle.push_back(oracle_of[static_cast<int>(cell.published)]);
+      ceiling.rerun_agreement += rerun.back() / static_cast<double>(cells.size());
+      ceiling.oracle_agreement += oracle.back() / static_cast<double>(cells.size());
+    }
+    ceiling.rerun_reaches_goal = ProbabilityAtLeast(rerun, goal_cells);
+    ceiling.oracle_reaches_goal = ProbabilityAtLeast(oracle, goal_cells);
+    ceilings->push_back(ceiling);
+  }
+  return true;
+}
+
+}  // namespace ssc
