@@ -156,8 +156,123 @@ double ProbabilityAtLeast(const std::vector<double>& probabilities, int k) {
   return sum;
 }
 
+namespace {
+
+// The fewest matching cells that reach the goal.
+int GoalCells(double goal, std::size_t cells) {
+  return static_cast<int>(std::ceil(goal * static_cast<double>(cells) - 1e-9));
+}
+
+// The surface's features at each cell, beta and log10(P_ref) standardised over the map.
+std::vector<std::array<double, 6>> SurfaceFeatures(const std::vector<MapCell>& cells) {
+  const double n = static_cast<double>(cells.size());
+  double mb = 0, ml = 0, sb = 0, sl = 0;
+  for (const MapCell& c : cells) mb += c.beta / n, ml += std::log10(c.pref_pa) / n;
+  for (const MapCell& c : cells) {
+    sb += (c.beta - mb) * (c.beta - mb) / n;
+    sl += (std::log10(c.pref_pa) - ml) * (std::log10(c.pref_pa) - ml) / n;
+  }
+  sb = std::sqrt(sb), sl = std::sqrt(sl);
+  std::vector<std::array<double, 6>> x;
+  for (const MapCell& c : cells) {
+    const double b = sb > 0 ? (c.beta - mb) / sb : 0;
+    const double l = sl > 0 ? (std::log10(c.pref_pa) - ml) / sl : 0;
+    x.push_back({1, b, l, b * b, l * l, b * l});
+  }
+  return x;
+}
+
+double Logistic(const std::array<double, 6>& w, const std::array<double, 6>& x) {
+  double z = 0;
+  for (int k = 0; k < 6; ++k) z += w[k] * x[k];
+  return 1 / (1 + std::exp(-z));
+}
+
+struct SurfaceData {
+  const std::vector<std::array<double, 6>>* x;
+  const std::vector<MapCell>* cells;
+  int left_out;  // -1: none
+};
+
+double SurfaceNll(const std::vector<double>& w, std::vector<double>&, void* d) {
+  const auto* data = static_cast<SurfaceData*>(d);
+  std::array<double, 6> weights{};
+  std::copy(w.begin(), w.end(), weights.begin());
+  double sum = 0;
+  for (std::size_t i = 0; i < data->cells->size(); ++i) {
+    if (static_cast<int>(i) == data->left_out) continue;
+    const double p = Logistic(weights, (*data->x)[i]);
+    sum -= std::log(std::max(ClassProbability((*data->cells)[i].published, p), 1e-12));
+  }
+  return sum;
+}
+
+// Sbplx from `start`, then once more from where it stopped (a restart resizes the simplex).
+std::array<double, 6> FitSurface(SurfaceData* data, const std::array<double, 6>& start,
+                                 double* nll) {
+  std::vector<double> w(start.begin(), start.end());
+  for (int pass = 0; pass < 2; ++pass) {
+    nlopt::opt opt(nlopt::LN_SBPLX, 6);
+    opt.set_lower_bounds(std::vector<double>(6, -30.0));
+    opt.set_upper_bounds(std::vector<double>(6, 30.0));
+    opt.set_min_objective(SurfaceNll, data);
+    opt.set_xtol_abs(1e-7);
+    opt.set_maxeval(20000);
+    try {
+      opt.optimize(w, *nll);
+    } catch (const std::exception&) {
+      // A roundoff stop keeps the best point, which w holds.
+      std::vector<double> unused;
+      *nll = SurfaceNll(w, unused, data);
+    }
+  }
+  std::array<double, 6> out{};
+  std::copy(w.begin(), w.end(), out.begin());
+  return out;
+}
+
+}  // namespace
+
+std::vector<double> SurfaceRates(const std::vector<MapCell>& cells,
+                                 const std::array<double, 6>& weights) {
+  std::vector<double> p;
+  for (const auto& x : SurfaceFeatures(cells)) p.push_back(Logistic(weights, x));
+  return p;
+}
+
+SurfaceCeiling FitSurfaceCeiling(const std::vector<MapCell>& cells, double class_match_goal) {
+  SurfaceCeiling s;
+  std::vector<double> betas, prefs;
+  for (const MapCell& c : cells) betas.push_back(c.beta), prefs.push_back(c.pref_pa);
+  std::sort(betas.begin(), betas.end());
+  std::sort(prefs.begin(), prefs.end());
+  if (cells.size() < 8 || betas.front() == betas.back() || prefs.front() == prefs.back()) {
+    return s;
+  }
+  const auto x = SurfaceFeatures(cells);
+  SurfaceData data{&x, &cells, -1};
+  s.weights = FitSurface(&data, {}, &s.negative_log_likelihood);
+  s.fitted = true;
+  const double n = static_cast<double>(cells.size());
+  std::vector<double> rerun, oracle;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const double p = Logistic(s.weights, x[i]);
+    rerun.push_back(ClassProbability(cells[i].published, p));
+    oracle.push_back(ClassProbability(cells[i].published, OracleRate(p)));
+    s.rerun_agreement += rerun.back() / n;
+    s.oracle_agreement += oracle.back() / n;
+    SurfaceData others{&x, &cells, static_cast<int>(i)};
+    double nll = 0;
+    const auto w = FitSurface(&others, s.weights, &nll);
+    s.loo_agreement += ClassProbability(cells[i].published, Logistic(w, x[i])) / n;
+  }
+  s.rerun_reaches_goal = ProbabilityAtLeast(rerun, GoalCells(class_match_goal, cells.size()));
+  s.oracle_reaches_goal = ProbabilityAtLeast(oracle, GoalCells(class_match_goal, cells.size()));
+  return s;
+}
+
 bool ComputeMapCeilings(const std::vector<MapCell>& cells, double class_match_goal,
-                        std::vector<MapCeiling>* ceilings, std::string* error) {
+                        MapCeilings* ceilings, std::string* error) {
   if (cells.empty()) {
     *error = "the map has no cells";
     return false;
@@ -166,11 +281,11 @@ bool ComputeMapCeilings(const std::vector<MapCell>& cells, double class_match_go
   for (const MapCell& cell : cells) ++counts[static_cast<int>(cell.published)];
   BetaPrior fitted;
   if (!FitClassPrior(counts, &fitted, error)) return false;
-  ceilings->clear();
+  ceilings->priors.clear();
+  ceilings->surface = FitSurfaceCeiling(cells, class_match_goal);
   const std::pair<const char*, BetaPrior> priors[] = {
       {"fitted to the map's classes", fitted}, {"uniform", {1, 1}}, {"Jeffreys", {0.5, 0.5}}};
-  const int goal_cells =
-      static_cast<int>(std::ceil(class_match_goal * static_cast<double>(cells.size()) - 1e-9));
+  const int goal_cells = GoalCells(class_match_goal, cells.size());
   for (const auto& [name, prior] : priors) {
     MapCeiling ceiling;
     ceiling.prior_name = name;
@@ -190,7 +305,7 @@ bool ComputeMapCeilings(const std::vector<MapCell>& cells, double class_match_go
     }
     ceiling.rerun_reaches_goal = ProbabilityAtLeast(rerun, goal_cells);
     ceiling.oracle_reaches_goal = ProbabilityAtLeast(oracle, goal_cells);
-    ceilings->push_back(ceiling);
+    ceilings->priors.push_back(ceiling);
   }
   return true;
 }

@@ -50,6 +50,26 @@ bool FitClassPrior(const std::array<int, 3>& counts, BetaPrior* prior, std::stri
 // P(at least k of the independent events happen), exact (Poisson-binomial).
 double ProbabilityAtLeast(const std::vector<double>& probabilities, int k);
 
+// A smooth surface for the robot's success rate over a map: logit p = w . (1, b, l, b^2, l^2, b l)
+// with b, l the cell's beta and log10(P_ref) standardised over the map (the step is not a
+// feature: a map of one step). Fitted by maximum likelihood of the published classes (Sbplx,
+// weights within +-30). It borrows strength from neighbouring cells, which the per-cell priors
+// do not: the in-sample figures are what a smooth robot would give, the leave-one-out agreement
+// is how well 6 numbers fitted to the other cells predict each one (a baseline any twin with
+// physics should beat).
+struct SurfaceCeiling {
+  bool fitted = false;  // false when the map has fewer than 8 cells or one beta or one P_ref
+  std::array<double, 6> weights{};
+  double negative_log_likelihood = 0;
+  double rerun_agreement = 0, oracle_agreement = 0;        // in sample
+  double loo_agreement = 0;                                // each cell from a fit to the others
+  double rerun_reaches_goal = 0, oracle_reaches_goal = 0;  // in sample, as MapCeiling's
+};
+// The surface's success rate at each cell, from given weights.
+std::vector<double> SurfaceRates(const std::vector<MapCell>& cells,
+                                 const std::array<double, 6>& weights);
+SurfaceCeiling FitSurfaceCeiling(const std::vector<MapCell>& cells, double class_match_goal);
+
 struct MapCeiling {
   std::string prior_name;  // "fitted to the map's classes", "uniform", "Jeffreys"
   BetaPrior prior;
@@ -59,10 +79,14 @@ struct MapCeiling {
   double rerun_reaches_goal = 0, oracle_reaches_goal = 0;
 };
 
-// The ceiling under the prior fitted to the map's own classes, the uniform and the Jeffreys
-// prior. False + *error when the map has no cells.
+struct MapCeilings {
+  std::vector<MapCeiling>
+      priors;  // per-cell priors: fitted to the map's classes, uniform, Jeffreys
+  SurfaceCeiling surface;
+};
+// Every ceiling of a map. False + *error when the map has no cells.
 bool ComputeMapCeilings(const std::vector<MapCell>& cells, double class_match_goal,
-                        std::vector<MapCeiling>* ceilings, std::string* error);
+                        MapCeilings* ceilings, std::string* error);
 
 }  // namespace ssc
 

@@ -191,7 +191,7 @@ bool PrepareValidation(const ValidateSpec& spec, std::vector<MapCell>* cells, Sw
 bool RunValidation(const mjModel* m, const ValidateSpec& spec,
                    const std::function<void(const SweepProgress&)>& progress, MapScore* score,
                    SweepSummary* summary, std::string* error, std::vector<MetricTarget>* fig6,
-                   std::vector<MapCeiling>* ceilings) {
+                   MapCeilings* ceilings) {
   std::vector<MapCell> cells;
   SweepSpec sweep;
   if (!PrepareValidation(spec, &cells, &sweep, error)) return false;
@@ -255,13 +255,13 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
   j["opposite_cells"] = score->opposite;
   j["log_loss"] = score->log_loss;
   // What any twin can expect against these published classes (studies/map_ceiling.h).
-  std::vector<MapCeiling> ceiling_list;
+  MapCeilings ceiling_list;
   if (!ComputeMapCeilings(cells, kClassMatchGoal, &ceiling_list, error)) {
     *error = spec.map_path + ": " + *error;
     return false;
   }
   j["ceilings"] = nlohmann::json::array();
-  for (const MapCeiling& ceiling : ceiling_list) {
+  for (const MapCeiling& ceiling : ceiling_list.priors) {
     j["ceilings"].push_back({{"prior", ceiling.prior_name},
                              {"prior_a", ceiling.prior.a},
                              {"prior_b", ceiling.prior.b},
@@ -270,6 +270,17 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
                              {"class_match_goal", kClassMatchGoal},
                              {"rerun_reaches_goal", ceiling.rerun_reaches_goal},
                              {"oracle_reaches_goal", ceiling.oracle_reaches_goal}});
+  }
+  if (ceiling_list.surface.fitted) {
+    const SurfaceCeiling& s = ceiling_list.surface;
+    j["surface_ceiling"] = {{"weights", s.weights},
+                            {"negative_log_likelihood", s.negative_log_likelihood},
+                            {"rerun_agreement", s.rerun_agreement},
+                            {"oracle_agreement", s.oracle_agreement},
+                            {"loo_agreement", s.loo_agreement},
+                            {"class_match_goal", kClassMatchGoal},
+                            {"rerun_reaches_goal", s.rerun_reaches_goal},
+                            {"oracle_reaches_goal", s.oracle_reaches_goal}};
   }
   j["fig6_targets"] = nlohmann::json::array();
   for (const MetricTarget& t : targets) {

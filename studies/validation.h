@@ -45,8 +45,7 @@ struct MetricTarget;  // studies/success_map_fit.h
 bool RunValidation(const mjModel* m, const ValidateSpec& spec,
                    const std::function<void(const SweepProgress&)>& progress, MapScore* score,
                    SweepSummary* summary, std::string* error,
-                   std::vector<MetricTarget>* fig6 = nullptr,
-                   std::vector<MapCeiling>* ceilings = nullptr);
+                   std::vector<MetricTarget>* fig6 = nullptr, MapCeilings* ceilings = nullptr);
 
 // One trial of a map cell, in memory (for fits: no disk).
 struct MapTrial {

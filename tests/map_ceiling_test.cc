@@ -122,9 +122,10 @@ TEST(MapCeilingTest, CeilingsOfAMap) {
   for (int i = 0; i < 16; ++i) {
     cells.push_back({5, 1, 100, i < 4 ? kThree : (i < 8 ? kTwo : kAtMostOne)});
   }
-  std::vector<MapCeiling> ceilings;
+  MapCeilings all;
   std::string error;
-  ASSERT_TRUE(ComputeMapCeilings(cells, 0.75, &ceilings, &error)) << error;
+  ASSERT_TRUE(ComputeMapCeilings(cells, 0.75, &all, &error)) << error;
+  const std::vector<MapCeiling>& ceilings = all.priors;
   ASSERT_EQ(ceilings.size(), 3u);
   const double rerun = (4 * 4.0 / 7 + 4 * 12.0 / 35 + 8 * 26.0 / 35) / 16;
   EXPECT_NEAR(ceilings[0].rerun_agreement, rerun, 1e-3);  // fitted = uniform, to the fit
@@ -136,8 +137,44 @@ TEST(MapCeilingTest, CeilingsOfAMap) {
     EXPECT_GE(c.oracle_agreement, 0.0);
     EXPECT_LE(c.oracle_agreement, 1.0);
   }
-  EXPECT_FALSE(ComputeMapCeilings({}, 0.75, &ceilings, &error));
+  EXPECT_FALSE(all.surface.fitted);  // one beta, one P_ref
+  EXPECT_FALSE(ComputeMapCeilings({}, 0.75, &all, &error));
   EXPECT_NE(error.find("no cells"), std::string::npos);
+}
+
+// The map's classes drawn as the likeliest class of a known smooth surface: the fit explains
+// them at least as well as that surface does, and borrows strength the per-cell prior cannot.
+TEST(MapCeilingTest, SurfaceFitsAMapDrawnFromASurface) {
+  std::vector<MapCell> cells;
+  for (double beta = 0.5; beta <= 4.0; beta += 0.5) {
+    for (double pref : {40.0, 70.0, 100.0, 150.0, 200.0, 300.0}) {
+      cells.push_back({5, beta, pref, kThree});
+    }
+  }
+  const std::array<double, 6> truth = {2.0, 0.5, -1.5, -1.5, -0.5, -0.5};
+  const std::vector<double> p_true = SurfaceRates(cells, truth);
+  double truth_nll = 0;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const double p3 = ClassProbability(kThree, p_true[i]), p2 = ClassProbability(kTwo, p_true[i]);
+    const double p1 = ClassProbability(kAtMostOne, p_true[i]);
+    cells[i].published = p3 >= p2 && p3 >= p1 ? kThree : (p2 >= p1 ? kTwo : kAtMostOne);
+    truth_nll -= std::log(ClassProbability(cells[i].published, p_true[i]));
+  }
+  const SurfaceCeiling s = FitSurfaceCeiling(cells, 0.75);
+  ASSERT_TRUE(s.fitted);
+  EXPECT_LE(s.negative_log_likelihood, truth_nll + 1e-9);
+  double rerun = 0;
+  const std::vector<double> p_fit = SurfaceRates(cells, s.weights);
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    rerun += ClassProbability(cells[i].published, p_fit[i]) / static_cast<double>(cells.size());
+  }
+  EXPECT_NEAR(s.rerun_agreement, rerun, 1e-12);
+  MapCeilings all;
+  std::string error;
+  ASSERT_TRUE(ComputeMapCeilings(cells, 0.75, &all, &error)) << error;
+  EXPECT_GT(s.rerun_agreement, all.priors[0].rerun_agreement);
+  EXPECT_GT(s.loo_agreement, 0.0);
+  EXPECT_LE(s.loo_agreement, s.rerun_agreement + 0.05);
 }
 
 }  // namespace
