@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <sstream>
 
 #include "controller/pure/trial_outcome.h"
@@ -125,6 +126,27 @@ bool ScoreMap(const std::vector<MapCell>& cells, const std::vector<CellTrials>& 
   score->expected_agreement = agreement / n;
   score->log_loss = loss / n;
   return true;
+}
+
+std::array<double, 2> AgreementInterval(const std::vector<CellScore>& cells, int draws,
+                                        unsigned long long seed) {
+  if (cells.empty() || draws < 2) return {0, 0};
+  std::mt19937_64 rng(seed);
+  std::vector<double> agreement(static_cast<std::size_t>(draws), 0.0);
+  const double n = static_cast<double>(cells.size());
+  for (const CellScore& c : cells) {
+    std::gamma_distribution<double> yes(c.successes + 0.5, 1.0);
+    std::gamma_distribution<double> no(c.trials - c.successes + 0.5, 1.0);
+    for (double& a : agreement) {
+      const double x = yes(rng), y = no(rng);
+      a += ClassProbability(c.cell.published, x / (x + y)) / n;
+    }
+  }
+  std::sort(agreement.begin(), agreement.end());
+  const auto at = [&](double q) {
+    return agreement[static_cast<std::size_t>(std::lround(q * (draws - 1)))];
+  };
+  return {at(0.025), at(0.975)};
 }
 
 }  // namespace ssc

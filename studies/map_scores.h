@@ -69,6 +69,12 @@ struct MapScore {
 bool ScoreMap(const std::vector<MapCell>& cells, const std::vector<CellTrials>& trials,
               MapScore* score, std::string* error);
 
+// The 95 % interval of the expected agreement that comes from the twin's finite seeds: each
+// cell's rate drawn from its posterior Beta(k + 1/2, n - k + 1/2) (Jeffreys), the agreement
+// recomputed, `draws` times; the 2.5 and 97.5 percentiles. Deterministic for a given seed.
+std::array<double, 2> AgreementInterval(const std::vector<CellScore>& cells, int draws = 4000,
+                                        unsigned long long seed = 1);
+
 }  // namespace ssc
 
 #endif  // SSC_STUDIES_MAP_SCORES_H_

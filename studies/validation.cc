@@ -252,6 +252,7 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
   j["cells"] = score->cells_scored;
   j["class_match"] = score->class_match;
   j["expected_agreement"] = score->expected_agreement;
+  j["expected_agreement_interval"] = AgreementInterval(score->cells);
   j["opposite_cells"] = score->opposite;
   j["log_loss"] = score->log_loss;
   // What any twin can expect against these published classes (studies/map_ceiling.h).

@@ -183,6 +183,30 @@ TEST(ValidationStudyTest, ATinyMapGetsTheKnownScores) {
 
 // The shipped map's smooth-surface ceiling: Sbplx reaches what an independent random search
 // (numpy, 20 restarts of 3000 steps) found, negative log-likelihood 22.70.
+TEST(MapScoresTest, AgreementIntervalNarrowsWithSeedsAsOneOverRootN) {
+  // Two cells at a 70 % twin rate, published 3/3 and 2/3.
+  const auto cells_at = [](int trials) {
+    std::vector<CellScore> cells(2);
+    cells[0].cell.published = MapClass::kThreeOfThree;
+    cells[1].cell.published = MapClass::kTwoOfThree;
+    for (CellScore& c : cells) c.trials = trials, c.successes = 7 * trials / 10;
+    return cells;
+  };
+  const double point = (ClassProbability(MapClass::kThreeOfThree, 0.7) +
+                        ClassProbability(MapClass::kTwoOfThree, 0.7)) /
+                       2;
+  const auto small = AgreementInterval(cells_at(10)), large = AgreementInterval(cells_at(160));
+  EXPECT_LT(small[0], point);
+  EXPECT_GT(small[1], point);
+  EXPECT_LT(large[0], point);
+  EXPECT_GT(large[1], point);
+  const double ratio = (small[1] - small[0]) / (large[1] - large[0]);
+  EXPECT_GT(ratio, 2.5);  // sqrt(16) = 4
+  EXPECT_LT(ratio, 6.0);
+  EXPECT_EQ(AgreementInterval(cells_at(10)), small);  // deterministic
+  EXPECT_NE(AgreementInterval(cells_at(10), 4000, 2), small);
+}
+
 TEST(MapCeilingTest, SurfaceOnThePublishedMapReachesAnIndependentSearch) {
   std::vector<MapCell> cells;
   std::string error;
