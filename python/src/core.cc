@@ -484,18 +484,41 @@ NB_MODULE(_core, m) {
         ModelPtr model = Load(scene);
         MapScore score;
         SweepSummary summary;
+        MapCeilings ceilings;
         bool ok = false;
         {
           nb::gil_scoped_release release;
-          ok = RunValidation(model.get(), spec, nullptr, &score, &summary, &error);
+          ok = RunValidation(model.get(), spec, nullptr, &score, &summary, &error, nullptr,
+                             &ceilings);
         }
         if (!ok) Fail(error);
+        const std::array<double, 2> interval = AgreementInterval(score.cells);
         nb::dict d;
         d["scores"] = Dict({{"cells", nb::cast(score.cells_scored)},
                             {"class_match", nb::cast(score.class_match)},
                             {"expected_agreement", nb::cast(score.expected_agreement)},
+                            {"expected_agreement_interval",
+                             nb::cast(std::vector<double>(interval.begin(), interval.end()))},
                             {"opposite_cells", nb::cast(score.opposite)},
                             {"log_loss", nb::cast(score.log_loss)}});
+        // What any twin can expect on this map (validate.json's "ceilings", "surface_ceiling").
+        nb::list priors;
+        for (const MapCeiling& c : ceilings.priors) {
+          priors.append(Dict({{"prior", nb::cast(c.prior_name)},
+                              {"prior_a", nb::cast(c.prior.a)},
+                              {"prior_b", nb::cast(c.prior.b)},
+                              {"rerun_agreement", nb::cast(c.rerun_agreement)},
+                              {"oracle_agreement", nb::cast(c.oracle_agreement)},
+                              {"rerun_reaches_goal", nb::cast(c.rerun_reaches_goal)},
+                              {"oracle_reaches_goal", nb::cast(c.oracle_reaches_goal)}}));
+        }
+        d["ceilings"] = priors;
+        if (ceilings.surface.fitted) {
+          const SurfaceCeiling& s = ceilings.surface;
+          d["surface_ceiling"] = Dict({{"rerun_agreement", nb::cast(s.rerun_agreement)},
+                                       {"oracle_agreement", nb::cast(s.oracle_agreement)},
+                                       {"loo_agreement", nb::cast(s.loo_agreement)}});
+        }
         d["cells"] = CellsDict(score.cells);
         d["summary"] = Dict({{"total", nb::cast(summary.total)},
                              {"ran", nb::cast(summary.ran)},

@@ -132,6 +132,11 @@ class PackageTest(unittest.TestCase):
             self.assertEqual(value, cli[key], key)
         for key in ("seeds_per_cell", "base_seed", "effects", "scene"):
             self.assertEqual(py[key], cli[key], key)
+        # The map's ceilings (what any twin can expect), the same doubles as validate.json's.
+        self.assertEqual(len(py["ceilings"]), 3)
+        for mine, theirs in zip(py["ceilings"], cli["ceilings"]):
+            for key, value in mine.items():
+                self.assertEqual(value, theirs[key], key)
 
         # The cells: every cells.csv column (printed to 6 significant digits), in map order.
         with open(os.path.join(cli_dir, "cells.csv")) as f:
