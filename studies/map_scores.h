@@ -10,6 +10,7 @@
 #define SSC_STUDIES_MAP_SCORES_H_
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,8 @@ struct CellScore {
   // The most common failure (its OutcomeName: "failure_I", "failure_II", "timeout",
   // "unstable", "lost_edge"; "" if none).
   std::string main_failure;
+  // The smooth surface's success rate here (studies/map_ceiling.h), NaN when none was fitted.
+  double surface_p = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct MapScore {

@@ -223,18 +223,28 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
   std::vector<MetricTarget> targets = PublishedMetricTargets();
   MeasureMetricTargets(cells, results, &targets);
 
+  // What any twin can expect against these published classes (studies/map_ceiling.h).
+  MapCeilings ceiling_list;
+  if (!ComputeMapCeilings(cells, kClassMatchGoal, &ceiling_list, error)) {
+    *error = spec.map_path + ": " + *error;
+    return false;
+  }
+  if (ceiling_list.surface.fitted) {
+    const std::vector<double> p = SurfaceRates(cells, ceiling_list.surface.weights);
+    for (std::size_t i = 0; i < p.size(); ++i) score->cells[i].surface_p = p[i];
+  }
   const std::string cells_csv = spec.out_dir + "/cells.csv";
   std::ofstream c(cells_csv);
   c << "step_mm,beta,pref_pa,published,twin_class,successes_of_3,successes,trials,p_success,"
        "p_low,p_high,expected_agreement,opposite,failure_I,failure_II,timeout,unstable,"
-       "main_failure\n";
+       "main_failure,surface_p\n";
   for (const CellScore& s : score->cells) {
     c << s.cell.step_mm << ',' << s.cell.beta << ',' << s.cell.pref_pa << ','
       << MapClassName(s.cell.published) << ',' << MapClassName(s.twin_class) << ','
       << s.successes_of_3 << ',' << s.successes << ',' << s.trials << ',' << s.p_success << ','
       << s.p_interval[0] << ',' << s.p_interval[1] << ',' << s.expected_agreement << ','
       << (s.opposite ? 1 : 0) << ',' << s.failure_off_edge << ',' << s.failure_grasp << ','
-      << s.timeout << ',' << s.unstable << ',' << s.main_failure << '\n';
+      << s.timeout << ',' << s.unstable << ',' << s.main_failure << ',' << s.surface_p << '\n';
   }
   if (!c) {
     *error = cells_csv + ": write failed";
@@ -255,12 +265,6 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
   j["expected_agreement_interval"] = AgreementInterval(score->cells);
   j["opposite_cells"] = score->opposite;
   j["log_loss"] = score->log_loss;
-  // What any twin can expect against these published classes (studies/map_ceiling.h).
-  MapCeilings ceiling_list;
-  if (!ComputeMapCeilings(cells, kClassMatchGoal, &ceiling_list, error)) {
-    *error = spec.map_path + ": " + *error;
-    return false;
-  }
   j["ceilings"] = nlohmann::json::array();
   for (const MapCeiling& ceiling : ceiling_list.priors) {
     j["ceilings"].push_back({{"prior", ceiling.prior_name},

@@ -1,6 +1,12 @@
 #!/usr/bin/env python3
-"""Published | twin | difference for `ssc validate` (cells.csv), one row of panels per step."""
+"""Published | twin | difference | smooth surface for `ssc validate` (cells.csv), a row per step.
+
+The fourth panel (when validate fitted one) is the smooth surface's success rate: 6 numbers
+fitted to the published classes alone (studies/map_ceiling.h), a robot without the noise of
+one 3-trial draw. Where the twin departs from it, physics is missing.
+"""
 import csv
+import math
 import sys
 
 import matplotlib
@@ -15,20 +21,26 @@ CLASS_VALUE = {"<=1": 0, "2": 1, "3": 2}
 def main(cells_csv, out_png):
     rows = list(csv.DictReader(open(cells_csv)))
     steps = sorted({float(r["step_mm"]) for r in rows})
-    fig, axes = plt.subplots(len(steps), 3, figsize=(13, 4.2 * len(steps)), squeeze=False)
+    surface = any(not math.isnan(float(r.get("surface_p", "nan") or "nan")) for r in rows)
+    panels = 4 if surface else 3
+    fig, axes = plt.subplots(len(steps), panels, figsize=(4.4 * panels, 4.2 * len(steps)),
+                             squeeze=False)
     cmap = ListedColormap(["#d7301f", "#fdae61", "#1a9850"])
     for si, step in enumerate(steps):
         sub = [r for r in rows if float(r["step_mm"]) == step]
         betas = sorted({float(r["beta"]) for r in sub})
         prefs = sorted({float(r["pref_pa"]) for r in sub})
-        grids = [[[None] * len(prefs) for _ in betas] for _ in range(3)]
+        grids = [[[None] * len(prefs) for _ in betas] for _ in range(panels)]
         for r in sub:
             i, j = betas.index(float(r["beta"])), prefs.index(float(r["pref_pa"]))
             grids[0][i][j] = CLASS_VALUE[r["published"]]
             grids[1][i][j] = float(r["p_success"])
             grids[2][i][j] = float(r["p_success"]) * 3 - (CLASS_VALUE[r["published"]] + 1)
+            if surface:
+                grids[3][i][j] = float(r["surface_p"])
         titles = ["published (class of 3 trials)", "twin: success rate over seeds",
-                  "twin minus published (expected successes of 3)"]
+                  "twin minus published (expected successes of 3)",
+                  "smooth surface fitted to the published classes"]
         for k, ax in enumerate(axes[si]):
             for i, _ in enumerate(betas):
                 for j, _ in enumerate(prefs):
@@ -39,7 +51,7 @@ def main(cells_csv, out_png):
                     if k == 0:
                         color = cmap(v / 2)
                         text = ["<=1", "2", "3"][v]
-                    elif k == 1:
+                    elif k in (1, 3):
                         color = plt.cm.RdYlGn(v)
                         text = f"{v:.1f}"
                     else:

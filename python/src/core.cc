@@ -219,7 +219,7 @@ ContourLawParams Law(double pref, double beta, double step_mm) {
 // The per-cell results of a validation as cells.csv has them (one entry per cell, map order):
 // NumPy arrays of numbers and counts, lists of class / failure names.
 nb::dict CellsDict(const std::vector<CellScore>& cells) {
-  std::vector<double> step, beta, pref, p, p_low, p_high, agreement;
+  std::vector<double> step, beta, pref, p, p_low, p_high, agreement, surface_p;
   std::vector<std::int64_t> of3, successes, trials, off_edge, grasp, timeout, unstable, lost;
   std::vector<bool> match, opposite;
   std::vector<std::string> published, twin, main_failure;
@@ -244,6 +244,7 @@ nb::dict CellsDict(const std::vector<CellScore>& cells) {
     unstable.push_back(c.unstable);
     lost.push_back(c.lost_edge);
     main_failure.push_back(c.main_failure);
+    surface_p.push_back(c.surface_p);
   }
   nb::dict d;
   d["step_mm"] = Column(step);
@@ -266,6 +267,7 @@ nb::dict CellsDict(const std::vector<CellScore>& cells) {
   d["unstable"] = Column(unstable);
   d["lost_edge"] = Column(lost);
   d["main_failure"] = nb::cast(main_failure);  // "" when every trial succeeded
+  d["surface_p"] = Column(surface_p);          // the smooth surface's rate (NaN: none fitted)
   return d;
 }
 
