@@ -12,16 +12,15 @@ struct Term {
   double coef;
   int i, j;
 };
+// Built from the class of each k of 3 (ClassOfSuccesses, the classes' one home): the binomial
+// terms C(3, k) p^k (1-p)^(3-k) of the k that fall in class c.
 std::vector<Term> ClassTerms(MapClass c) {
-  switch (c) {
-    case MapClass::kThreeOfThree:
-      return {{1, 3, 0}};
-    case MapClass::kTwoOfThree:
-      return {{3, 2, 1}};
-    case MapClass::kAtMostOne:
-      return {{1, 0, 3}, {3, 1, 2}};
+  constexpr double kChoose[4] = {1, 3, 3, 1};
+  std::vector<Term> terms;
+  for (int k = 0; k <= 3; ++k) {
+    if (ClassOfSuccesses(k) == c) terms.push_back({kChoose[k], k, 3 - k});
   }
-  return {};
+  return terms;
 }
 
 double LogBeta(double a, double b) { return std::lgamma(a) + std::lgamma(b) - std::lgamma(a + b); }

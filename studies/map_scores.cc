@@ -125,6 +125,7 @@ bool ScoreMap(const std::vector<MapCell>& cells, const std::vector<CellTrials>& 
   score->class_match = match / n;
   score->expected_agreement = agreement / n;
   score->log_loss = loss / n;
+  score->agreement_interval = AgreementInterval(score->cells);
   return true;
 }
 

@@ -61,8 +61,9 @@ struct CellScore {
 struct MapScore {
   std::vector<CellScore> cells;
   int cells_scored = 0;
-  double class_match = 0;         // fraction of cells
-  double expected_agreement = 0;  // mean over cells
+  double class_match = 0;                      // fraction of cells
+  double expected_agreement = 0;               // mean over cells
+  std::array<double, 2> agreement_interval{};  // 95 %, from the seeds (AgreementInterval)
   int opposite = 0;
   // The fit's map term: mean over cells of -log(max(P(class), floor)), floor 0.01.
   double log_loss = 0;

@@ -262,7 +262,7 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
   j["cells"] = score->cells_scored;
   j["class_match"] = score->class_match;
   j["expected_agreement"] = score->expected_agreement;
-  j["expected_agreement_interval"] = AgreementInterval(score->cells);
+  j["expected_agreement_interval"] = score->agreement_interval;
   j["opposite_cells"] = score->opposite;
   j["log_loss"] = score->log_loss;
   j["ceilings"] = nlohmann::json::array();

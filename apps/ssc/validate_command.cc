@@ -101,9 +101,8 @@ int RunValidateCommand(int argc, char** argv) {
               score.cells_scored, spec.seeds, static_cast<unsigned long long>(spec.seed),
               summary.ran, summary.wall_s);
   std::printf("  class match (3 trials/cell)   %.1f %%\n", 100 * score.class_match);
-  const std::array<double, 2> interval = AgreementInterval(score.cells);
   std::printf("  expected agreement            %.3f (95 %% interval from the seeds %.3f-%.3f)\n",
-              score.expected_agreement, interval[0], interval[1]);
+              score.expected_agreement, score.agreement_interval[0], score.agreement_interval[1]);
   std::printf("  opposite cells                %d\n", score.opposite);
   std::printf(
       "what any twin can expect here (each published class is one draw of 3 robot trials;\n"

@@ -494,13 +494,13 @@ NB_MODULE(_core, m) {
                              &ceilings);
         }
         if (!ok) Fail(error);
-        const std::array<double, 2> interval = AgreementInterval(score.cells);
         nb::dict d;
         d["scores"] = Dict({{"cells", nb::cast(score.cells_scored)},
                             {"class_match", nb::cast(score.class_match)},
                             {"expected_agreement", nb::cast(score.expected_agreement)},
                             {"expected_agreement_interval",
-                             nb::cast(std::vector<double>(interval.begin(), interval.end()))},
+                             nb::cast(std::vector<double>(score.agreement_interval.begin(),
+                                                          score.agreement_interval.end()))},
                             {"opposite_cells", nb::cast(score.opposite)},
                             {"log_loss", nb::cast(score.log_loss)}});
         // What any twin can expect on this map (validate.json's "ceilings", "surface_ceiling").
