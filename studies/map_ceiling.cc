@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <nlopt.hpp>
 
 namespace ssc {
@@ -270,6 +271,22 @@ SurfaceCeiling FitSurfaceCeiling(const std::vector<MapCell>& cells, double class
   return s;
 }
 
+std::vector<double> SurfaceRatesOfMap(const std::vector<MapCell>& cells,
+                                      const MapCeilings& ceilings) {
+  std::vector<double> rates(cells.size(), std::numeric_limits<double>::quiet_NaN());
+  for (const SurfaceCeiling& s : ceilings.surfaces) {
+    if (!s.fitted) continue;
+    std::vector<MapCell> of_step;
+    std::vector<std::size_t> index;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      if (cells[i].step_mm == s.step_mm) of_step.push_back(cells[i]), index.push_back(i);
+    }
+    const std::vector<double> p = SurfaceRates(of_step, s.weights);
+    for (std::size_t k = 0; k < p.size(); ++k) rates[index[k]] = p[k];
+  }
+  return rates;
+}
+
 bool ComputeMapCeilings(const std::vector<MapCell>& cells, double class_match_goal,
                         MapCeilings* ceilings, std::string* error) {
   if (cells.empty()) {
@@ -281,7 +298,21 @@ bool ComputeMapCeilings(const std::vector<MapCell>& cells, double class_match_go
   BetaPrior fitted;
   if (!FitClassPrior(counts, &fitted, error)) return false;
   ceilings->priors.clear();
-  ceilings->surface = FitSurfaceCeiling(cells, class_match_goal);
+  ceilings->surfaces.clear();
+  std::vector<double> steps;
+  for (const MapCell& cell : cells) {
+    if (std::find(steps.begin(), steps.end(), cell.step_mm) == steps.end()) {
+      steps.push_back(cell.step_mm);
+    }
+  }
+  for (double step : steps) {
+    std::vector<MapCell> of_step;
+    for (const MapCell& cell : cells) {
+      if (cell.step_mm == step) of_step.push_back(cell);
+    }
+    ceilings->surfaces.push_back(FitSurfaceCeiling(of_step, class_match_goal));
+    ceilings->surfaces.back().step_mm = step;
+  }
   const std::pair<const char*, BetaPrior> priors[] = {
       {"fitted to the map's classes", fitted}, {"uniform", {1, 1}}, {"Jeffreys", {0.5, 0.5}}};
   const int goal_cells = GoalCells(class_match_goal, cells.size());

@@ -58,7 +58,8 @@ double ProbabilityAtLeast(const std::vector<double>& probabilities, int k);
 // is how well 6 numbers fitted to the other cells predict each one (a baseline any twin with
 // physics should beat).
 struct SurfaceCeiling {
-  bool fitted = false;  // false when the map has fewer than 8 cells or one beta or one P_ref
+  double step_mm = 0;   // the step whose cells it was fitted to (one surface per step)
+  bool fitted = false;  // false when the step has fewer than 8 cells or one beta or one P_ref
   std::array<double, 6> weights{};
   double negative_log_likelihood = 0;
   double rerun_agreement = 0, oracle_agreement = 0;        // in sample
@@ -80,10 +81,15 @@ struct MapCeiling {
 };
 
 struct MapCeilings {
-  std::vector<MapCeiling>
-      priors;  // per-cell priors: fitted to the map's classes, uniform, Jeffreys
-  SurfaceCeiling surface;
+  // Per-cell priors: fitted to the map's classes, uniform, Jeffreys.
+  std::vector<MapCeiling> priors;
+  // One surface per step of the map, in order of first appearance: the features hold no step,
+  // so cells of different steps are never fitted together.
+  std::vector<SurfaceCeiling> surfaces;
 };
+// Each cell's rate on its step's surface; NaN where that surface was not fitted.
+std::vector<double> SurfaceRatesOfMap(const std::vector<MapCell>& cells,
+                                      const MapCeilings& ceilings);
 // Every ceiling of a map. False + *error when the map has no cells.
 bool ComputeMapCeilings(const std::vector<MapCell>& cells, double class_match_goal,
                         MapCeilings* ceilings, std::string* error);

@@ -229,10 +229,8 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
     *error = spec.map_path + ": " + *error;
     return false;
   }
-  if (ceiling_list.surface.fitted) {
-    const std::vector<double> p = SurfaceRates(cells, ceiling_list.surface.weights);
-    for (std::size_t i = 0; i < p.size(); ++i) score->cells[i].surface_p = p[i];
-  }
+  const std::vector<double> surface_p = SurfaceRatesOfMap(cells, ceiling_list);
+  for (std::size_t i = 0; i < surface_p.size(); ++i) score->cells[i].surface_p = surface_p[i];
   const std::string cells_csv = spec.out_dir + "/cells.csv";
   std::ofstream c(cells_csv);
   c << "step_mm,beta,pref_pa,published,twin_class,successes_of_3,successes,trials,p_success,"
@@ -276,16 +274,18 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
                              {"rerun_reaches_goal", ceiling.rerun_reaches_goal},
                              {"oracle_reaches_goal", ceiling.oracle_reaches_goal}});
   }
-  if (ceiling_list.surface.fitted) {
-    const SurfaceCeiling& s = ceiling_list.surface;
-    j["surface_ceiling"] = {{"weights", s.weights},
-                            {"negative_log_likelihood", s.negative_log_likelihood},
-                            {"rerun_agreement", s.rerun_agreement},
-                            {"oracle_agreement", s.oracle_agreement},
-                            {"loo_agreement", s.loo_agreement},
-                            {"class_match_goal", kClassMatchGoal},
-                            {"rerun_reaches_goal", s.rerun_reaches_goal},
-                            {"oracle_reaches_goal", s.oracle_reaches_goal}};
+  j["surface_ceilings"] = nlohmann::json::array();
+  for (const SurfaceCeiling& s : ceiling_list.surfaces) {
+    if (!s.fitted) continue;
+    j["surface_ceilings"].push_back({{"step_mm", s.step_mm},
+                                     {"weights", s.weights},
+                                     {"negative_log_likelihood", s.negative_log_likelihood},
+                                     {"rerun_agreement", s.rerun_agreement},
+                                     {"oracle_agreement", s.oracle_agreement},
+                                     {"loo_agreement", s.loo_agreement},
+                                     {"class_match_goal", kClassMatchGoal},
+                                     {"rerun_reaches_goal", s.rerun_reaches_goal},
+                                     {"oracle_reaches_goal", s.oracle_reaches_goal}});
   }
   j["fig6_targets"] = nlohmann::json::array();
   for (const MetricTarget& t : targets) {

@@ -137,7 +137,8 @@ TEST(MapCeilingTest, CeilingsOfAMap) {
     EXPECT_GE(c.oracle_agreement, 0.0);
     EXPECT_LE(c.oracle_agreement, 1.0);
   }
-  EXPECT_FALSE(all.surface.fitted);  // one beta, one P_ref
+  ASSERT_EQ(all.surfaces.size(), 1u);
+  EXPECT_FALSE(all.surfaces[0].fitted);  // one beta, one P_ref
   EXPECT_FALSE(ComputeMapCeilings({}, 0.75, &all, &error));
   EXPECT_NE(error.find("no cells"), std::string::npos);
 }
@@ -175,6 +176,23 @@ TEST(MapCeilingTest, SurfaceFitsAMapDrawnFromASurface) {
   EXPECT_GT(s.rerun_agreement, all.priors[0].rerun_agreement);
   EXPECT_GT(s.loo_agreement, 0.0);
   EXPECT_LE(s.loo_agreement, s.rerun_agreement + 0.05);
+
+  // The same map at a second step with every class "<= 1": one surface per step, each the fit
+  // of its own cells alone, and each cell's rate from its own step's surface.
+  std::vector<MapCell> two_steps = cells;
+  for (MapCell cell : cells) {
+    cell.step_mm = 7.5;
+    cell.published = kAtMostOne;
+    two_steps.push_back(cell);
+  }
+  ASSERT_TRUE(ComputeMapCeilings(two_steps, 0.75, &all, &error)) << error;
+  ASSERT_EQ(all.surfaces.size(), 2u);
+  EXPECT_EQ(all.surfaces[0].step_mm, 5.0);
+  EXPECT_EQ(all.surfaces[1].step_mm, 7.5);
+  EXPECT_DOUBLE_EQ(all.surfaces[0].negative_log_likelihood, s.negative_log_likelihood);
+  const std::vector<double> rates = SurfaceRatesOfMap(two_steps, all);
+  EXPECT_NEAR(rates[0], p_fit[0], 1e-12);
+  for (std::size_t i = cells.size(); i < two_steps.size(); ++i) EXPECT_LT(rates[i], 0.05);
 }
 
 }  // namespace

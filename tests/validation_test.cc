@@ -163,7 +163,8 @@ TEST(ValidationStudyTest, ATinyMapGetsTheKnownScores) {
   ASSERT_EQ(ceilings.priors.size(), 3u);
   EXPECT_EQ(ceilings.priors[1].prior_name, "uniform");
   EXPECT_NEAR(ceilings.priors[1].rerun_agreement, 4.0 / 7, 1e-12);
-  EXPECT_FALSE(ceilings.surface.fitted);  // two cells, one P_ref: no surface
+  ASSERT_EQ(ceilings.surfaces.size(), 1u);
+  EXPECT_FALSE(ceilings.surfaces[0].fitted);  // two cells, one P_ref: no surface
   EXPECT_EQ(score.cells[0].successes, 3);
   EXPECT_EQ(score.cells[1].successes, 0);
   EXPECT_EQ(score.cells[1].failure_off_edge, 3);

@@ -117,11 +117,13 @@ int RunValidateCommand(int argc, char** argv) {
                 c.oracle_agreement, c.rerun_reaches_goal, c.oracle_reaches_goal,
                 100 * kClassMatchGoal);
   }
-  if (ceilings.surface.fitted) {
-    const SurfaceCeiling& s = ceilings.surface;
-    std::printf("  %-46s %-8.3f %-8.3f %.3f / %.3f\n", "a smooth surface (6 weights, in sample)",
-                s.rerun_agreement, s.oracle_agreement, s.rerun_reaches_goal, s.oracle_reaches_goal);
-    std::printf("  the surface fitted to the other cells predicts each at %.3f (leave-one-out)\n",
+  for (const SurfaceCeiling& s : ceilings.surfaces) {
+    if (!s.fitted) continue;
+    char name[96];
+    std::snprintf(name, sizeof name, "a smooth surface at dL %g mm (in sample)", s.step_mm);
+    std::printf("  %-46s %-8.3f %-8.3f %.3f / %.3f\n", name, s.rerun_agreement, s.oracle_agreement,
+                s.rerun_reaches_goal, s.oracle_reaches_goal);
+    std::printf("  that surface fitted to the other cells predicts each at %.3f (leave-one-out)\n",
                 s.loo_agreement);
   }
   bool header = false;

@@ -503,7 +503,7 @@ NB_MODULE(_core, m) {
                                                           score.agreement_interval.end()))},
                             {"opposite_cells", nb::cast(score.opposite)},
                             {"log_loss", nb::cast(score.log_loss)}});
-        // What any twin can expect on this map (validate.json's "ceilings", "surface_ceiling").
+        // What any twin can expect on this map (validate.json's "ceilings", "surface_ceilings").
         nb::list priors;
         for (const MapCeiling& c : ceilings.priors) {
           priors.append(Dict({{"prior", nb::cast(c.prior_name)},
@@ -515,12 +515,15 @@ NB_MODULE(_core, m) {
                               {"oracle_reaches_goal", nb::cast(c.oracle_reaches_goal)}}));
         }
         d["ceilings"] = priors;
-        if (ceilings.surface.fitted) {
-          const SurfaceCeiling& s = ceilings.surface;
-          d["surface_ceiling"] = Dict({{"rerun_agreement", nb::cast(s.rerun_agreement)},
-                                       {"oracle_agreement", nb::cast(s.oracle_agreement)},
-                                       {"loo_agreement", nb::cast(s.loo_agreement)}});
+        nb::list surfaces;
+        for (const SurfaceCeiling& s : ceilings.surfaces) {
+          if (!s.fitted) continue;
+          surfaces.append(Dict({{"step_mm", nb::cast(s.step_mm)},
+                                {"rerun_agreement", nb::cast(s.rerun_agreement)},
+                                {"oracle_agreement", nb::cast(s.oracle_agreement)},
+                                {"loo_agreement", nb::cast(s.loo_agreement)}}));
         }
+        d["surface_ceilings"] = surfaces;
         d["cells"] = CellsDict(score.cells);
         d["summary"] = Dict({{"total", nb::cast(summary.total)},
                              {"ran", nb::cast(summary.ran)},
