@@ -78,21 +78,28 @@ void MeasureMetricTargets(const std::vector<MapCell>& cells,
                           const std::vector<std::vector<MapTrial>>& results,
                           std::vector<MetricTarget>* targets) {
   for (MetricTarget& t : *targets) {
-    double sum = 0;
+    double sum = 0, sum_sq = 0;
     int n = 0;
     for (std::size_t i = 0; i < cells.size() && i < results.size(); ++i) {
       if (cells[i].step_mm != 5.0 || cells[i].beta != t.beta || cells[i].pref_pa != t.pref_pa)
         continue;
       for (const MapTrial& r : results[i]) {
         if (r.outcome != OutcomeName(Outcome::kSuccess)) continue;
-        sum += t.metric == MetricTarget::kDr
-                   ? r.dr_mm
-                   : (t.metric == MetricTarget::kSigmaR ? r.sigma_r_mm : r.s_c);
+        const double v = t.metric == MetricTarget::kDr
+                             ? r.dr_mm
+                             : (t.metric == MetricTarget::kSigmaR ? r.sigma_r_mm : r.s_c);
+        sum += v;
+        sum_sq += v * v;
         ++n;
       }
     }
     t.model = n > 0 ? sum / n : std::numeric_limits<double>::quiet_NaN();
     t.successes = n;
+    t.standard_error = std::numeric_limits<double>::quiet_NaN();
+    if (n >= 2) {
+      const double variance = std::max(0.0, (sum_sq - sum * sum / n) / (n - 1));
+      t.standard_error = std::sqrt(variance / n);
+    }
   }
 }
 

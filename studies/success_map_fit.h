@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -37,8 +38,11 @@ struct MetricTarget {
   double beta, pref_pa;
   enum Metric { kDr, kSigmaR, kSc } metric;
   double published, tolerance;
-  double model = 0;  // the twin's mean over successful trials (NaN if none succeeded)
+  double model = 0;   // the twin's mean over successful trials (NaN if none succeeded)
   int successes = 0;  // the successful trials the mean is over
+  // Standard error of that mean, sample sd / sqrt(n) (NaN below 2 successes): the mean's
+  // uncertainty from the seeds, to weigh against the tolerance.
+  double standard_error = std::numeric_limits<double>::quiet_NaN();
 };
 std::vector<MetricTarget> PublishedMetricTargets();
 // Fills each target's model and successes from the trials of the cells at dL 5 mm with its beta

@@ -294,6 +294,7 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
                                  {"published", t.published},
                                  {"tolerance", t.tolerance},
                                  {"twin", t.model},
+                                 {"twin_standard_error", t.standard_error},
                                  {"successes", t.successes}});
   }
   j["wall_s"] = summary->wall_s;

@@ -238,9 +238,13 @@ TEST(MetricTargetsTest, MeansOverTheSuccessfulTrialsOfTheTargetsCellAtFiveMillim
                           : t.metric == MetricTarget::kSigmaR ? 1.5
                                                               : 0.15;
       EXPECT_DOUBLE_EQ(t.model, want) << t.name;
+      // Two values a apart: sample sd a / sqrt(2), standard error a / 2.
+      const double se = t.metric == MetricTarget::kSc ? 0.05 : 0.5;
+      EXPECT_NEAR(t.standard_error, se, 1e-12) << t.name;
     } else {  // beta 3.5 never succeeded; P_ref 40 and 200 are not in this map
       EXPECT_EQ(t.successes, 0) << t.name;
       EXPECT_TRUE(std::isnan(t.model)) << t.name;
+      EXPECT_TRUE(std::isnan(t.standard_error)) << t.name;
     }
   }
 }

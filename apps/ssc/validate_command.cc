@@ -130,11 +130,12 @@ int RunValidateCommand(int argc, char** argv) {
   for (const MetricTarget& t : fig6) {
     if (t.successes == 0) continue;  // its cell is not in this map, or never succeeded
     if (!header) {
-      std::printf("published Fig. 6 targets (mean over the successful trials):\n");
+      std::printf(
+          "published Fig. 6 targets (mean over the successful trials +- its standard error):\n");
       header = true;
     }
-    std::printf("  %-32s twin %7.3g (%2d trials)  published %7.3g  (tolerance %g)\n",
-                t.name.c_str(), t.model, t.successes, t.published, t.tolerance);
+    std::printf("  %-32s twin %7.3g +- %-7.2g (%2d trials)  published %7.3g  (tolerance %g)\n",
+                t.name.c_str(), t.model, t.standard_error, t.successes, t.published, t.tolerance);
   }
   PrintApproachSharing(spec.share_approach, summary);
   std::printf("wrote %s/cells.csv, %s/validate.json\n", out_dir.c_str(), out_dir.c_str());
