@@ -2,6 +2,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <thread>
@@ -89,12 +90,14 @@ int RunValidateCommand(int argc, char** argv) {
   }
   if (bar) std::fprintf(stderr, "\n");
   if (!rank0) return 0;
-  std::printf("%-6s %-5s %-7s %-9s %-6s %-9s %-8s %s\n", "dL_mm", "beta", "Pref_Pa", "published",
-              "twin3", "p(N)", "P(class)", "failures");
+  std::printf("%-6s %-5s %-7s %-9s %-6s %-9s %-8s %-8s %s\n", "dL_mm", "beta", "Pref_Pa",
+              "published", "twin3", "p(N)", "P(class)", "surface", "failures");
   for (const CellScore& c : score.cells) {
-    std::printf("%-6g %-5g %-7g %-9s %-6s %2d/%-6d %-8.2f %s%s\n", c.cell.step_mm, c.cell.beta,
+    char surface[16] = "-";  // the smooth surface's rate, where one was fitted
+    if (!std::isnan(c.surface_p)) std::snprintf(surface, sizeof surface, "%.2f", c.surface_p);
+    std::printf("%-6g %-5g %-7g %-9s %-6s %2d/%-6d %-8.2f %-8s %s%s\n", c.cell.step_mm, c.cell.beta,
                 c.cell.pref_pa, MapClassName(c.cell.published), MapClassName(c.twin_class),
-                c.successes, c.trials, c.expected_agreement, c.main_failure.c_str(),
+                c.successes, c.trials, c.expected_agreement, surface, c.main_failure.c_str(),
                 c.opposite ? "  OPPOSITE" : "");
   }
   std::printf("\n%d cells, %d seeds per cell (base seed %llu), %d trials run in %.1f s:\n",
