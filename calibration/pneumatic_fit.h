@@ -66,8 +66,8 @@ PneumaticFit FitPublishedTargets(const PneumaticModel& start,
 double StaticMeanVacuum(const PneumaticModel& model, double offset_m);
 
 // The next static pressures of a closed-loop calibration (studies/loop_calibration.h): each q
-// scaled by Pstatic(loop depth) / Pstatic(published depth) on the iteration's fitted model, the factor
-// clamped to [0.5, 2] so one noisy iteration cannot throw the fit far.
+// scaled by Pstatic(loop depth) / Pstatic(published depth) on the iteration's fitted model, the
+// factor clamped to [0.5, 2] so one noisy iteration cannot throw the fit far.
 StaticDepthPressures NextDepthPressures(const PneumaticModel& model,
                                         const StaticDepthPressures& current,
                                         const std::array<double, 3>& loop_dr_mm);

@@ -78,8 +78,9 @@ bool CalibrateClosedLoop(const LoopCalibrationSpec& spec,
     // A static curve the pneumatic model cannot draw (cost well above the open-loop fit's ~0.4):
     // the loop's depths are out of this model's reach; keep the best iteration so far.
     if (step.fit.cost > kMaxStaticCost) {
-      if (progress) progress("static fit cost above " + std::to_string(kMaxStaticCost).substr(0, 3) +
-                             ": the pneumatic model cannot draw that curve; stopping");
+      if (progress)
+        progress("static fit cost above " + std::to_string(kMaxStaticCost).substr(0, 3) +
+                 ": the pneumatic model cannot draw that curve; stopping");
       break;
     }
     q = NextDepthPressures(step.fit.model, q, step.loop_dr_mm);

@@ -241,11 +241,11 @@ int RunCalibrateCommand(int argc, char** argv) {
     const LoopCalibrationIteration& best = loop.iterations[static_cast<std::size_t>(loop.best)];
     const StaticDepthPressures& depth_pa = best.depth_pa;
     fit = best.fit;
-    std::printf("closed loop: iteration %d kept (rms depth error %.2f mm); static targets %.1f / "
-                "%.1f / %.1f Pa at %.1f / %.1f / %.1f mm\n\n",
-                loop.best + 1, loop.RmsDepthErrorMm(loop.best), depth_pa[0], depth_pa[1],
-                depth_pa[2], kDepthTargetOffsetMm[0], kDepthTargetOffsetMm[1],
-                kDepthTargetOffsetMm[2]);
+    std::printf(
+        "closed loop: iteration %d kept (rms depth error %.2f mm); static targets %.1f / "
+        "%.1f / %.1f Pa at %.1f / %.1f / %.1f mm\n\n",
+        loop.best + 1, loop.RmsDepthErrorMm(loop.best), depth_pa[0], depth_pa[1], depth_pa[2],
+        kDepthTargetOffsetMm[0], kDepthTargetOffsetMm[1], kDepthTargetOffsetMm[2]);
   } else {
     fit = FitPublishedTargets(start, {depth_list[0], depth_list[1], depth_list[2]});
   }
