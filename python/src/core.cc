@@ -27,6 +27,7 @@
 #include "geometry/dimensions.h"
 #include "objects/object_mjcf.h"
 #include "objects/object_spec.h"
+#include "plugin/chamber_pressure_config.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/trial.h"
 #include "studies/edge_probe.h"
@@ -282,11 +283,18 @@ class SteppedTrial {
     config_ = MakeConfig(pref, beta, step_mm, seed, object, effects, &scene_);
     if (timeout_s > 0) config_.timeout_s = timeout_s;
     if (const std::string e = config_.Validate(); !e.empty()) Fail(e);
-    model_ = Load(scene_);
+    // The mujoco package owns the model and the data (MjModel._from_model_ptr takes ownership
+    // of a compiled mjModel; both sides use the same libmujoco), so Python sees the live
+    // MjModel/MjData the trial steps: renderers, viewers and mujoco functions work on them.
+    ModelPtr model = Load(scene_);
+    nb::module_ mujoco = nb::module_::import_("mujoco");
+    model_ = model.get();
+    py_model_ = mujoco.attr("MjModel").attr("_from_model_ptr")(
+        reinterpret_cast<std::uintptr_t>(model.release()));
+    py_data_ = mujoco.attr("MjData")(py_model_);
+    data_ = reinterpret_cast<mjData*>(nb::cast<std::uintptr_t>(py_data_.attr("_address")));
     std::string error;
-    data_ = MakeData(model_.get(), &error);
-    if (!data_) Fail(error);
-    trial_ = ContourTrial::Create(model_.get(), data_.get(), config_, false, &error);
+    trial_ = ContourTrial::Create(model_, data_, config_, false, &error);
     if (!trial_) Fail(error);
   }
   void Reset(std::uint64_t seed) {
@@ -309,8 +317,8 @@ class SteppedTrial {
   std::array<double, 6> ForceTorque() const {
     // The F/T sensors as the model names them (force then torque, N and N m).
     std::array<double, 6> ft{};
-    const int f = mj_name2id(model_.get(), mjOBJ_SENSOR, kToolForceSensorName);
-    const int t = mj_name2id(model_.get(), mjOBJ_SENSOR, kToolTorqueSensorName);
+    const int f = mj_name2id(model_, mjOBJ_SENSOR, kToolForceSensorName);
+    const int t = mj_name2id(model_, mjOBJ_SENSOR, kToolTorqueSensorName);
     for (int k = 0; k < 3; ++k) {
       if (f >= 0) ft[k] = data_->sensordata[model_->sensor_adr[f] + k];
       if (t >= 0) ft[3 + k] = data_->sensordata[model_->sensor_adr[t] + k];
@@ -342,12 +350,17 @@ class SteppedTrial {
     return std::hypot(x - t.goal.centre[0], y - t.goal.centre[1]) - t.disk_radius_m;
   }
   std::string scene() const { return scene_; }
+  nb::object model() const { return py_model_; }
+  nb::object data() const { return py_data_; }
+  int tool_site() const { return trial_->tool_site(); }
 
  private:
   std::string scene_;
   TrialConfig config_;
-  ModelPtr model_;
-  DataPtr data_;
+  // Declared before trial_ so that the trial is destroyed first.
+  nb::object py_model_, py_data_;
+  const mjModel* model_ = nullptr;
+  mjData* data_ = nullptr;
   std::unique_ptr<ContourTrial> trial_;
 };
 
@@ -369,6 +382,11 @@ NB_MODULE(_core, m) {
     // Only where the host (e.g. the mujoco package) set none: no MUJOCO_LOG.TXT litter.
     InstallMuJoCoMessageHandlers();
   });
+  m.attr("default_control_period_s") = TrialConfig{}.control_period_s;
+  m.def(
+      "plugin_registered",
+      [] { return mjp_getPlugin(kChamberPressurePluginName, nullptr) != nullptr; },
+      "Whether the running libmujoco has the ssc.chamber_pressure plugin.");
   m.def("phase_names", [] {
     return std::vector<std::string>{PhaseName(TrialPhase::kApproach),
                                     PhaseName(TrialPhase::kMoveToStart),
@@ -670,5 +688,8 @@ NB_MODULE(_core, m) {
       .def_prop_ro("time", &SteppedTrial::Time)
       .def_prop_ro("swept_deg", &SteppedTrial::SweptDeg)
       .def_prop_ro("tracked_arc_m", &SteppedTrial::TrackedArcM)
-      .def_prop_ro("scene", &SteppedTrial::scene);
+      .def_prop_ro("scene", &SteppedTrial::scene)
+      .def_prop_ro("model", &SteppedTrial::model, "The trial's mujoco.MjModel (live).")
+      .def_prop_ro("data", &SteppedTrial::data, "The trial's mujoco.MjData (live).")
+      .def_prop_ro("tool_site", &SteppedTrial::tool_site, "Site id of the cup's lip centre.");
 }

@@ -25,7 +25,7 @@ from ._core import (Probe, SteppedTrial, compare, contour_step, mujoco_version, 
 
 __all__ = ["Probe", "SteppedTrial", "compare", "contour_step", "mujoco_version", "object_names",
            "phase_names", "resource_dir", "run_trial", "scene_path", "sweep", "write_robot_log",
-           "plugin_library", "read_sweep", "validate"]
+           "plugin_library", "load_plugin", "read_sweep", "validate"]
 
 _core.install_message_handlers()
 _version_problem = _core.check_mujoco_version()
@@ -34,8 +34,25 @@ if _version_problem:
 
 
 def plugin_library():
-    """Path of the bundled plugin library (for mujoco.mj_loadPluginLibrary in other hosts)."""
+    """Path of the bundled plugin library (for hosts other than the mujoco package)."""
     return _os.path.join(_os.path.dirname(__file__), "libssc_plugin.so")
+
+
+def load_plugin(path=None):
+    """Makes sure the running libmujoco has the ``ssc.chamber_pressure`` plugin; safe to call
+    any number of times. Returns True when this call loaded a library, False when the plugin
+    was already registered (importing this package registers it, and so does ``import mujoco``
+    where the package is installed).
+
+    MuJoCo refuses a second registration of a plugin name (``mujoco.FatalError: plugin
+    'ssc.chamber_pressure' is already registered``), which a bare
+    ``mujoco.mj_loadPluginLibrary(path)`` after ``import mujoco`` runs into; this does not.
+    ``path``: a plugin library to load when none is registered yet (default: the bundled one).
+    """
+    if _core.plugin_registered():
+        return False
+    _mujoco.mj_loadPluginLibrary(path or plugin_library())
+    return True
 
 
 def read_sweep(csv_path):

@@ -9,10 +9,15 @@ the cup grasps) or the trial's timeout. Episodes run on the 35 mm-radius disk of
 on the test objects (disk_dNN, hole_dNN, corner_aNNN, volute, strips, fillet).
 
     import gymnasium as gym, ssc_twin
-    env = gym.make("ssc_twin/EdgeFollowing-v0")                  # the disk benchmark
+    env = gym.make("ssc_twin/EdgeFollowing-v0")                  # the disk benchmark (gantry)
     env = gym.make("ssc_twin/EdgeFollowing-v0", objects=["volute", "corner_a090"])
+    env = gym.make("ssc_twin/EdgeFollowing-v0", scene="disk_benchmark", effects="off",
+                   render_mode="rgb_array")                      # the UR-10 arm, the ideal loop
+    env.unwrapped.model, env.unwrapped.data                      # mujoco.MjModel / MjData
 """
 import math
+import os
+import time
 
 import gymnasium as gym
 import numpy as np
@@ -27,6 +32,12 @@ FT_LIMIT = 1.0e3  # N and N m; the start-up compression is 1.5 N
 # Outcomes that end an episode with the failure penalty: off the edge (I), onto the object
 # (II), or out of the band of following about the edge (lost_edge).
 FAILURES = ("failure_I", "failure_II", "lost_edge")
+CONTROL_PERIOD_S = _core.default_control_period_s  # one step: one control iteration
+DEFAULT_SCENE = "disk_benchmark_gantry"
+# The bundled scenes a contour-following trial runs in (the others hold a probe, no robot).
+TRIAL_SCENES = ("disk_benchmark", "disk_benchmark_gantry", "disk_benchmark_light")
+CUP_VIEW_DISTANCE_M = 0.15  # the "cup" camera: the cup and the edge under it fill the frame
+LIP_GEOM_GROUP = 4  # models/ssc_tool.xml: the lip segments
 
 
 class EdgeFollowingEnv(gym.Env):
@@ -38,11 +49,34 @@ class EdgeFollowingEnv(gym.Env):
     lost edge.
     """
 
-    metadata = {"render_modes": []}
+    # render_fps: one step is one control iteration (CONTROL_PERIOD_S of simulated time), so a
+    # video at this rate plays in real time.
+    metadata = {"render_modes": ["rgb_array", "human"], "render_fps": 1.0 / CONTROL_PERIOD_S}
 
     def __init__(self, objects=None, include_ft=False, max_step_mm=10.0, pref=100.0, beta=2.0,
-                 failure_penalty=10.0, terminal_reward=10.0, timeout_s=None, effects="default"):
+                 failure_penalty=10.0, terminal_reward=10.0, timeout_s=None, effects="default",
+                 scene=DEFAULT_SCENE, render_mode=None, width=640, height=480, camera="cup"):
         super().__init__()
+        # The scene: a name under scenes/ ("disk_benchmark_gantry", the cup on a gantry;
+        # "disk_benchmark", the UR-10 arm; "disk_benchmark_light") or an MJCF path. With test
+        # objects, a scene name containing "gantry" runs their gantry scenes, else their arm ones.
+        self.scene = str(scene)
+        if not os.path.exists(_core.scene_path(self.scene)):
+            raise ValueError(f"scene {self.scene!r} not found: a name among {list_scenes()} or "
+                             "an MJCF file")
+        if render_mode is not None and render_mode not in self.metadata["render_modes"]:
+            raise ValueError(f"render_mode must be one of {self.metadata['render_modes']} or "
+                             f"None, got {render_mode!r}")
+        self.render_mode = render_mode
+        if not (16 <= int(width) <= 4096 and 16 <= int(height) <= 4096):
+            raise ValueError(f"width and height must be in [16, 4096] pixels, got {width}x{height}")
+        self.width, self.height = int(width), int(height)
+        # "cup": a close-up that follows the cup; "free": MuJoCo's default view of the whole
+        # scene; else a camera the model names.
+        self.camera = str(camera)
+        self._renderer = None  # mujoco.Renderer for rgb_array, per model
+        self._viewer = None    # mujoco.viewer handle for human
+        self._last_frame_wall_s = None
         # None: the disk benchmark scene; else test objects by name, one drawn per episode.
         self.objects = [None] if not objects else list(objects)
         for name in self.objects:
@@ -73,7 +107,7 @@ class EdgeFollowingEnv(gym.Env):
     # -- helpers ---------------------------------------------------------------------------
     def _trial_for(self, name):
         if name not in self._trials:
-            t = _core.SteppedTrial(scene="disk_benchmark_gantry", pref=self.pref, beta=self.beta,
+            t = _core.SteppedTrial(scene=self.scene, pref=self.pref, beta=self.beta,
                                    step_mm=7.5, seed=1, object=name or "", timeout_s=self.timeout_s,
                                    effects=self.effects)
             t.set_external_policy(True)
@@ -101,7 +135,8 @@ class EdgeFollowingEnv(gym.Env):
 
     def _info(self):
         x, y, _ = self._trial.tool_position()
-        return {"object": self._object or "disk_benchmark", "phase": self._trial.phase,
+        return {"object": self._object or "disk_benchmark", "scene": self._trial.scene,
+                "phase": self._trial.phase,
                 "time_s": self._trial.time, "progress_mm": self._progress_mm,
                 "tool_xy_m": (x, y), "contour_distance_mm": 1e3 * self._trial.contour_distance_m(x, y),
                 "outcome": self._trial.result()["outcome"]}
@@ -121,6 +156,8 @@ class EdgeFollowingEnv(gym.Env):
         # sensor (its step is the agent's first action).
         self._trial.run_to_next_iteration()
         self._progress_mm = self._progress()
+        if self.render_mode == "human":
+            self.render()
         return self._observation(), self._info()
 
     def step(self, action):
@@ -139,7 +176,172 @@ class EdgeFollowingEnv(gym.Env):
             reward += self.terminal_reward
         elif outcome in FAILURES:
             reward -= self.failure_penalty
+        if self.render_mode == "human":
+            self.render()
         return self._observation(), float(reward), terminated, truncated, self._info()
+
+    # -- MuJoCo ----------------------------------------------------------------------------
+    @property
+    def model(self):
+        """The current episode's mujoco.MjModel (one per object; None before reset())."""
+        return self._trial.model if self._trial is not None else None
+
+    @property
+    def data(self):
+        """The current episode's mujoco.MjData, as the trial steps it (None before reset())."""
+        return self._trial.data if self._trial is not None else None
+
+    def _camera(self):
+        import mujoco
+        cam = mujoco.MjvCamera()
+        model, data = self.model, self.data
+        if self.camera == "cup":
+            mujoco.mjv_defaultFreeCamera(model, cam)
+            cam.lookat[:] = data.site_xpos[self._trial.tool_site]
+            cam.distance, cam.azimuth, cam.elevation = CUP_VIEW_DISTANCE_M, 135.0, -35.0
+        elif self.camera == "free":
+            mujoco.mjv_defaultFreeCamera(model, cam)
+        else:
+            cam_id = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_CAMERA, self.camera)
+            if cam_id < 0:
+                names = [model.camera(k).name for k in range(model.ncam)]
+                raise ValueError(f"camera {self.camera!r}: use 'cup', 'free' or a camera of the "
+                                 f"model {names}")
+            cam.type, cam.fixedcamid = mujoco.mjtCamera.mjCAMERA_FIXED, cam_id
+        return cam
+
+    def _scene_option(self):
+        import mujoco
+        option = mujoco.MjvOption()
+        option.geomgroup[LIP_GEOM_GROUP] = 1  # the lip segments (the plugin colours them)
+        return option
+
+    def render(self):
+        """rgb_array: an (height, width, 3) uint8 frame of the current state; human: a MuJoCo
+        viewer window kept in step (about real time: one step per control period)."""
+        if self.render_mode is None:
+            gym.logger.warn("render() called without a render_mode; gymnasium.make(..., "
+                            "render_mode='rgb_array' or 'human')")
+            return None
+        if self._trial is None:
+            raise RuntimeError("call reset() before render()")
+        if self.render_mode == "rgb_array":
+            return self._render_rgb()
+        self._render_human()
+        return None
+
+    def _render_rgb(self):
+        import mujoco
+        if self._renderer is None or self._renderer.model is not self.model:
+            if self._renderer is not None:
+                self._renderer.close()
+            self._renderer = _Renderer(self.model, self.height, self.width)
+        self._renderer.update_scene(self.data, camera=self._camera(),
+                                    scene_option=self._scene_option())
+        return self._renderer.render()
+
+    def _render_human(self):
+        if self._viewer is not None and self._viewer.model is not self.model:
+            self._viewer.close()  # another object's model: a new window for it
+            self._viewer = None
+        if self._viewer is None:
+            self._viewer = _Window(self.model, self.width, self.height)
+        if not self._viewer.closed:
+            self._viewer.show(self.data, self._camera(), self._scene_option(), self._status())
+        # About real time: a step stands for one control period of simulated time.
+        now = time.perf_counter()
+        if self._last_frame_wall_s is not None:
+            wait = CONTROL_PERIOD_S - (now - self._last_frame_wall_s)
+            if wait > 0:
+                time.sleep(wait)
+        self._last_frame_wall_s = time.perf_counter()
+
+    def _status(self):
+        p = self._trial.iteration_pressures()
+        return ("object\ntime\nphase\nP1..P4\nprogress",
+                f"{self._object or 'disk_benchmark'}\n{self._trial.time:.2f} s\n"
+                f"{self._trial.phase}\n" + " ".join(f"{x:.0f}" for x in p) +
+                f" Pa\n{self._progress_mm:.0f} mm")
+
+    def close(self):
+        if self._renderer is not None:
+            self._renderer.close()
+            self._renderer = None
+        if self._viewer is not None:
+            self._viewer.close()
+            self._viewer = None
+        super().close()
+
+
+class _Renderer:
+    """mujoco.Renderer that remembers its model (one per test object's model)."""
+
+    def __init__(self, model, height, width):
+        import mujoco
+        self.model = model
+        self._renderer = mujoco.Renderer(model, height, width)
+
+    def update_scene(self, data, camera, scene_option):
+        self._renderer.update_scene(data, camera=camera, scene_option=scene_option)
+
+    def render(self):
+        return self._renderer.render()
+
+    def close(self):
+        self._renderer.close()
+
+
+class _Window:
+    """A GLFW window showing the scene (render_mode "human"); closing it stops the drawing, not
+    the episode."""
+
+    def __init__(self, model, width, height):
+        import glfw
+        import mujoco
+        if not glfw.init():
+            raise RuntimeError("render_mode='human' needs a display (GLFW could not start); "
+                               "use render_mode='rgb_array' without one")
+        self.model = model
+        self._glfw = glfw
+        self._window = glfw.create_window(width, height, "ssc_twin EdgeFollowing", None, None)
+        if not self._window:
+            raise RuntimeError("render_mode='human': GLFW could not open a window")
+        glfw.make_context_current(self._window)
+        glfw.swap_interval(0)
+        self._scene = mujoco.MjvScene(model, maxgeom=10000)
+        self._context = mujoco.MjrContext(model, mujoco.mjtFontScale.mjFONTSCALE_100)
+        self.closed = False
+
+    def show(self, data, camera, option, status):
+        import mujoco
+        glfw = self._glfw
+        if glfw.window_should_close(self._window):
+            self.close()
+            return
+        glfw.make_context_current(self._window)
+        mujoco.mjv_updateScene(self.model, data, option, None, camera, mujoco.mjtCatBit.mjCAT_ALL,
+                               self._scene)
+        viewport = mujoco.MjrRect(0, 0, *glfw.get_framebuffer_size(self._window))
+        mujoco.mjr_render(viewport, self._scene, self._context)
+        mujoco.mjr_overlay(mujoco.mjtFont.mjFONT_NORMAL, mujoco.mjtGridPos.mjGRID_TOPLEFT, viewport,
+                           status[0], status[1], self._context)
+        glfw.swap_buffers(self._window)
+        glfw.poll_events()
+
+    def close(self):
+        if self.closed:
+            return
+        self.closed = True
+        self._glfw.make_context_current(self._window)
+        self._context.free()
+        self._glfw.destroy_window(self._window)
+
+
+def list_scenes():
+    """The scene names under the package's scenes/ folder that a trial can run."""
+    folder = os.path.join(_core.resource_dir(), "scenes")
+    return sorted(f[:-4] for f in os.listdir(folder)
+                  if f.endswith(".xml") and f[:-4] in TRIAL_SCENES)
 
 
 def _parametric(name):

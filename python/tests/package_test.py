@@ -12,6 +12,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import textwrap
 import unittest
 
 import numpy as np
@@ -181,6 +182,33 @@ class PackageTest(unittest.TestCase):
         self.assertGreater(c["sim_pa"].shape[0], 100)
         self.assertTrue(np.all(c["correlation"] > 0.9), c["correlation"])
 
+    def test_plugin_loads_once_when_asked_twice(self):
+        # import mujoco registered the plugin (entry point); loading it again by hand is what
+        # raised "already registered". load_plugin() is safe any number of times.
+        script = ("import mujoco, ssc_twin\n"
+                  "print('loaded', ssc_twin.load_plugin(), ssc_twin.load_plugin(),\n"
+                  "      ssc_twin.load_plugin(ssc_twin.plugin_library()))\n"
+                  "m = mujoco.MjModel.from_xml_path(ssc_twin.scene_path('probe_edge'))\n"
+                  "print('plugins', m.nplugin)\n")
+        r = run([sys.executable, "-c", script], cwd=self.tmp)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("loaded False False False", r.stdout)
+        self.assertIn("plugins 1", r.stdout)
+        # Another copy of the library (e.g. build/lib's): load_plugin() leaves it alone, a bare
+        # mj_loadPluginLibrary registers the name a second time, which MuJoCo refuses.
+        copy = os.path.join(self.tmp, "libssc_plugin_copy.so")
+        import ssc_twin
+        shutil.copy(ssc_twin.plugin_library(), copy)
+        script = ("import mujoco, ssc_twin\n"
+                  "print('loaded', ssc_twin.load_plugin(%r))\n" % copy)
+        r = run([sys.executable, "-c", script], cwd=self.tmp)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("loaded False", r.stdout)
+        bare = "import mujoco\nmujoco.mj_loadPluginLibrary(%r)\n" % copy
+        r = run([sys.executable, "-c", bare], cwd=self.tmp)
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("already registered", r.stderr)
+
     @unittest.skipUnless(XVFB, "xvfb-run not installed")
     def test_mujoco_viewer_opens_our_scene(self):
         import ssc_twin
@@ -214,7 +242,7 @@ class EdgeFollowingTest(unittest.TestCase):
     def test_environment_passes_the_checker(self):
         from gymnasium.utils.env_checker import check_env
         env = self.gym.make("ssc_twin/EdgeFollowing-v0", include_ft=True)
-        check_env(env.unwrapped, skip_render_check=True)
+        check_env(env.unwrapped, skip_render_check=True)  # rendering: the tests below
         self.assertEqual(env.observation_space.shape, (10,))
 
     def test_published_law_succeeds_on_the_disk(self):
@@ -233,6 +261,89 @@ class EdgeFollowingTest(unittest.TestCase):
             info, total, _ = self.episode(env, random_policy, seed=seed)
             self.assertNotEqual(info["outcome"], "success", info)
             self.assertLess(total, 5)
+
+    def test_scene_option_runs_the_named_scene(self):
+        import mujoco
+        arm = self.gym.make("ssc_twin/EdgeFollowing-v0", scene="disk_benchmark", effects="off")
+        obs, info = arm.reset(seed=1)
+        model, data = arm.unwrapped.model, arm.unwrapped.data
+        self.assertIsInstance(model, mujoco.MjModel)
+        self.assertIsInstance(data, mujoco.MjData)
+        body = lambda m, name: mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, name)
+        self.assertGreaterEqual(body(model, "shoulder_link"), 0)  # the UR-10
+        self.assertLess(body(model, "gantry_x"), 0)
+        # The live data: the trial's clock and the cup where the info says.
+        self.assertEqual(data.time, info["time_s"])
+        site = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_SITE, "ssc_tool_site")
+        np.testing.assert_allclose(data.site_xpos[site][:2], info["tool_xy_m"])
+        shoulder = data.joint(0).qpos.copy()
+        law = self.policy(arm, pref=100, beta=2, step_mm=7.5)
+        for _ in range(3):
+            obs, reward, terminated, truncated, info = arm.step(law(obs))
+        self.assertFalse(terminated or truncated, info)
+        self.assertNotEqual(float(data.joint(0).qpos[0]), float(shoulder[0]))  # the arm moved
+        gantry = self.gym.make("ssc_twin/EdgeFollowing-v0")
+        gantry.reset(seed=1)
+        self.assertGreaterEqual(body(gantry.unwrapped.model, "gantry_x"), 0)
+        with self.assertRaisesRegex(ValueError, "scene 'no_such_scene' not found"):
+            self.gym.make("ssc_twin/EdgeFollowing-v0", scene="no_such_scene")
+        with self.assertRaisesRegex(ValueError, "render_mode"):
+            self.gym.make("ssc_twin/EdgeFollowing-v0", render_mode="rgb")
+
+    def render_in_subprocess(self, script, use_xvfb):
+        env = dict(os.environ)
+        cmd = [sys.executable, "-c", script]
+        if use_xvfb:
+            cmd = [XVFB, "-a", "-s", "-screen 0 1024x768x24"] + cmd
+        else:
+            env["MUJOCO_GL"] = "egl"
+        return run(cmd, timeout=180, env=env)
+
+    def test_rgb_array_frame_shows_the_cup_close_up(self):
+        script = textwrap.dedent("""
+            import json, gymnasium as gym, numpy as np, ssc_twin
+            env = gym.make("ssc_twin/EdgeFollowing-v0", render_mode="rgb_array", width=160,
+                           height=120)
+            obs, info = env.reset(seed=1)
+            frame = env.render()
+            r, g, b = (frame[..., k].astype(float) for k in range(3))
+            cup = (r > 90) & (r > 1.3 * g) & (g > 1.3 * b)   # the orange cup
+            disk = (b > 120) & (b > 1.5 * r)                 # the blue disk
+            ys, xs = np.nonzero(cup)
+            print(json.dumps({"shape": frame.shape, "dtype": str(frame.dtype),
+                              "cup_px": int(cup.sum()), "disk_px": int(disk.sum()),
+                              "cup_centre": [float(xs.mean()), float(ys.mean())] if len(xs) else None,
+                              "fps": env.metadata["render_fps"]}))
+            env.close()
+            """)
+        r = self.render_in_subprocess(script, use_xvfb=False)
+        if r.returncode != 0 and XVFB:  # no EGL: GLFW under Xvfb
+            r = self.render_in_subprocess(script, use_xvfb=True)
+        self.assertEqual(r.returncode, 0, r.stderr[-2000:])
+        out = json.loads(r.stdout.strip().splitlines()[-1])
+        self.assertEqual(out["shape"], [120, 160, 3])
+        self.assertEqual(out["dtype"], "uint8")
+        self.assertAlmostEqual(out["fps"], 1 / 0.15, places=6)
+        # The close-up follows the cup: cup and disk large, the cup near the middle.
+        self.assertGreater(out["cup_px"], 0.01 * 120 * 160, out)
+        self.assertGreater(out["disk_px"], 0.03 * 120 * 160, out)
+        self.assertLess(abs(out["cup_centre"][0] - 80), 40, out)
+
+    @unittest.skipUnless(XVFB, "xvfb-run not installed")
+    def test_human_mode_opens_a_window_and_closes_cleanly(self):
+        script = textwrap.dedent("""
+            import gymnasium as gym, numpy as np, ssc_twin
+            env = gym.make("ssc_twin/EdgeFollowing-v0", render_mode="human", width=320,
+                           height=240)
+            obs, info = env.reset(seed=1)
+            for _ in range(3):
+                env.step(np.zeros(2, dtype=np.float32))
+            print("window open", not env.unwrapped._viewer.closed)
+            env.close()
+            """)
+        r = self.render_in_subprocess(script, use_xvfb=True)
+        self.assertEqual(r.returncode, 0, r.stderr[-2000:])  # no crash at interpreter exit
+        self.assertIn("window open True", r.stdout)
 
     def test_episodes_on_test_objects_start_at_their_edge(self):
         env = self.gym.make("ssc_twin/EdgeFollowing-v0", objects=["volute", "hole_d14"])
