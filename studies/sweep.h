@@ -17,6 +17,10 @@
 
 namespace ssc {
 
+// The scene sweeps and `ssc validate` run unless told otherwise: the cheapest scene that
+// `ssc equivalence` finds no different from the UR-10 scene (docs/performance.md).
+inline constexpr char kDefaultScene[] = "disk_benchmark_gantry";
+
 struct SweepSpec {
   std::string scene_name;  // written into each row
   TrialConfig base;        // everything but P_ref, beta, step, seed

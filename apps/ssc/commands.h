@@ -9,6 +9,7 @@ int RunBench(int argc, char** argv);  // execs build/bin/ssc_bench
 int RunTrialCommand(int argc, char** argv);
 int RunSweepCommand(int argc, char** argv);
 int RunValidateCommand(int argc, char** argv);
+int RunEquivalenceCommand(int argc, char** argv);
 int RunObjectsCommand(int argc, char** argv);
 int RunViewCommand(int argc, char** argv);
 int RunCompareCommand(int argc, char** argv);

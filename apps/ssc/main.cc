@@ -25,6 +25,8 @@ const Command kCommands[] = {
      "grid of trials over P_ref x beta x dL x repeats on all cores; resumable CSV + maps"},
     {"validate", ssc::RunValidateCommand,
      "the twin on every cell of a published success map, N seeds per cell; scores + figure"},
+    {"equivalence", ssc::RunEquivalenceCommand,
+     "two models (scenes, plugin keys, effects) on the same map cells and seeds, by statistics"},
     {"objects", ssc::RunObjectsCommand,
      "write the test objects' scenes and run the trial on each; table + plots"},
     {"view", ssc::RunViewCommand,
@@ -45,7 +47,7 @@ void PrintUsage() {
       "usage: ssc <command> [options]   (ssc <command> --help for its options)\n"
       "       ssc --version\n\n");
   std::printf("Smart Suction Cup digital twin (MuJoCo %s).\n\ncommands:\n", mj_versionString());
-  for (const Command& c : kCommands) std::printf("  %-10s %s\n", c.name, c.summary);
+  for (const Command& c : kCommands) std::printf("  %-12s %s\n", c.name, c.summary);
 }
 
 }  // namespace

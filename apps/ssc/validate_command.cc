@@ -27,7 +27,7 @@ int RunValidateCommand(int argc, char** argv) {
                    "it does not pass or fail.");
   ValidateSpec spec;
   spec.map_path = SourceDir() + "/data/published/success_map_dl5.csv";
-  spec.scene_name = "disk_benchmark_gantry";
+  spec.scene_name = kDefaultScene;
   long seeds = 10, threads = std::max(1u, std::thread::hardware_concurrency());
   std::string out_dir = "out/validate";
   bool no_plot = false, no_progress = false, no_shared_approach = false;

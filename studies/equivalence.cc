@@ -1,0 +1,248 @@
+#include "studies/equivalence.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+#include <sstream>
+
+#include "studies/map_ceiling.h"
+
+namespace ssc {
+namespace {
+
+double LogChoose(int n, int k) {
+  return std::lgamma(n + 1.0) - std::lgamma(k + 1.0) - std::lgamma(n - k + 1.0);
+}
+
+// The hypergeometric law of arm a's successes given the margins: support [lo, hi], and the
+// probability of each x in it.
+struct Hypergeometric {
+  int lo = 0, hi = 0;
+  std::vector<double> p;  // p[x - lo]
+};
+
+Hypergeometric TableLaw(int n_a, int n_b, int successes) {
+  Hypergeometric h;
+  const int failures = n_a + n_b - successes;
+  h.lo = std::max(0, n_a - failures);
+  h.hi = std::min(successes, n_a);
+  const double total = LogChoose(n_a + n_b, n_a);
+  for (int x = h.lo; x <= h.hi; ++x) {
+    h.p.push_back(std::exp(LogChoose(successes, x) + LogChoose(failures, n_a - x) - total));
+  }
+  return h;
+}
+
+// Fisher's two-sided p-value of table x under the law h.
+double FisherP(const Hypergeometric& h, int x) {
+  const double observed = h.p[static_cast<std::size_t>(x - h.lo)] * (1 + 1e-7);
+  double sum = 0;
+  for (double q : h.p)
+    if (q <= observed) sum += q;
+  return std::min(1.0, sum);
+}
+
+// Continued fraction of the incomplete beta (modified Lentz).
+double BetaContinuedFraction(double x, double a, double b) {
+  constexpr double kTiny = 1e-300, kEps = 1e-15;
+  double c = 1, d = 1 - (a + b) * x / (a + 1);
+  if (std::fabs(d) < kTiny) d = kTiny;
+  d = 1 / d;
+  double h = d;
+  for (int m = 1; m <= 10000; ++m) {
+    const double m2 = 2.0 * m;
+    double num = m * (b - m) * x / ((a + m2 - 1) * (a + m2));
+    d = 1 + num * d;
+    if (std::fabs(d) < kTiny) d = kTiny;
+    c = 1 + num / c;
+    if (std::fabs(c) < kTiny) c = kTiny;
+    d = 1 / d;
+    h *= d * c;
+    num = -(a + m) * (a + b + m) * x / ((a + m2) * (a + m2 + 1));
+    d = 1 + num * d;
+    if (std::fabs(d) < kTiny) d = kTiny;
+    c = 1 + num / c;
+    if (std::fabs(c) < kTiny) c = kTiny;
+    d = 1 / d;
+    const double delta = d * c;
+    h *= delta;
+    if (std::fabs(delta - 1) < kEps) break;
+  }
+  return h;
+}
+
+// P(Binomial(n, q) >= k).
+double BinomialAtLeast(int n, double q, int k) {
+  return ProbabilityAtLeast(std::vector<double>(static_cast<std::size_t>(n), q), k);
+}
+
+}  // namespace
+
+double FisherExactP(int k_a, int n_a, int k_b, int n_b) {
+  if (n_a <= 0 || n_b <= 0) return 1;
+  const Hypergeometric h = TableLaw(n_a, n_b, k_a + k_b);
+  return FisherP(h, k_a);
+}
+
+double FisherFalseAlarmChance(int n_a, int n_b, int successes, double alpha) {
+  if (n_a <= 0 || n_b <= 0) return 0;
+  const Hypergeometric h = TableLaw(n_a, n_b, successes);
+  double chance = 0;
+  for (int x = h.lo; x <= h.hi; ++x) {
+    if (FisherP(h, x) <= alpha) chance += h.p[static_cast<std::size_t>(x - h.lo)];
+  }
+  return chance;
+}
+
+double RegularizedIncompleteBeta(double x, double a, double b) {
+  if (x <= 0) return 0;
+  if (x >= 1) return 1;
+  const double front = std::exp(std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) +
+                                a * std::log(x) + b * std::log1p(-x));
+  // The continued fraction converges fast for x < (a + 1) / (a + b + 2); else use the symmetry.
+  if (x < (a + 1) / (a + b + 2)) return front * BetaContinuedFraction(x, a, b) / a;
+  return 1 - front * BetaContinuedFraction(1 - x, b, a) / b;
+}
+
+double StudentTwoSidedP(double t, double dof) {
+  if (!std::isfinite(t)) return 0;
+  return RegularizedIncompleteBeta(dof / (dof + t * t), dof / 2, 0.5);
+}
+
+bool CompareArms(const std::vector<MapCell>& cells, const std::vector<ArmCounts>& a,
+                 const std::vector<ArmCounts>& b, const std::vector<TargetMeasure>& targets_a,
+                 const std::vector<TargetMeasure>& targets_b, const EquivalenceOptions& options,
+                 Equivalence* result, std::string* error) {
+  if (a.size() != cells.size() || b.size() != cells.size()) {
+    *error = "equivalence: the arms' cell lists differ from the map's in length";
+    return false;
+  }
+  if (!(options.alpha > 0 && options.alpha < 1)) {
+    std::ostringstream os;
+    os << "equivalence: alpha = " << options.alpha << " is out of range (0, 1)";
+    *error = os.str();
+    return false;
+  }
+  *result = Equivalence();
+  const double alpha = options.alpha;
+  std::vector<double> false_alarm;
+  double shift_sum = 0, shift_variance = 0;  // CMH: sum of (k_b - E k_b) and of its variances
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (a[i].trials <= 0 || b[i].trials <= 0 || a[i].successes < 0 || b[i].successes < 0 ||
+        a[i].successes > a[i].trials || b[i].successes > b[i].trials) {
+      std::ostringstream os;
+      os << "equivalence: cell step " << cells[i].step_mm << " mm, beta " << cells[i].beta
+         << ", P_ref " << cells[i].pref_pa << " Pa: successes must be in [0, trials] and each "
+         << "arm needs trials (got " << a[i].successes << "/" << a[i].trials << " and "
+         << b[i].successes << "/" << b[i].trials << ")";
+      *error = os.str();
+      return false;
+    }
+    CellDifference c;
+    c.cell = cells[i];
+    c.a = a[i];
+    c.b = b[i];
+    c.rate_a = static_cast<double>(a[i].successes) / a[i].trials;
+    c.rate_b = static_cast<double>(b[i].successes) / b[i].trials;
+    c.agreement_a = ClassProbability(cells[i].published, c.rate_a);
+    c.agreement_b = ClassProbability(cells[i].published, c.rate_b);
+    c.p_value = FisherExactP(a[i].successes, a[i].trials, b[i].successes, b[i].trials);
+    c.differs = c.p_value <= alpha;
+    c.false_alarm_chance =
+        FisherFalseAlarmChance(a[i].trials, b[i].trials, a[i].successes + b[i].successes, alpha);
+    false_alarm.push_back(c.false_alarm_chance);
+    const double na = a[i].trials, nb = b[i].trials, m = a[i].successes + b[i].successes;
+    const double total = na + nb;
+    shift_sum += b[i].successes - nb * m / total;
+    if (total > 1) shift_variance += na * nb * m * (total - m) / (total * total * (total - 1));
+    SuccessShift& sh = result->shift;
+    sh.successes_a += a[i].successes;
+    sh.successes_b += b[i].successes;
+    sh.trials_a += a[i].trials;
+    sh.trials_b += b[i].trials;
+    DifferingCells& d = result->differing;
+    d.differing += c.differs ? 1 : 0;
+    d.expected_by_chance += c.false_alarm_chance;
+    result->score.a += c.agreement_a;
+    result->score.b += c.agreement_b;
+    result->cells.push_back(c);
+  }
+  DifferingCells& d = result->differing;
+  d.cells = static_cast<int>(cells.size());
+  d.alpha = alpha;
+  d.nominal_by_chance = alpha * d.cells;
+  d.p_at_least = ProbabilityAtLeast(false_alarm, d.differing);
+  if (shift_variance > 0) {
+    const double corrected = std::max(0.0, std::fabs(shift_sum) - 0.5);
+    result->shift.p_value = std::erfc(corrected / std::sqrt(2 * shift_variance));
+  }
+
+  // The score difference: each cell's rate in each arm from its Jeffreys posterior.
+  ScoreDifference& s = result->score;
+  const double n = static_cast<double>(std::max<std::size_t>(1, cells.size()));
+  s.a /= n;
+  s.b /= n;
+  s.difference = s.b - s.a;
+  if (!cells.empty() && options.draws >= 2) {
+    std::mt19937_64 rng(options.seed);
+    std::vector<double> diff(static_cast<std::size_t>(options.draws), 0.0);
+    auto draw_rate = [&rng](const ArmCounts& c) {
+      std::gamma_distribution<double> yes(c.successes + 0.5, 1.0);
+      std::gamma_distribution<double> no(c.trials - c.successes + 0.5, 1.0);
+      const double x = yes(rng), y = no(rng);
+      return x / (x + y);
+    };
+    for (const CellDifference& c : result->cells) {
+      for (double& v : diff) {
+        const double pa = draw_rate(c.a), pb = draw_rate(c.b);
+        v += (ClassProbability(c.cell.published, pb) - ClassProbability(c.cell.published, pa)) / n;
+      }
+    }
+    std::sort(diff.begin(), diff.end());
+    const auto at = [&](double q) {
+      return diff[static_cast<std::size_t>(std::lround(q * (options.draws - 1)))];
+    };
+    s.interval = {at(0.025), at(0.975)};
+  }
+
+  // The Fig. 6 targets, matched by name.
+  std::map<std::string, const TargetMeasure*> by_name;
+  for (const TargetMeasure& t : targets_b) by_name[t.name] = &t;
+  for (const TargetMeasure& ta : targets_a) {
+    const auto it = by_name.find(ta.name);
+    if (it == by_name.end()) continue;
+    const TargetMeasure& tb = *it->second;
+    TargetDifference t;
+    t.name = ta.name;
+    t.published = ta.published;
+    t.tolerance = ta.tolerance;
+    t.a = ta;
+    t.b = tb;
+    if (ta.n > 0 && tb.n > 0) t.difference = tb.mean - ta.mean;
+    const double va = ta.standard_error * ta.standard_error;
+    const double vb = tb.standard_error * tb.standard_error;
+    if (ta.n >= 2 && tb.n >= 2 && std::isfinite(va) && std::isfinite(vb) && va + vb > 0) {
+      t.tested = true;
+      t.standard_error = std::sqrt(va + vb);
+      t.dof = (va + vb) * (va + vb) / (va * va / (ta.n - 1) + vb * vb / (tb.n - 1));
+      t.p_value = StudentTwoSidedP(t.difference / t.standard_error, t.dof);
+      t.differs = t.p_value <= alpha;
+      ++result->targets_tested;
+      result->targets_differing += t.differs ? 1 : 0;
+    }
+    result->targets.push_back(t);
+  }
+  result->targets_p_at_least =
+      BinomialAtLeast(result->targets_tested, alpha, result->targets_differing);
+
+  result->cells_beyond_chance = d.p_at_least < alpha;
+  result->shift_differs = result->shift.p_value <= alpha;
+  result->score_differs = s.interval[0] > 0 || s.interval[1] < 0;
+  result->targets_beyond_chance = result->targets_p_at_least < alpha;
+  result->same = !result->cells_beyond_chance && !result->shift_differs && !result->score_differs &&
+                 !result->targets_beyond_chance;
+  return true;
+}
+
+}  // namespace ssc
