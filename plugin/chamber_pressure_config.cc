@@ -93,6 +93,9 @@ const std::vector<ChamberPressureConfigKey>& ChamberPressureConfigKeys() {
        "tilt stiffness of the lip carrier about its pivot; 0 = rigid (off), soft cup ~5",
        NumberRange::Closed(0, 1000),
        SSC_KEY_SCALED(lip.tilt_stiffness_nm_per_rad, 1e3 / kDegPerRad, 1e-3 * kDegPerRad)},
+      {"lip_vacuum_load", "", "lip",
+       "1 = each chamber's vacuum loads a flex skirt lip and the cup (pressure x area); 0 = off",
+       NumberRange::Whole(0, 1), SSC_KEY_INT(lip_vacuum_load, int)},
       // Pneumatics.
       {"pump_max_vacuum_pa", "Pa", "pneumatics", "pump vacuum at zero flow",
        NumberRange::Positive(100000).OpenHigh(),

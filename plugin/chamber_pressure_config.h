@@ -35,6 +35,7 @@ struct ChamberPressureConfig {
   double ray_start_m = 0.01;
   std::array<unsigned char, kNumGeomGroups> ray_groups{1, 0, 1, 0, 0, 0};  // 1 = seen by rays
   int lip_geom_group = 4;
+  int lip_vacuum_load = 1;  // a flex skirt only; segment lips carry no vacuum load
 };
 
 // One config key. Numeric keys use get/set (value in the key's unit); a key with parse_text

@@ -4,8 +4,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <sstream>
+#include <memory>
 #include <utility>
+
+#include "plugin/lip_body.h"
+#include "plugin/pneumatics/lip_rim.h"
 
 namespace ssc {
 namespace {
@@ -25,11 +28,6 @@ void Axis(const mjtNum* mat, int col, mjtNum out[3]) {
   out[2] = mat[6 + col];
 }
 
-bool IsInSubtree(const mjModel* m, int body, int root) {
-  while (body > 0 && body != root) body = m->body_parentid[body];
-  return body == root;
-}
-
 SensorChainState* StateOf(mjData* d, const mjModel* m, int instance) {
   return reinterpret_cast<SensorChainState*>(d->plugin_state + m->plugin_stateadr[instance]);
 }
@@ -39,7 +37,8 @@ SensorChainState* StateOf(mjData* d, const mjModel* m, int instance) {
 class ChamberPressureSensor final : public ChamberPressureDiagnostics {
  public:
   // Returns nullptr with *error when the config or model is invalid.
-  static ChamberPressureSensor* Create(const mjModel* m, int instance, std::string* error);
+  static std::unique_ptr<ChamberPressureSensor> Create(const mjModel* m, int instance,
+                                                       std::string* error);
 
   void Reset(mjtNum* plugin_state) const;
   void Compute(const mjModel* m, mjData* d, int instance);
@@ -48,7 +47,7 @@ class ChamberPressureSensor final : public ChamberPressureDiagnostics {
   int instance() const override { return instance_; }
   int site_id() const override { return site_id_; }
   int sensor_adr() const override { return sensor_adr_; }
-  int num_lip_segments() const override { return static_cast<int>(lip_geoms_.size()); }
+  int num_lip_segments() const override { return lip_.num_rim_points(); }
   const ChamberPressureConfig& config() const override { return config_; }
   const ChamberPressureSample& last_sample() const override { return sample_; }
   void Measure(const mjModel* m, const mjData* d, ChamberPressureSample* sample) const override;
@@ -58,15 +57,12 @@ class ChamberPressureSensor final : public ChamberPressureDiagnostics {
   // The filtered output of the state into sensordata.
   void WriteOutput(mjData* d, const SensorChainState& state) const;
 
-  // Passive forces of the lip (ring bending, shear and tilt springs) into d->qfrc_passive, and
-  // the carrier's locks switched to match the config.
-  void ApplyLipForces(const mjModel* m, mjData* d) const;
+  // Passive forces of the lip (LipBody::ApplyForces) with the chamber vacuums of the newest
+  // sample (kept in the plugin state, so a reset run starts from none).
+  void ApplyLipForces(const mjModel* m, mjData* d, int instance) const;
 
  private:
   ChamberPressureSensor(ChamberPressureConfig config, int instance, int site_id, int sensor_adr);
-  // Finds the lip's carrier, the segments' joints and the carrier's shear/tilt joints; checks
-  // the lip stiffnesses against the time step. False with *error on a bad model or config.
-  bool BindLip(const mjModel* m, std::string* error);
   // World pose of the opening's frame (the tool frame carried by the lip).
   void OpeningFrame(const mjData* d, mjtNum pos[3], mjtNum mat[9]) const;
   // Lists the geoms the rays can see now (ray_geoms_), once per sample.
@@ -81,32 +77,13 @@ class ChamberPressureSensor final : public ChamberPressureDiagnostics {
   int instance_;
   int site_id_;
   int sensor_adr_;
-  std::vector<int> lip_geoms_;          // geom id of each lip segment
-  std::vector<int> lip_of_geom_;        // segment index of each geom id, -1 if not lip
-  std::vector<double> lip_tip_radius_;  // tip below the segment geom's centre (capsule radius)
-  mutable std::vector<double> lip_tip_depth_;  // per sample: tip depth below the lip plane
-  // The body carrying the lip segments and the site's pose relative to it.
-  int carrier_body_ = 0;
-  mjtNum opening_offset_pos_[3] = {0, 0, 0};
-  mjtNum opening_offset_mat_[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-  // The lip segments either side of each wedge's bisector and the weight of the second.
-  struct WedgeRim {
-    int segment[2] = {0, 0};
-    double weight1 = 0.0;
-  };
+  LipBody lip_;
+  mutable std::vector<double> lip_tip_depth_;  // per sample: each rim point's tip depth
+  mutable std::vector<double>
+      lip_rim_radius_;  // per sample: each rim point's distance from the axis
+  mutable std::vector<unsigned char> lip_touching_;  // per sample: rim point in contact
+  // The rim points either side of each wedge's bisector and the weight of the second.
   std::vector<WedgeRim> wedge_rim_;
-  // Ring bending: each segment's slide joint, its angle, the ring radius and the mode cap.
-  std::vector<int> segment_dof_, segment_qpos_;
-  std::vector<double> segment_angle_;
-  RingModeShapes ring_shapes_;  // at segment_angle_, made once
-  mutable std::vector<double> ring_u_, ring_force_;
-  double lip_radius_m_ = 5.5e-3;
-  double ring_mode_cap_n_per_m_ = kNoModeCap;
-  struct CarrierJoint {
-    int dof = 0, qpos = 0, lock = -1;  // lock: equality constraint that pins it, -1 if none
-    bool is_tilt = false;              // hinge (tilt) or slide (shear)
-  };
-  std::vector<CarrierJoint> carrier_joints_;
   // The geoms mj_ray would test with ray_groups (in a group of ray_groups, not invisible: alpha
   // of the geom or its material not 0), in id order; capacity ngeom, made at each sample.
   mutable std::vector<int> ray_geoms_;
@@ -127,8 +104,8 @@ ChamberPressureSensor::ChamberPressureSensor(ChamberPressureConfig config, int i
                                              int site_id, int sensor_adr)
     : config_(std::move(config)), instance_(instance), site_id_(site_id), sensor_adr_(sensor_adr) {}
 
-ChamberPressureSensor* ChamberPressureSensor::Create(const mjModel* m, int instance,
-                                                     std::string* error) {
+std::unique_ptr<ChamberPressureSensor> ChamberPressureSensor::Create(const mjModel* m, int instance,
+                                                                     std::string* error) {
   std::optional<ChamberPressureConfig> config = ParseChamberPressureConfig(
       [m, instance](const char* key) { return mj_getPluginConfig(m, instance, key); }, error);
   if (!config) return nullptr;
@@ -153,214 +130,45 @@ ChamberPressureSensor* ChamberPressureSensor::Create(const mjModel* m, int insta
     return nullptr;
   }
   const int site_id = m->sensor_objid[sensor_id];
-  auto* sensor =
-      new ChamberPressureSensor(std::move(*config), instance, site_id, m->sensor_adr[sensor_id]);
+  std::unique_ptr<ChamberPressureSensor> sensor(
+      new ChamberPressureSensor(std::move(*config), instance, site_id, m->sensor_adr[sensor_id]));
+  const ChamberPressureConfig& c = sensor->config_;
+  if (!sensor->lip_.Bind(m, site_id, c.lip_geom_group, c.lip, error)) return nullptr;
 
-  // Lip segments: geoms of the lip group in the site body's subtree.
-  const int root = m->site_bodyid[site_id];
-  sensor->lip_of_geom_.assign(m->ngeom, -1);
-  for (int g = 0; g < m->ngeom; ++g) {
-    if (m->geom_group[g] == sensor->config_.lip_geom_group &&
-        IsInSubtree(m, m->geom_bodyid[g], root)) {
-      sensor->lip_of_geom_[g] = static_cast<int>(sensor->lip_geoms_.size());
-      sensor->lip_geoms_.push_back(g);
-    }
+  // Each rim point belongs to the chamber its direction falls in; arcs split the rim evenly.
+  const int n_rim = sensor->lip_.num_rim_points();
+  const std::vector<double>& angles = sensor->lip_.rim_angles_rad();
+  sensor->sample_.lip.resize(n_rim);
+  const double arc = 2.0 * M_PI * sensor->lip_.rim_radius_m() / n_rim;
+  for (int i = 0; i < n_rim; ++i) {
+    sensor->sample_.lip[i].chamber = ChamberOfAngle(angles[i]);
+    sensor->sample_.lip[i].arc_m = arc;
   }
-  if (sensor->lip_geoms_.empty() || sensor->lip_geoms_.size() > kMaxLipSegments) {
-    *error = std::string(kChamberPressurePluginName) + ": found " +
-             std::to_string(sensor->lip_geoms_.size()) + " lip segment geoms (group " +
-             std::to_string(sensor->config_.lip_geom_group) +
-             ") under the site's body; need 1 to " + std::to_string(kMaxLipSegments);
-    delete sensor;
-    return nullptr;
-  }
-  sensor->sample_.lip.resize(sensor->lip_geoms_.size());
+  sensor->lip_tip_depth_.assign(n_rim, 0.0);
+  sensor->lip_rim_radius_.assign(n_rim, 0.0);
+  sensor->lip_touching_.assign(n_rim, 0);
 
-  // Assign each segment to the chamber its direction falls in, using the model's reference pose
-  // (body and geom offsets up to the site's body; no mjData here, init must not recurse into
-  // mj_makeData); arcs split the lip circumference evenly.
-  mjtNum site_quat_inv[4];
-  mju_negQuat(site_quat_inv, m->site_quat + 4 * site_id);
-  double radius_sum = 0.0;
-  const int n_seg = static_cast<int>(sensor->lip_geoms_.size());
-  for (int i = 0; i < n_seg; ++i) {
-    const int g = sensor->lip_geoms_[i];
-    mjtNum p[3] = {m->geom_pos[3 * g], m->geom_pos[3 * g + 1], m->geom_pos[3 * g + 2]};
-    for (int b = m->geom_bodyid[g]; b != root; b = m->body_parentid[b]) {
-      mjtNum rotated[3];
-      mju_rotVecQuat(rotated, p, m->body_quat + 4 * b);
-      for (int k = 0; k < 3; ++k) p[k] = rotated[k] + m->body_pos[3 * b + k];
-    }
-    mjtNum rel[3] = {p[0] - m->site_pos[3 * site_id], p[1] - m->site_pos[3 * site_id + 1],
-                     p[2] - m->site_pos[3 * site_id + 2]};
-    mjtNum local[3];
-    mju_rotVecQuat(local, rel, site_quat_inv);
-    const double angle = std::atan2(local[1], local[0]);
-    sensor->sample_.lip[i].chamber = ChamberOfAngle(angle);
-    sensor->segment_angle_.push_back(angle);
-    radius_sum += std::hypot(local[0], local[1]);
-    const int type = m->geom_type[g];
-    sensor->lip_tip_radius_.push_back(type == mjGEOM_CAPSULE || type == mjGEOM_SPHERE
-                                          ? m->geom_size[3 * g]
-                                          : m->geom_size[3 * g + 2]);
-  }
-  sensor->lip_radius_m_ = radius_sum / n_seg;
-  const double arc = 2.0 * M_PI * sensor->lip_radius_m_ / n_seg;
-  for (LipSegmentState& s : sensor->sample_.lip) s.arc_m = arc;
-  sensor->lip_tip_depth_.assign(n_seg, 0.0);
-  if (!sensor->BindLip(m, error)) {
-    delete sensor;
-    return nullptr;
-  }
-
-  // Radial ray directions in the site frame.
-  const int per = sensor->config_.geometry.rays_per_chamber;
+  // Radial ray directions in the site frame; each wedge's rim between the rim points either
+  // side of its bisector.
+  const int per = c.geometry.rays_per_chamber;
   const int n_rays = per * kNumChambers;
   sensor->ray_dirs_local_.resize(3 * n_rays);
-  for (int c = 0; c < kNumChambers; ++c) {
+  sensor->sample_.wedges.resize(n_rays);
+  for (int ch = 0; ch < kNumChambers; ++ch) {
     for (int j = 0; j < per; ++j) {
-      const double a = RayAngle(c, j, per);
-      mjtNum* dir = sensor->ray_dirs_local_.data() + 3 * (c * per + j);
+      const double a = RayAngle(ch, j, per);
+      mjtNum* dir = sensor->ray_dirs_local_.data() + 3 * (ch * per + j);
       dir[0] = std::cos(a);
       dir[1] = std::sin(a);
       dir[2] = 0.0;
-    }
-  }
-  sensor->ray_geoms_.reserve(m->ngeom);
-  sensor->sample_.wedges.resize(n_rays);
-  // Each wedge's rim lies between the two lip segments either side of its bisector.
-  sensor->wedge_rim_.resize(n_rays);
-  for (int c = 0; c < kNumChambers; ++c) {
-    for (int j = 0; j < per; ++j) {
-      const int r = c * per + j;
-      const double a = RayAngle(c, j, per);
-      OpeningWedge& w = sensor->sample_.wedges[r];
-      w.chamber = c;
+      OpeningWedge& w = sensor->sample_.wedges[ch * per + j];
+      w.chamber = ch;
       w.dtheta_rad = 0.5 * M_PI / per;
-      double before = 1e9, after = 1e9;
-      WedgeRim& rim = sensor->wedge_rim_[r];
-      for (int i = 0; i < n_seg; ++i) {
-        const double delta = std::remainder(a - sensor->segment_angle_[i], 2.0 * M_PI);
-        if (delta >= 0 && delta < before) {
-          before = delta;
-          rim.segment[0] = i;
-        }
-        if (delta < 0 && -delta < after) {
-          after = -delta;
-          rim.segment[1] = i;
-        }
-      }
-      if (after >= 1e9) rim.segment[1] = rim.segment[0];
-      if (before >= 1e9) rim.segment[0] = rim.segment[1];
-      rim.weight1 = (before < 1e9 && after < 1e9) ? before / (before + after) : 0.0;
     }
   }
+  sensor->wedge_rim_ = AssignWedgeRims(angles, per);
+  sensor->ray_geoms_.reserve(m->ngeom);
   return sensor;
-}
-
-bool ChamberPressureSensor::BindLip(const mjModel* m, std::string* error) {
-  const int root = m->site_bodyid[site_id_];
-  const int n_seg = static_cast<int>(lip_geoms_.size());
-  const double dt = m->opt.timestep;
-  auto fail = [&](const std::string& what) {
-    *error = std::string(kChamberPressurePluginName) + ": " + what;
-    return false;
-  };
-  // The carrier: the common parent of the segments' bodies (the site's body in a rigid cup).
-  int carrier = -1;
-  for (int g : lip_geoms_) {
-    const int b = m->geom_bodyid[g];
-    const int parent = b == root ? root : m->body_parentid[b];
-    if (carrier < 0) carrier = parent;
-    if (parent != carrier) {
-      carrier = root;
-      break;
-    }
-  }
-  if (carrier != root && m->body_parentid[carrier] != root) {
-    return fail("the lip segments' parent body must be the tool site's body or its child");
-  }
-  carrier_body_ = carrier;
-  // The site's pose in the carrier's frame at the reference configuration.
-  mjtNum site_mat[9];
-  mju_quat2Mat(site_mat, m->site_quat + 4 * site_id_);
-  if (carrier == root) {
-    mju_copy3(opening_offset_pos_, m->site_pos + 3 * site_id_);
-    mju_copy(opening_offset_mat_, site_mat, 9);
-  } else {
-    mjtNum carrier_mat[9], rel[3];
-    mju_quat2Mat(carrier_mat, m->body_quat + 4 * carrier);
-    mju_sub3(rel, m->site_pos + 3 * site_id_, m->body_pos + 3 * carrier);
-    mju_mulMatTVec3(opening_offset_pos_, carrier_mat, rel);
-    mju_mulMatTMat(opening_offset_mat_, carrier_mat, site_mat, 3, 3, 3);
-  }
-
-  // Ring bending acts on each segment's slide joint.
-  const LipMechanics& lip = config_.lip;
-  double min_mass = 1e9;
-  for (int g : lip_geoms_) {
-    const int b = m->geom_bodyid[g];
-    const int j = m->body_jntadr[b];
-    if (m->body_jntnum[b] < 1 || m->jnt_type[j] != mjJNT_SLIDE) {
-      segment_dof_.clear();
-      segment_qpos_.clear();
-      break;
-    }
-    segment_dof_.push_back(m->jnt_dofadr[j]);
-    segment_qpos_.push_back(m->jnt_qposadr[j]);
-    min_mass = std::min(min_mass, m->dof_M0[m->jnt_dofadr[j]]);
-  }
-  if (lip.bending_stiffness_nm2 > 0 && segment_dof_.empty()) {
-    return fail("lip_bending_nmm2 > 0 needs a slide joint on every lip segment's body");
-  }
-  // Explicit springs stay stable while omega * dt <= 1: modes stiffer than that are capped.
-  if (!segment_dof_.empty()) ring_mode_cap_n_per_m_ = min_mass / (dt * dt);
-  ring_u_.assign(n_seg, 0.0);
-  ring_force_.assign(n_seg, 0.0);
-  ring_shapes_ = MakeRingModeShapes(segment_angle_.data(), n_seg);
-
-  // Carrier joints: slides shear, hinges tilt; each may be pinned by a joint equality.
-  bool has_shear = false, has_tilt = false;
-  if (carrier != root) {
-    for (int j = m->body_jntadr[carrier]; j < m->body_jntadr[carrier] + m->body_jntnum[carrier];
-         ++j) {
-      if (m->jnt_type[j] != mjJNT_SLIDE && m->jnt_type[j] != mjJNT_HINGE) continue;
-      CarrierJoint cj;
-      cj.dof = m->jnt_dofadr[j];
-      cj.qpos = m->jnt_qposadr[j];
-      cj.is_tilt = m->jnt_type[j] == mjJNT_HINGE;
-      for (int e = 0; e < m->neq; ++e) {
-        if (m->eq_type[e] == mjEQ_JOINT && m->eq_obj1id[e] == j && m->eq_obj2id[e] < 0) cj.lock = e;
-      }
-      const double k = cj.is_tilt ? lip.tilt_stiffness_nm_per_rad : lip.shear_stiffness_n_per_m;
-      const double k_max = m->dof_M0[cj.dof] / (dt * dt);
-      if (k > k_max) {
-        std::ostringstream os;
-        if (cj.is_tilt) {
-          os << "lip_tilt_nmm_per_deg = " << k * 1e3 * M_PI / 180
-             << " is too stiff for the time step " << dt << " s: stable up to "
-             << k_max * 1e3 * M_PI / 180 << " N mm/deg (or make the tilt hinge's armature larger)";
-        } else {
-          os << "lip_shear_n_per_mm = " << k * 1e-3 << " is too stiff for the time step " << dt
-             << " s: stable up to " << k_max * 1e-3
-             << " N/mm (or make the shear slides' armature larger)";
-        }
-        return fail(os.str());
-      }
-      (cj.is_tilt ? has_tilt : has_shear) = true;
-      carrier_joints_.push_back(cj);
-    }
-  }
-  if (lip.shear_stiffness_n_per_m > 0 && !has_shear) {
-    return fail(
-        "lip_shear_n_per_mm > 0 needs slide joints on the lip carrier body (models/ssc_tool.xml)");
-  }
-  if (lip.tilt_stiffness_nm_per_rad > 0 && !has_tilt) {
-    return fail(
-        "lip_tilt_nmm_per_deg > 0 needs hinge joints on the lip carrier body "
-        "(models/ssc_tool.xml)");
-  }
-  return true;
 }
 
 void ChamberPressureSensor::Reset(mjtNum* plugin_state) const {
@@ -397,11 +205,11 @@ void ChamberPressureSensor::WriteOutput(mjData* d, const SensorChainState& state
 }
 
 void ChamberPressureSensor::OpeningFrame(const mjData* d, mjtNum pos[3], mjtNum mat[9]) const {
-  const mjtNum* cpos = d->xpos + 3 * carrier_body_;
-  const mjtNum* cmat = d->xmat + 9 * carrier_body_;
-  mju_mulMatVec3(pos, cmat, opening_offset_pos_);
+  const mjtNum* cpos = d->xpos + 3 * lip_.carrier_body();
+  const mjtNum* cmat = d->xmat + 9 * lip_.carrier_body();
+  mju_mulMatVec3(pos, cmat, lip_.opening_offset_pos());
   for (int k = 0; k < 3; ++k) pos[k] += cpos[k];
-  mju_mulMatMat(mat, cmat, opening_offset_mat_, 3, 3, 3);
+  mju_mulMatMat(mat, cmat, lip_.opening_offset_mat(), 3, 3, 3);
 }
 
 void ChamberPressureSensor::ListRayGeoms(const mjModel* m) const {
@@ -464,34 +272,32 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
     return t < 0 ? kNoSurfaceGapM : t - config_.ray_start_m;
   };
 
-  // Lip segments: contacts first, rays for the rest. Gaps are from each segment's tip.
-  for (LipSegmentState& s : sample->lip) s.in_contact = false;
-  for (int i = 0; i < d->ncon; ++i) {
-    const mjContact& con = d->contact[i];
-    if (con.dist > 0 || con.geom[0] < 0 || con.geom[1] < 0) continue;
-    const int seg0 = lip_of_geom_[con.geom[0]];
-    const int seg1 = lip_of_geom_[con.geom[1]];
-    if ((seg0 >= 0) == (seg1 >= 0)) continue;  // lip against lip, or no lip at all
-    sample->lip[seg0 >= 0 ? seg0 : seg1].in_contact = true;
-  }
+  // The lip's rim: contacts first, rays for the rest. Gaps are from each rim point's tip.
+  const int n_rim = lip_.num_rim_points();
+  std::fill(lip_touching_.begin(), lip_touching_.end(), 0);
+  lip_.MarkContacts(m, d, reinterpret_cast<bool*>(lip_touching_.data()));
   double tip_sum = 0.0;
-  for (size_t i = 0; i < lip_geoms_.size(); ++i) {
+  for (int i = 0; i < n_rim; ++i) {
     LipSegmentState& s = sample->lip[i];
-    const mjtNum* gp = d->geom_xpos + 3 * lip_geoms_[i];
+    s.in_contact = lip_touching_[i] != 0;
+    const mjtNum* gp = lip_.RimPos(d, i);
     mjtNum rel[3] = {gp[0] - origin_lip[0], gp[1] - origin_lip[1], gp[2] - origin_lip[2]};
     const mjtNum along = mju_dot3(rel, axis_z);
-    lip_tip_depth_[i] = along + lip_tip_radius_[i];
+    lip_tip_depth_[i] = along + lip_.rim_tip_radius_m(i);
     tip_sum += lip_tip_depth_[i];
+    mjtNum on_plane[3];
+    for (int k = 0; k < 3; ++k) on_plane[k] = gp[k] - along * axis_z[k];
+    if (lip_.rim_moves_radially()) {
+      lip_rim_radius_[i] = std::sqrt(std::max(0.0, mju_dot3(rel, rel) - along * along));
+    }
     if (s.in_contact) {
       s.gap_m = 0.0;
       continue;
     }
-    mjtNum on_plane[3];
-    for (int k = 0; k < 3; ++k) on_plane[k] = gp[k] - along * axis_z[k];
     const double depth = surface_depth_at(on_plane);
     s.gap_m = depth >= kNoSurfaceGapM ? kNoSurfaceGapM : std::max(0.0, depth - lip_tip_depth_[i]);
   }
-  const double tip_mean = tip_sum / std::max(1.0, static_cast<double>(lip_geoms_.size()));
+  const double tip_mean = tip_sum / std::max(1, n_rim);
 
   // Centre of the opening.
   const double plane_depth = tip_mean + geo.open_depth_m;
@@ -509,6 +315,17 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
   const double radius = geo.opening_radius_m;
   constexpr double kStepPast = 1e-6;  // restart just past a crossing, metres
   for (int r = 0; r < n_rays; ++r) {
+    // The wedge's rim: the rim points either side of its bisector. A skirt folded inward stands
+    // inside the opening and covers the wedge beyond it.
+    OpeningWedge& w = sample->wedges[r];
+    const WedgeRim& rim = wedge_rim_[r];
+    w.rim_gap_m = (1.0 - rim.weight1) * sample->lip[rim.point[0]].gap_m +
+                  rim.weight1 * sample->lip[rim.point[1]].gap_m;
+    const double tip = AtWedge(rim, lip_tip_depth_.data());
+    w.rim_radius_m = lip_.rim_moves_radially()
+                         ? std::clamp(AtWedge(rim, lip_rim_radius_.data()), 0.1 * radius, radius)
+                         : 0.0;
+    const double wedge_radius = w.rim_radius_m > 0.0 ? w.rim_radius_m : radius;
     mjtNum dir[3];
     mju_mulMatVec3(dir, frame, ray_dirs_local_.data() + 3 * r);
     auto depth_along = [&](double along) {
@@ -523,7 +340,7 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
     // A hit at or beyond the radius (or none, -1) is no crossing inside the opening.
     double t = CastRay(m, d, origin, dir);
     ++rays;
-    for (int k = 0; t >= 0 && t < radius && k < kMaxCrossings; ++k) {
+    for (int k = 0; t >= 0 && t < wedge_radius && k < kMaxCrossings; ++k) {
       cuts[n++] = t;
       const double from = t + kStepPast;
       mjtNum start[3];
@@ -537,8 +354,8 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
       // the plane depth, or grazing that plane) can still end inside the opening: compare the
       // rim with the centre, and bisect with vertical rays if they differ.
       const bool centre = sample->centre_covered;
-      if ((depth_along(radius) <= plane_depth) != centre) {
-        double inside = 0, outside = radius;
+      if ((depth_along(wedge_radius) <= plane_depth) != centre) {
+        double inside = 0, outside = wedge_radius;
         for (int b = 0; b < kRimBisections; ++b) {
           const double mid = 0.5 * (inside + outside);
           ((depth_along(mid) <= plane_depth) == centre ? inside : outside) = mid;
@@ -546,15 +363,7 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
         cuts[n++] = 0.5 * (inside + outside);
       }
     }
-    cuts[n++] = radius;
-    // The wedge's rim: the lip segments either side of its bisector.
-    OpeningWedge& w = sample->wedges[r];
-    const WedgeRim& rim = wedge_rim_[r];
-    const LipSegmentState& s0 = sample->lip[rim.segment[0]];
-    const LipSegmentState& s1 = sample->lip[rim.segment[1]];
-    w.rim_gap_m = (1.0 - rim.weight1) * s0.gap_m + rim.weight1 * s1.gap_m;
-    const double tip = (1.0 - rim.weight1) * lip_tip_depth_[rim.segment[0]] +
-                       rim.weight1 * lip_tip_depth_[rim.segment[1]];
+    cuts[n++] = wedge_radius;
     w.n_samples = 0;
     for (int k = 0; k + 1 < n; ++k) {
       double radii[kSamplesPerStretch], gaps[kSamplesPerStretch];
@@ -575,26 +384,12 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
   sample->time_s = d->time;
 }
 
-void ChamberPressureSensor::ApplyLipForces(const mjModel* m, mjData* d) const {
-  const LipMechanics& lip = config_.lip;
-  if (lip.bending_stiffness_nm2 > 0 && !segment_dof_.empty()) {
-    const int n = static_cast<int>(segment_dof_.size());
-    for (int i = 0; i < n; ++i) {
-      ring_u_[i] = d->qpos[segment_qpos_[i]];
-      ring_force_[i] = 0.0;
-    }
-    AddRingBendingForce(ring_u_.data(), ring_shapes_, lip.bending_stiffness_nm2, lip_radius_m_,
-                        ring_mode_cap_n_per_m_, ring_force_.data());
-    for (int i = 0; i < n; ++i) d->qfrc_passive[segment_dof_[i]] += ring_force_[i];
-  }
-  // The carrier's shear slides and tilt hinges: springs when soft, locked by their equality
-  // constraints when off (the model's default).
-  for (const CarrierJoint& j : carrier_joints_) {
-    const double k = j.is_tilt ? lip.tilt_stiffness_nm_per_rad : lip.shear_stiffness_n_per_m;
-    if (j.lock >= 0) d->eq_active[j.lock] = k > 0 ? 0 : 1;
-    if (k > 0) d->qfrc_passive[j.dof] -= k * d->qpos[j.qpos];
-  }
-  (void)m;
+void ChamberPressureSensor::ApplyLipForces(const mjModel* m, mjData* d, int instance) const {
+  const mjtNum* warm = d->plugin_state + m->plugin_stateadr[instance] + kSensorChainStateSize;
+  std::array<double, kNumChambers> vacuum_pa{};
+  for (int i = 0; i < kNumChambers; ++i) vacuum_pa[i] = std::max(0.0, warm[i]);
+  lip_.ApplyForces(m, d, vacuum_pa, config_.geometry.ChamberOpeningArea(),
+                   config_.lip_vacuum_load != 0);
 }
 
 void ChamberPressureSensor::Compute(const mjModel* m, mjData* d, int instance) {
@@ -619,7 +414,7 @@ void ChamberPressureSensor::Visualize(const mjModel* m, mjData* d, const mjvOpti
   // Lip segments coloured by state: green = sealed (contact), amber = gap within the open depth,
   // red = open.
   const double seal = config_.geometry.open_depth_m;
-  for (size_t i = 0; i < lip_geoms_.size() && i < sample_.lip.size(); ++i) {
+  for (int i = 0; i < lip_.num_rim_points() && i < static_cast<int>(sample_.lip.size()); ++i) {
     if (scn->ngeom >= scn->maxgeom) return;
     const LipSegmentState& s = sample_.lip[i];
     float rgba[4] = {0.9f, 0.15f, 0.1f, 1.0f};
@@ -632,10 +427,9 @@ void ChamberPressureSensor::Visualize(const mjModel* m, mjData* d, const mjvOpti
       rgba[1] = 0.7f;
       rgba[2] = 0.0f;
     }
-    const int g = lip_geoms_[i];
     const mjtNum size[3] = {0.0012, 0.0012, 0.0012};
     mjvGeom* geom = scn->geoms + scn->ngeom;
-    mjv_initGeom(geom, mjGEOM_SPHERE, size, d->geom_xpos + 3 * g, nullptr, rgba);
+    mjv_initGeom(geom, mjGEOM_SPHERE, size, lip_.RimPos(d, i), nullptr, rgba);
     geom->category = mjCAT_DECOR;
     ++scn->ngeom;
   }
@@ -673,17 +467,19 @@ void RegisterChamberPressurePlugin() {
   plugin.nsensordata = +[](const mjModel*, int, int) { return kNumChambers; };
   plugin.init = +[](const mjModel* m, mjData* d, int instance) {
     std::string error;
-    ChamberPressureSensor* sensor = ChamberPressureSensor::Create(m, instance, &error);
+    std::unique_ptr<ChamberPressureSensor> sensor =
+        ChamberPressureSensor::Create(m, instance, &error);
     if (sensor == nullptr) {
       mju_warning("%s", error.c_str());
       return -1;
     }
-    d->plugin_data[instance] = reinterpret_cast<uintptr_t>(sensor);
+    d->plugin_data[instance] = reinterpret_cast<uintptr_t>(sensor.release());
     sensor->Reset(d->plugin_state + m->plugin_stateadr[instance]);
     return 0;
   };
   plugin.destroy = +[](mjData* d, int instance) {
-    delete SensorOf(d, instance);
+    // Owned by plugin_data since init released it there.
+    std::unique_ptr<ChamberPressureSensor> owned(SensorOf(d, instance));
     d->plugin_data[instance] = 0;
   };
   plugin.copy = +[](mjData* dest, const mjModel*, const mjData* src, int instance) {
@@ -699,7 +495,7 @@ void RegisterChamberPressurePlugin() {
     ChamberPressureSensor* sensor = SensorOf(d, instance);
     if (sensor == nullptr) return;
     if (capability == mjPLUGIN_PASSIVE) {
-      sensor->ApplyLipForces(m, d);
+      sensor->ApplyLipForces(m, d, instance);
     } else {
       sensor->Compute(m, d, instance);
     }

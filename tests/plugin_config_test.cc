@@ -39,7 +39,7 @@ TEST(PluginConfigTest, EveryKeyOnceAndDefaultsAreTheStructDefaults) {
       EXPECT_TRUE(k.range.Contains(k.get(defaults))) << k.key;
     }
   }
-  EXPECT_EQ(seen.size(), 23u);
+  EXPECT_EQ(seen.size(), 24u);
 }
 
 TEST(PluginConfigTest, ValuesReachTheirMembersInSiUnits) {

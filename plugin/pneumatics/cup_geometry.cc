@@ -63,7 +63,10 @@ void AddStretch(double r0_m, double r1_m, const double gap_m[kSamplesPerStretch]
 WedgeLeak WedgeLeakArea(const CupGeometry& geometry, const OpeningWedge& wedge) {
   const double depth = geometry.open_depth_m;
   const double rim_gap = std::max(0.0, wedge.rim_gap_m);
-  const double curtain_per_m = geometry.opening_radius_m * wedge.dtheta_rad;
+  const double rim_radius_m = wedge.rim_radius_m > 0.0
+                                  ? std::min(wedge.rim_radius_m, geometry.opening_radius_m)
+                                  : geometry.opening_radius_m;
+  const double curtain_per_m = rim_radius_m * wedge.dtheta_rad;
   const double roughness = geometry.lip_roughness_gap_m;
   auto openness = [depth](double layer_m) { return std::clamp(layer_m / depth, 0.0, 1.0); };
   auto cut = [&](double z) {

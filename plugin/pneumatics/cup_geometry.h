@@ -61,6 +61,10 @@ struct OpeningWedge {
   int chamber = 0;
   double dtheta_rad = 0.0;
   double rim_gap_m = kNoSurfaceGapM;  // lip tip to the surface at the wedge's rim; 0 = touching
+  // Where the lip's rim stands across this wedge, from the axis; <= 0 = on the opening's edge.
+  // A lip folded inward stands inside the opening: the part of the wedge beyond it is covered by
+  // lip material (no air path), and the curtain under the rim is that much shorter.
+  double rim_radius_m = 0.0;
   std::array<GapSample, kMaxWedgeSamples> samples{};
   int n_samples = 0;
 };

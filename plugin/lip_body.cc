@@ -1,0 +1,370 @@
+#include "plugin/lip_body.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "plugin/chamber_pressure_config.h"
+#include "plugin/pneumatics/lip_rim.h"
+
+namespace ssc {
+namespace {
+
+// A skirt vertex within this much of the deepest one belongs to the rim.
+constexpr double kRimToleranceM = 0.1e-3;
+
+bool IsInSubtree(const mjModel* m, int body, int root) {
+  while (body > 0 && body != root) body = m->body_parentid[body];
+  return body == root;
+}
+
+// Point `p` given in body `b`'s frame, in the frame of its ancestor `root`, at the model's
+// reference pose (body offsets only: init has no mjData).
+void ToRootFrame(const mjModel* m, int b, int root, mjtNum p[3]) {
+  for (; b != root && b > 0; b = m->body_parentid[b]) {
+    mjtNum rotated[3];
+    mju_rotVecQuat(rotated, p, m->body_quat + 4 * b);
+    for (int k = 0; k < 3; ++k) p[k] = rotated[k] + m->body_pos[3 * b + k];
+  }
+}
+
+// `p` (root frame) in the site's frame.
+void ToSiteFrame(const mjModel* m, int site_id, const mjtNum p[3], mjtNum local[3]) {
+  mjtNum site_quat_inv[4];
+  mju_negQuat(site_quat_inv, m->site_quat + 4 * site_id);
+  const mjtNum rel[3] = {p[0] - m->site_pos[3 * site_id], p[1] - m->site_pos[3 * site_id + 1],
+                         p[2] - m->site_pos[3 * site_id + 2]};
+  mju_rotVecQuat(local, rel, site_quat_inv);
+}
+
+std::string Fail(const std::string& what) {
+  return std::string(kChamberPressurePluginName) + ": " + what;
+}
+
+}  // namespace
+
+bool LipBody::Bind(const mjModel* m, int site_id, int lip_geom_group, const LipMechanics& mechanics,
+                   std::string* error) {
+  site_id_ = site_id;
+  mechanics_ = mechanics;
+  const int root = m->site_bodyid[site_id];
+  segment_of_geom_.assign(m->ngeom, -1);
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (m->geom_group[g] == lip_geom_group && IsInSubtree(m, m->geom_bodyid[g], root)) {
+      segment_of_geom_[g] = static_cast<int>(segment_geom_.size());
+      segment_geom_.push_back(g);
+    }
+  }
+  if (!segment_geom_.empty()) return BindSegments(m, root, lip_geom_group, error);
+  if (!BindSkirt(m, root, error)) {
+    if (flex_ < 0) {
+      *error = Fail("found 0 lip segment geoms (group " + std::to_string(lip_geom_group) +
+                    ") and no 2-D flex skirt under the site's body");
+    }
+    return false;
+  }
+  return true;
+}
+
+bool LipBody::BindSegments(const mjModel* m, int root, int lip_geom_group, std::string* error) {
+  kind_ = Kind::kSegments;
+  const int n_seg = static_cast<int>(segment_geom_.size());
+  if (n_seg > kMaxLipSegments) {
+    *error = Fail("found " + std::to_string(n_seg) + " lip segment geoms (group " +
+                  std::to_string(lip_geom_group) + ") under the site's body; need 1 to " +
+                  std::to_string(kMaxLipSegments));
+    return false;
+  }
+  // Each segment's direction at the reference pose; arcs split the circumference evenly.
+  double radius_sum = 0.0;
+  for (int g : segment_geom_) {
+    mjtNum p[3] = {m->geom_pos[3 * g], m->geom_pos[3 * g + 1], m->geom_pos[3 * g + 2]};
+    ToRootFrame(m, m->geom_bodyid[g], root, p);
+    mjtNum local[3];
+    ToSiteFrame(m, site_id_, p, local);
+    rim_angle_rad_.push_back(std::atan2(local[1], local[0]));
+    radius_sum += std::hypot(local[0], local[1]);
+    const int type = m->geom_type[g];
+    rim_tip_radius_m_.push_back(type == mjGEOM_CAPSULE || type == mjGEOM_SPHERE
+                                    ? m->geom_size[3 * g]
+                                    : m->geom_size[3 * g + 2]);
+  }
+  rim_radius_m_ = radius_sum / n_seg;
+  // The carrier: the common parent of the segments' bodies (the site's body in a rigid cup).
+  int carrier = -1;
+  for (int g : segment_geom_) {
+    const int b = m->geom_bodyid[g];
+    const int parent = b == root ? root : m->body_parentid[b];
+    if (carrier < 0) carrier = parent;
+    if (parent != carrier) {
+      carrier = root;
+      break;
+    }
+  }
+  if (carrier != root && m->body_parentid[carrier] != root) {
+    *error = Fail("the lip segments' parent body must be the tool site's body or its child");
+    return false;
+  }
+  carrier_body_ = carrier;
+  return BindCarrier(m, error);
+}
+
+bool LipBody::BindCarrier(const mjModel* m, std::string* error) {
+  const int root = m->site_bodyid[site_id_];
+  const int carrier = carrier_body_;
+  const double dt = m->opt.timestep;
+  // The site's pose in the carrier's frame at the reference configuration.
+  mjtNum site_mat[9];
+  mju_quat2Mat(site_mat, m->site_quat + 4 * site_id_);
+  if (carrier == root) {
+    mju_copy3(opening_offset_pos_, m->site_pos + 3 * site_id_);
+    mju_copy(opening_offset_mat_, site_mat, 9);
+  } else {
+    mjtNum carrier_mat[9], rel[3];
+    mju_quat2Mat(carrier_mat, m->body_quat + 4 * carrier);
+    mju_sub3(rel, m->site_pos + 3 * site_id_, m->body_pos + 3 * carrier);
+    mju_mulMatTVec3(opening_offset_pos_, carrier_mat, rel);
+    mju_mulMatTMat(opening_offset_mat_, carrier_mat, site_mat, 3, 3, 3);
+  }
+
+  if (kind_ == Kind::kSkirt) return true;  // the skirt's own elasticity bends and shears it
+  // Ring bending acts on each segment's slide joint.
+  double min_mass = 1e9;
+  for (int g : segment_geom_) {
+    const int b = m->geom_bodyid[g];
+    const int j = m->body_jntadr[b];
+    if (m->body_jntnum[b] < 1 || m->jnt_type[j] != mjJNT_SLIDE) {
+      segment_dof_.clear();
+      segment_qpos_.clear();
+      break;
+    }
+    segment_dof_.push_back(m->jnt_dofadr[j]);
+    segment_qpos_.push_back(m->jnt_qposadr[j]);
+    min_mass = std::min(min_mass, m->dof_M0[m->jnt_dofadr[j]]);
+  }
+  if (mechanics_.bending_stiffness_nm2 > 0 && segment_dof_.empty()) {
+    *error = Fail("lip_bending_nmm2 > 0 needs a slide joint on every lip segment's body");
+    return false;
+  }
+  // Explicit springs stay stable while omega * dt <= 1: modes stiffer than that are capped.
+  if (!segment_dof_.empty()) ring_mode_cap_n_per_m_ = min_mass / (dt * dt);
+  const int n_seg = num_rim_points();
+  ring_u_.assign(n_seg, 0.0);
+  ring_force_.assign(n_seg, 0.0);
+  ring_shapes_ = MakeRingModeShapes(rim_angle_rad_.data(), n_seg);
+
+  // Carrier joints: slides shear, hinges tilt; each may be pinned by a joint equality.
+  bool has_shear = false, has_tilt = false;
+  if (carrier != root) {
+    for (int j = m->body_jntadr[carrier]; j < m->body_jntadr[carrier] + m->body_jntnum[carrier];
+         ++j) {
+      if (m->jnt_type[j] != mjJNT_SLIDE && m->jnt_type[j] != mjJNT_HINGE) continue;
+      CarrierJoint cj;
+      cj.dof = m->jnt_dofadr[j];
+      cj.qpos = m->jnt_qposadr[j];
+      cj.is_tilt = m->jnt_type[j] == mjJNT_HINGE;
+      for (int e = 0; e < m->neq; ++e) {
+        if (m->eq_type[e] == mjEQ_JOINT && m->eq_obj1id[e] == j && m->eq_obj2id[e] < 0) cj.lock = e;
+      }
+      const double k =
+          cj.is_tilt ? mechanics_.tilt_stiffness_nm_per_rad : mechanics_.shear_stiffness_n_per_m;
+      const double k_max = m->dof_M0[cj.dof] / (dt * dt);
+      if (k > k_max) {
+        std::ostringstream os;
+        if (cj.is_tilt) {
+          os << "lip_tilt_nmm_per_deg = " << k * 1e3 * M_PI / 180
+             << " is too stiff for the time step " << dt << " s: stable up to "
+             << k_max * 1e3 * M_PI / 180 << " N mm/deg (or make the tilt hinge's armature larger)";
+        } else {
+          os << "lip_shear_n_per_mm = " << k * 1e-3 << " is too stiff for the time step " << dt
+             << " s: stable up to " << k_max * 1e-3
+             << " N/mm (or make the shear slides' armature larger)";
+        }
+        *error = Fail(os.str());
+        return false;
+      }
+      (cj.is_tilt ? has_tilt : has_shear) = true;
+      carrier_joints_.push_back(cj);
+    }
+  }
+  if (mechanics_.shear_stiffness_n_per_m > 0 && !has_shear) {
+    *error = Fail(
+        "lip_shear_n_per_mm > 0 needs slide joints on the lip carrier body (models/ssc_tool.xml)");
+    return false;
+  }
+  if (mechanics_.tilt_stiffness_nm_per_rad > 0 && !has_tilt) {
+    *error = Fail(
+        "lip_tilt_nmm_per_deg > 0 needs hinge joints on the lip carrier body "
+        "(models/ssc_tool.xml)");
+    return false;
+  }
+  return true;
+}
+
+bool LipBody::BindSkirt(const mjModel* m, int root, std::string* error) {
+  kind_ = Kind::kSkirt;
+  for (int f = 0; f < m->nflex && flex_ < 0; ++f) {
+    if (m->flex_dim[f] != 2 || m->flex_vertnum[f] < 3) continue;
+    const int body = m->flex_vertbodyid[m->flex_vertadr[f]];
+    if (IsInSubtree(m, body, root)) flex_ = f;
+  }
+  if (flex_ < 0) {
+    *error = Fail(
+        "no lip under the tool site's body: neither lip segment geoms (lip_geom_group) "
+        "nor a 2-D flex skirt");
+    return false;
+  }
+  if (mechanics_.shear_stiffness_n_per_m > 0 || mechanics_.tilt_stiffness_nm_per_rad > 0) {
+    *error = Fail(
+        "lip_shear_n_per_mm and lip_tilt_nmm_per_deg act on a segment lip's carrier; a "
+        "flex skirt shears and tilts by its own elasticity (set them to 0)");
+    return false;
+  }
+  const int adr = m->flex_vertadr[flex_];
+  const int n = m->flex_vertnum[flex_];
+  std::vector<double> depth(n);
+  std::vector<std::array<mjtNum, 3>> local(n);
+  for (int v = 0; v < n; ++v) {
+    mjtNum p[3] = {m->flex_vert[3 * (adr + v)], m->flex_vert[3 * (adr + v) + 1],
+                   m->flex_vert[3 * (adr + v) + 2]};
+    ToRootFrame(m, m->flex_vertbodyid[adr + v], root, p);
+    ToSiteFrame(m, site_id_, p, local[v].data());
+    depth[v] = local[v][2];
+  }
+  rim_of_vertex_.assign(n, -1);
+  double radius_sum = 0.0;
+  for (int v : RimVertices(depth, kRimToleranceM)) {
+    rim_of_vertex_[v] = static_cast<int>(rim_vertex_.size());
+    rim_vertex_.push_back(adr + v);
+    rim_angle_rad_.push_back(std::atan2(local[v][1], local[v][0]));
+    radius_sum += std::hypot(local[v][0], local[v][1]);
+    rim_tip_radius_m_.push_back(m->flex_radius[flex_]);
+  }
+  if (rim_vertex_.size() < 4 || rim_vertex_.size() > static_cast<size_t>(kMaxLipSegments)) {
+    *error = Fail("the flex skirt's rim has " + std::to_string(rim_vertex_.size()) +
+                  " vertices; need 4 to " + std::to_string(kMaxLipSegments));
+    return false;
+  }
+  rim_radius_m_ = radius_sum / static_cast<double>(rim_vertex_.size());
+  carrier_body_ = root;
+  return BindCarrier(m, error);
+}
+
+const mjtNum* LipBody::RimPos(const mjData* d, int i) const {
+  return kind_ == Kind::kSegments ? d->geom_xpos + 3 * segment_geom_[i]
+                                  : d->flexvert_xpos + 3 * rim_vertex_[i];
+}
+
+void LipBody::MarkContacts(const mjModel* m, const mjData* d, bool* touching) const {
+  for (int i = 0; i < d->ncon; ++i) {
+    const mjContact& con = d->contact[i];
+    if (con.dist > 0) continue;
+    if (kind_ == Kind::kSegments) {
+      if (con.geom[0] < 0 || con.geom[1] < 0) continue;
+      const int seg0 = segment_of_geom_[con.geom[0]];
+      const int seg1 = segment_of_geom_[con.geom[1]];
+      if ((seg0 >= 0) == (seg1 >= 0)) continue;  // lip against lip, or no lip at all
+      touching[seg0 >= 0 ? seg0 : seg1] = true;
+      continue;
+    }
+    for (int side = 0; side < 2; ++side) {
+      if (con.flex[side] != flex_ || con.flex[1 - side] == flex_) continue;
+      const int adr = m->flex_vertadr[flex_];
+      if (con.vert[side] >= 0) {
+        const int r = rim_of_vertex_[con.vert[side]];
+        if (r >= 0) touching[r] = true;
+      } else if (con.elem[side] >= 0) {
+        // An element touches: its rim vertex nearest the contact point carries the contact.
+        const int* elem = m->flex_elem + m->flex_elemdataadr[flex_] + 3 * con.elem[side];
+        int best = -1;
+        mjtNum best_d2 = 0;
+        for (int k = 0; k < 3; ++k) {
+          const int r = rim_of_vertex_[elem[k]];
+          if (r < 0) continue;
+          const mjtNum* p = d->flexvert_xpos + 3 * (adr + elem[k]);
+          const mjtNum d2 = (p[0] - con.pos[0]) * (p[0] - con.pos[0]) +
+                            (p[1] - con.pos[1]) * (p[1] - con.pos[1]) +
+                            (p[2] - con.pos[2]) * (p[2] - con.pos[2]);
+          if (best < 0 || d2 < best_d2) {
+            best = r;
+            best_d2 = d2;
+          }
+        }
+        if (best >= 0) touching[best] = true;
+      }
+    }
+  }
+}
+
+void LipBody::ApplyForces(const mjModel* m, mjData* d,
+                          const std::array<double, kNumChambers>& vacuum_pa, double opening_area_m2,
+                          bool vacuum_load) const {
+  if (kind_ == Kind::kSegments) {
+    ApplySegmentForces(d);
+  } else if (vacuum_load) {
+    ApplySkirtVacuum(m, d, vacuum_pa, opening_area_m2);
+  }
+}
+
+void LipBody::ApplySegmentForces(mjData* d) const {
+  if (mechanics_.bending_stiffness_nm2 > 0 && !segment_dof_.empty()) {
+    const int n = static_cast<int>(segment_dof_.size());
+    for (int i = 0; i < n; ++i) {
+      ring_u_[i] = d->qpos[segment_qpos_[i]];
+      ring_force_[i] = 0.0;
+    }
+    AddRingBendingForce(ring_u_.data(), ring_shapes_, mechanics_.bending_stiffness_nm2,
+                        rim_radius_m_, ring_mode_cap_n_per_m_, ring_force_.data());
+    for (int i = 0; i < n; ++i) d->qfrc_passive[segment_dof_[i]] += ring_force_[i];
+  }
+  // The carrier's shear slides and tilt hinges: springs when soft, locked by their equality
+  // constraints when off (the model's default).
+  for (const CarrierJoint& j : carrier_joints_) {
+    const double k =
+        j.is_tilt ? mechanics_.tilt_stiffness_nm_per_rad : mechanics_.shear_stiffness_n_per_m;
+    if (j.lock >= 0) d->eq_active[j.lock] = k > 0 ? 0 : 1;
+    if (k > 0) d->qfrc_passive[j.dof] -= k * d->qpos[j.qpos];
+  }
+}
+
+void LipBody::ApplySkirtVacuum(const mjModel* m, mjData* d,
+                               const std::array<double, kNumChambers>& vacuum_pa,
+                               double opening_area_m2) const {
+  const mjtNum* site_pos = d->site_xpos + 3 * site_id_;
+  const mjtNum* site_mat = d->site_xmat + 9 * site_id_;
+  const mjtNum axis_z[3] = {site_mat[2], site_mat[5], site_mat[8]};
+  // The cavity's centre: on the axis, a little above the lip plane.
+  mjtNum cavity[3];
+  for (int k = 0; k < 3; ++k) cavity[k] = site_pos[k] - 1e-3 * axis_z[k];
+  const int adr = m->flex_vertadr[flex_];
+  const int* elems = m->flex_elem + m->flex_elemdataadr[flex_];
+  const mjtNum zero[3] = {0, 0, 0};
+  for (int e = 0; e < m->flex_elemnum[flex_]; ++e) {
+    const int* v = elems + 3 * e;
+    const mjtNum* p0 = d->flexvert_xpos + 3 * (adr + v[0]);
+    const mjtNum* p1 = d->flexvert_xpos + 3 * (adr + v[1]);
+    const mjtNum* p2 = d->flexvert_xpos + 3 * (adr + v[2]);
+    // The chamber behind the triangle: its centroid's direction in the site's frame.
+    mjtNum centroid[3], rel[3], local[3];
+    for (int k = 0; k < 3; ++k) centroid[k] = (p0[k] + p1[k] + p2[k]) / 3.0;
+    mju_sub3(rel, centroid, site_pos);
+    mju_mulMatTVec3(local, site_mat, rel);
+    const double vacuum = vacuum_pa[ChamberOfAngle(std::atan2(local[1], local[0]))];
+    if (vacuum == 0.0) continue;
+    const std::array<double, 3> f = TrianglePressureForce(p0, p1, p2, vacuum, cavity);
+    mjtNum third[3] = {f[0] / 3.0, f[1] / 3.0, f[2] / 3.0};
+    for (int k = 0; k < 3; ++k) {
+      mjtNum* point = d->flexvert_xpos + 3 * (adr + v[k]);
+      mj_applyFT(m, d, third, zero, point, m->flex_vertbodyid[adr + v[k]], d->qfrc_passive);
+    }
+  }
+  // The cup's ceiling over each chamber: pulled toward the object.
+  double pull_n = 0.0;
+  for (double p : vacuum_pa) pull_n += p * opening_area_m2;
+  mjtNum force[3] = {pull_n * axis_z[0], pull_n * axis_z[1], pull_n * axis_z[2]};
+  mjtNum point[3];
+  mju_copy3(point, site_pos);
+  mj_applyFT(m, d, force, zero, point, m->site_bodyid[site_id_], d->qfrc_passive);
+}
+
+}  // namespace ssc

@@ -1,0 +1,99 @@
+// The lip as the pressure plugin binds it in a model: what carries the rim, where the rim points
+// are at a sample, which touch a surface, and the lip's passive forces. Two kinds of lip:
+//   - segments: geoms of lip_geom_group under the sensor site's body, each on a slide joint
+//     (models/ssc_tool.xml): ring bending couples the slides; the carrier body's shear slides
+//     and tilt hinges get springs from the lip_* keys;
+//   - skirt: a 2-D MuJoCo flex whose vertices hang under the site's body
+//     (models/ssc_tool_flex.xml): the engine's own elasticity deforms it; its deepest vertices
+//     are the rim; each chamber's vacuum loads the skirt's triangles and the cup.
+// A model with lip geoms uses them; otherwise the first 2-D flex under the site's body.
+// MuJoCo adapter: the physics it calls lives in pneumatics/ (lip_ring.h, lip_rim.h).
+#ifndef SSC_PLUGIN_LIP_BODY_H_
+#define SSC_PLUGIN_LIP_BODY_H_
+
+#include <mujoco/mujoco.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "plugin/pneumatics/cup_geometry.h"
+#include "plugin/pneumatics/lip_ring.h"
+
+namespace ssc {
+
+class LipBody {
+ public:
+  enum class Kind { kSegments, kSkirt };
+
+  // Finds the lip under site `site_id`; false + *error (naming what is missing) on a bad model.
+  bool Bind(const mjModel* m, int site_id, int lip_geom_group, const LipMechanics& mechanics,
+            std::string* error);
+
+  Kind kind() const { return kind_; }
+  int num_rim_points() const { return static_cast<int>(rim_angle_rad_.size()); }
+  // Angle of each rim point in the site's xy-plane at the reference pose.
+  const std::vector<double>& rim_angles_rad() const { return rim_angle_rad_; }
+  // Mean distance of the rim points from the site's axis at the reference pose.
+  double rim_radius_m() const { return rim_radius_m_; }
+  // The body whose frame carries the opening, and the site's pose in it.
+  int carrier_body() const { return carrier_body_; }
+  const mjtNum* opening_offset_pos() const { return opening_offset_pos_; }
+  const mjtNum* opening_offset_mat() const { return opening_offset_mat_; }
+
+  // World position of rim point i now, and how far its surface reaches beyond that point.
+  const mjtNum* RimPos(const mjData* d, int i) const;
+  double rim_tip_radius_m(int i) const { return rim_tip_radius_m_[i]; }
+  // Sets touching[i] for each rim point that MuJoCo reports in contact with a non-lip geom.
+  void MarkContacts(const mjModel* m, const mjData* d, bool* touching) const;
+  // Whether the skirt's fold can move the rim across the opening (the sensor then follows the
+  // rim's radius per wedge); segments stay on their circle by construction.
+  bool rim_moves_radially() const { return kind_ == Kind::kSkirt; }
+
+  // Passive forces into d->qfrc_passive: ring bending and carrier springs (segments), or each
+  // chamber's vacuum on the skirt's triangles and on the cup (skirt, when vacuum_load). Switches
+  // the carrier's equality locks to match the config. Allocates nothing.
+  void ApplyForces(const mjModel* m, mjData* d, const std::array<double, kNumChambers>& vacuum_pa,
+                   double opening_area_m2, bool vacuum_load) const;
+
+ private:
+  bool BindSegments(const mjModel* m, int root, int lip_geom_group, std::string* error);
+  bool BindSkirt(const mjModel* m, int root, std::string* error);
+  bool BindCarrier(const mjModel* m, std::string* error);
+  void ApplySegmentForces(mjData* d) const;
+  void ApplySkirtVacuum(const mjModel* m, mjData* d,
+                        const std::array<double, kNumChambers>& vacuum_pa,
+                        double opening_area_m2) const;
+
+  Kind kind_ = Kind::kSegments;
+  int site_id_ = -1;
+  LipMechanics mechanics_;
+  std::vector<double> rim_angle_rad_;
+  std::vector<double> rim_tip_radius_m_;
+  double rim_radius_m_ = 5.5e-3;
+  int carrier_body_ = 0;
+  mjtNum opening_offset_pos_[3] = {0, 0, 0};
+  mjtNum opening_offset_mat_[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+
+  // Segments.
+  std::vector<int> segment_geom_;     // geom of each rim point
+  std::vector<int> segment_of_geom_;  // rim point of each geom id, -1 if none
+  std::vector<int> segment_dof_, segment_qpos_;
+  RingModeShapes ring_shapes_;
+  mutable std::vector<double> ring_u_, ring_force_;
+  double ring_mode_cap_n_per_m_ = kNoModeCap;
+  struct CarrierJoint {
+    int dof = 0, qpos = 0, lock = -1;  // lock: equality constraint that pins it, -1 if none
+    bool is_tilt = false;              // hinge (tilt) or slide (shear)
+  };
+  std::vector<CarrierJoint> carrier_joints_;
+
+  // Skirt.
+  int flex_ = -1;
+  std::vector<int> rim_vertex_;     // flex vertex (global id) of each rim point
+  std::vector<int> rim_of_vertex_;  // rim point of each of the flex's vertices, -1 if none
+};
+
+}  // namespace ssc
+
+#endif  // SSC_PLUGIN_LIP_BODY_H_

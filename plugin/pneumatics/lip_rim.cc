@@ -1,0 +1,67 @@
+#include "plugin/pneumatics/lip_rim.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "plugin/pneumatics/cup_geometry.h"
+
+namespace ssc {
+
+std::vector<WedgeRim> AssignWedgeRims(const std::vector<double>& rim_angles_rad,
+                                      int rays_per_chamber) {
+  const int n_rays = rays_per_chamber * kNumChambers;
+  std::vector<WedgeRim> rims(n_rays);
+  constexpr double kNone = 1e9;
+  for (int c = 0; c < kNumChambers; ++c) {
+    for (int j = 0; j < rays_per_chamber; ++j) {
+      const double a = RayAngle(c, j, rays_per_chamber);
+      double before = kNone, after = kNone;
+      WedgeRim& rim = rims[c * rays_per_chamber + j];
+      for (int i = 0; i < static_cast<int>(rim_angles_rad.size()); ++i) {
+        const double delta = std::remainder(a - rim_angles_rad[i], 2.0 * M_PI);
+        if (delta >= 0 && delta < before) {
+          before = delta;
+          rim.point[0] = i;
+        }
+        if (delta < 0 && -delta < after) {
+          after = -delta;
+          rim.point[1] = i;
+        }
+      }
+      if (after >= kNone) rim.point[1] = rim.point[0];
+      if (before >= kNone) rim.point[0] = rim.point[1];
+      rim.weight1 = (before < kNone && after < kNone) ? before / (before + after) : 0.0;
+    }
+  }
+  return rims;
+}
+
+std::vector<int> RimVertices(const std::vector<double>& depth_m, double tolerance_m) {
+  std::vector<int> rim;
+  if (depth_m.empty()) return rim;
+  const double deepest = *std::max_element(depth_m.begin(), depth_m.end());
+  for (int i = 0; i < static_cast<int>(depth_m.size()); ++i) {
+    if (depth_m[i] >= deepest - tolerance_m) rim.push_back(i);
+  }
+  return rim;
+}
+
+std::array<double, 3> TrianglePressureForce(const double p0[3], const double p1[3],
+                                            const double p2[3], double vacuum_pa,
+                                            const double cavity_point[3]) {
+  double e1[3], e2[3], n[3], to_cavity[3];
+  for (int k = 0; k < 3; ++k) {
+    e1[k] = p1[k] - p0[k];
+    e2[k] = p2[k] - p0[k];
+    to_cavity[k] = cavity_point[k] - (p0[k] + p1[k] + p2[k]) / 3.0;
+  }
+  // Half the cross product: the area vector.
+  n[0] = 0.5 * (e1[1] * e2[2] - e1[2] * e2[1]);
+  n[1] = 0.5 * (e1[2] * e2[0] - e1[0] * e2[2]);
+  n[2] = 0.5 * (e1[0] * e2[1] - e1[1] * e2[0]);
+  const double toward = n[0] * to_cavity[0] + n[1] * to_cavity[1] + n[2] * to_cavity[2];
+  const double sign = toward < 0 ? -1.0 : 1.0;
+  return {sign * vacuum_pa * n[0], sign * vacuum_pa * n[1], sign * vacuum_pa * n[2]};
+}
+
+}  // namespace ssc
