@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "common/tool_names.h"
@@ -207,10 +208,13 @@ void ContourTrial::Log(bool iteration) {
     row.p_pa = Pressures();
     ApplyLipTilt(config_.effects.lip, lip_shear_, &row.p_pa);
   }
-  row.pbar_pa = last_step_.p_mean_pa;
-  row.dpx_pa = last_step_.dpx_pa;
-  row.dpy_pa = last_step_.dpy_pa;
-  row.cf = last_step_.cf;
+  // The law's quantities exist only where it ran: NaN elsewhere (the approach, the move, and
+  // the rows between iterations), never 0 or the previous iteration's values.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  row.pbar_pa = iteration ? last_step_.p_mean_pa : nan;
+  row.dpx_pa = iteration ? last_step_.dpx_pa : nan;
+  row.dpy_pa = iteration ? last_step_.dpy_pa : nan;
+  row.cf = iteration ? last_step_.cf : nan;
   row.step_x_m = last_step_world_[0];
   row.step_y_m = last_step_world_[1];
   row.ft_normal_n = FtNormalForce();

@@ -80,8 +80,8 @@ struct TrialLogRow {
   double t_s = 0;
   Vec3 tool_m{};
   std::array<double, 4> p_pa{};
-  double pbar_pa = 0, dpx_pa = 0, dpy_pa = 0, cf = 0;
-  double step_x_m = 0, step_y_m = 0;  // world frame
+  double pbar_pa = 0, dpx_pa = 0, dpy_pa = 0, cf = 0;  // NaN on rows without an iteration
+  double step_x_m = 0, step_y_m = 0;                   // world frame
   double ft_normal_n = 0;
   TrialPhase phase = TrialPhase::kApproach;
   bool iteration = false;  // a control iteration happened at this row

@@ -176,9 +176,24 @@ std::string SweepManifestPath(const std::string& csv_path) {
   return std::filesystem::path(csv_path).replace_extension(".json").string();
 }
 
+namespace {
+
+// A value whose text is a JSON number or boolean, written back exactly as that text, is stored
+// as that type (sweep.json holds 30, not "30"); any other text stays a string. Either way the
+// text round-trips.
+nlohmann::json ManifestValue(const std::string& text) {
+  const nlohmann::json typed = nlohmann::json::parse(text, nullptr, false);
+  if (!typed.is_discarded() && (typed.is_number() || typed.is_boolean()) && typed.dump() == text) {
+    return typed;
+  }
+  return text;
+}
+
+}  // namespace
+
 std::string SweepManifestJson(const SweepManifest& manifest) {
   nlohmann::json j = nlohmann::json::object();
-  for (const auto& [k, v] : manifest) j[k] = v;
+  for (const auto& [k, v] : manifest) j[k] = ManifestValue(v);
   return j.dump(2) + "\n";
 }
 
@@ -190,11 +205,14 @@ bool ParseSweepManifest(std::string_view json, SweepManifest* manifest, std::str
     return false;
   }
   for (const auto& [k, v] : j.items()) {
-    if (!v.is_string()) {
-      *error = "'" + k + "' is not a string";
+    if (v.is_string()) {
+      (*manifest)[k] = v.get<std::string>();
+    } else if (v.is_number() || v.is_boolean()) {
+      (*manifest)[k] = v.dump();  // the text it was written from (SweepManifestJson)
+    } else {
+      *error = "'" + k + "' is not a string, number or boolean";
       return false;
     }
-    (*manifest)[k] = v.get<std::string>();
   }
   return true;
 }

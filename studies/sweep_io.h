@@ -59,12 +59,13 @@ class SweepRowWriter {
 };
 
 // The options that define a sweep's rows (scene, seed, timeout, thresholds, model hash, ...),
-// as name -> value text. Stored as JSON beside the CSV (sweep.csv -> sweep.json).
+// as name -> value text. Stored as JSON beside the CSV (sweep.csv -> sweep.json): numbers and
+// booleans as JSON numbers and booleans, the rest as strings; reading gives the same texts back.
 using SweepManifest = std::map<std::string, std::string>;
 
 std::string SweepManifestPath(const std::string& csv_path);
 std::string SweepManifestJson(const SweepManifest& manifest);
-// False + *error on malformed JSON or a value that is not a string.
+// False + *error on malformed JSON or a value that is not a string, number or boolean.
 bool ParseSweepManifest(std::string_view json, SweepManifest* manifest, std::string* error);
 // "" when equal; else one line naming each difference ("seed: 1 in the file, 2 now").
 std::string CompareSweepManifests(const SweepManifest& recorded, const SweepManifest& now);

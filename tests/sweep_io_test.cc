@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
@@ -105,6 +106,35 @@ TEST_F(SweepIoTest, RowsNeverSpanLines) {
   const SweepCsvContents c = ParseSweepCsv(Read(), header_);
   EXPECT_EQ(c.rows.size(), 1u);
   EXPECT_EQ(c.dropped, 0);
+}
+
+TEST_F(SweepIoTest, ManifestKeepsNumbersAsNumbersAndRoundTripsItsTexts) {
+  const SweepManifest written = {{"seed", "18446744073709551615"},
+                                 {"timeout_s", "120"},
+                                 {"goal_band_m", "0.0125"},
+                                 {"tiny", "1e-07"},
+                                 {"start_x_m", "-0.65"},
+                                 {"scene", "disk_benchmark"},
+                                 {"model_hash", "00ab12cd34ef5678"},
+                                 {"leading_zero", "007"},
+                                 {"dead_band", "on"},
+                                 {"flag", "true"}};
+  const std::string json = SweepManifestJson(written);
+  const nlohmann::json j = nlohmann::json::parse(json);
+  EXPECT_TRUE(j["seed"].is_number_unsigned()) << json;
+  EXPECT_TRUE(j["timeout_s"].is_number()) << json;
+  EXPECT_TRUE(j["goal_band_m"].is_number_float()) << json;
+  EXPECT_TRUE(j["start_x_m"].is_number()) << json;
+  EXPECT_TRUE(j["flag"].is_boolean()) << json;
+  EXPECT_TRUE(j["scene"].is_string()) << json;
+  EXPECT_TRUE(j["model_hash"].is_string()) << json;
+  EXPECT_TRUE(j["leading_zero"].is_string()) << json;  // "007" is not JSON's 7
+  SweepManifest read;
+  std::string error;
+  ASSERT_TRUE(ParseSweepManifest(json, &read, &error)) << error;
+  EXPECT_EQ(read, written);
+  EXPECT_FALSE(ParseSweepManifest("{\"seed\": [1]}", &read, &error));
+  EXPECT_NE(error.find("'seed'"), std::string::npos) << error;
 }
 
 TEST_F(SweepIoTest, ResumingWithOtherOptionsIsRefusedNamingTheDifference) {

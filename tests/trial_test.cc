@@ -213,6 +213,46 @@ TEST(TrialTest, ApproachStopsAtTheStartUpForce) {
   }
 }
 
+TEST(TrialTest, TheLogHoldsTheLawsValuesOnlyWhereItRan) {
+  // The law's mean, differentials and c_f exist at control iterations: NaN on every other row
+  // (the approach, the move to the start and between iterations), in the log and in trial.csv.
+  TrialConfig c;
+  c.seed = 2;
+  std::string error;
+  mjData* d = mj_makeData(Scene());
+  auto trial = ContourTrial::Create(Scene(), d, c, true, &error);
+  ASSERT_TRUE(trial) << error;
+  const TrialResult r = trial->Run(5.0);  // the approach, the move and about 10 iterations
+  mj_deleteData(d);
+  int iterations = 0, others_in_follow = 0, before_follow = 0;
+  for (const TrialLogRow& row : r.log) {
+    for (double v : {row.pbar_pa, row.dpx_pa, row.dpy_pa, row.cf}) {
+      EXPECT_EQ(std::isfinite(v), row.iteration) << "t = " << row.t_s;
+    }
+    iterations += row.iteration;
+    others_in_follow += !row.iteration && row.phase == TrialPhase::kFollow;
+    before_follow += row.phase != TrialPhase::kFollow;
+  }
+  EXPECT_GT(iterations, 5);
+  EXPECT_GT(others_in_follow, iterations);  // rows between iterations were checked too
+  EXPECT_GT(before_follow, 100);
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("ssc_trial_log_" + std::to_string(::getpid()) + ".csv");
+  ASSERT_TRUE(WriteTrialLogCsv(path.string(), r, &error)) << error;
+  std::ifstream in(path);
+  std::string header, line;
+  std::getline(in, header);
+  EXPECT_NE(header.find(",pbar_pa,dpx_pa,dpy_pa,cf,"), std::string::npos) << header;
+  size_t row_index = 0;
+  while (std::getline(in, line) && row_index < r.log.size()) {
+    const bool nan = line.find(",nan,nan,nan,nan,") != std::string::npos;
+    EXPECT_EQ(nan, !r.log[row_index].iteration) << line;
+    ++row_index;
+  }
+  EXPECT_EQ(row_index, r.log.size());
+  std::filesystem::remove(path);
+}
+
 TEST(TrialTest, SameSeedSameTrajectory) {
   const TrialResult a = Trial(100, 2.0, 5.0, 7), b = Trial(100, 2.0, 5.0, 7);
   const TrialResult c = Trial(100, 2.0, 5.0, 8);
