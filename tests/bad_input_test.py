@@ -169,6 +169,8 @@ CASES = [
     (["stability", "--steps-ms", "0"], 2, "--steps-ms"),
     (["stability", "--steps-ms", "-1,2"], 2, "--steps-ms"),
     (["stability", "--steps-ms", "1,2,"], 2, "--steps-ms"),
+    (["sil"], 2, "usage: ssc sil"),
+    (["sil", "/nonexistent/script.py"], 2, "no such script"),
     (["bench", "--block", "0"], 2, "--block"),
     (["bench", "--rounds", "0"], 2, "--rounds"),
     (["compare"], 2, "LOG"),

@@ -43,6 +43,7 @@ fi
 
 BUILD_DIR="${SSC_BUILD_DIR:-build}"
 JOBS="${SSC_JOBS:-$(nproc)}"
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DSSC_PYTHON="$ROOT/.venv/bin/python" >/dev/null
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DSSC_PYTHON="$ROOT/.venv/bin/python" \
+  -DSSC_BUILD_PYTHON=ON -DPython_EXECUTABLE="$ROOT/.venv/bin/python" >/dev/null
 cmake --build "$BUILD_DIR" -j "$JOBS"
 echo "[setup] built into $BUILD_DIR/bin"

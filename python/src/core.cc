@@ -21,6 +21,7 @@
 
 #include "common/tool_names.h"
 #include "compare/comparison.h"
+#include "compare/frames.h"
 #include "compare/twin_log.h"
 #include "controller/pure/contour_law.h"
 #include "controller/pure/robot_effects.h"
@@ -28,11 +29,16 @@
 #include "objects/object_mjcf.h"
 #include "objects/object_spec.h"
 #include "plugin/chamber_pressure_config.h"
+#include "plugin/chamber_pressure_sensor.h"
+#include "robotlog/mat_log.h"
+#include "robotlog/topic_csv.h"
 #include "runtime/mujoco_model.h"
+#include "runtime/tool_servo.h"
 #include "runtime/trial.h"
 #include "studies/edge_probe.h"
 #include "studies/object_trials.h"
 #include "studies/sweep.h"
+#include "studies/tool_variants.h"
 #include "studies/validation.h"
 
 namespace nb = nanobind;
@@ -364,6 +370,196 @@ class SteppedTrial {
   std::unique_ptr<ContourTrial> trial_;
 };
 
+// The plant behind the software-in-the-loop stand-ins (ssc_twin.sil): a scene stepped one physics
+// step at a time, its tool site driven to a Cartesian target through the scene's servo (the UR
+// servoL look-ahead smoothing, runtime/tool_servo.h), read back as the sensors report it. The
+// pressure plugin's host average is set to one sample so each reading is one raw sensor packet
+// (the lab's host code averages 7 itself). Positions are the tool site (lip-plane centre) in the
+// scene frame, m.
+class SilPlant {
+ public:
+  SilPlant(const std::string& scene, std::uint64_t seed, int average_samples) {
+    scene_ = scene;
+    std::string error;
+    model_ = ToolModelVariant(ResolveScenePath(scene),
+                              {{"average_samples", std::to_string(average_samples)}}, &error);
+    if (!model_) Fail(error);
+    data_ = MakeData(model_.get(), &error);
+    if (!data_) Fail(error);
+    site_ = mj_name2id(model_.get(), mjOBJ_SITE, kToolSiteName);
+    if (site_ < 0) Fail(scene + ": no tool site '" + std::string(kToolSiteName) + "'");
+    const ChamberPressureDiagnostics* p = FindChamberPressureDiagnostics(model_.get(), data_.get());
+    if (!p) Fail(scene + ": no ssc.chamber_pressure sensor");
+    pressure_adr_ = p->sensor_adr();
+    const int f = mj_name2id(model_.get(), mjOBJ_SENSOR, kToolForceSensorName);
+    const int t = mj_name2id(model_.get(), mjOBJ_SENSOR, kToolTorqueSensorName);
+    if (f < 0 || t < 0) Fail(scene + ": no F/T sensors");
+    force_adr_ = model_->sensor_adr[f];
+    torque_adr_ = model_->sensor_adr[t];
+    servo_ = MakeToolServo(model_.get());
+    if (!servo_) Fail(scene + ": no servo (gantry joints or an arm) drives the tool");
+    Reset(seed);
+  }
+  void Reset(std::uint64_t seed) {
+    if (model_->nkey > 0) {
+      mj_resetDataKeyframe(model_.get(), data_.get(), 0);
+    } else {
+      mj_resetData(model_.get(), data_.get());
+    }
+    const ChamberPressureDiagnostics* p = FindChamberPressureDiagnostics(model_.get(), data_.get());
+    SetChamberPressureRunSeed(model_.get(), data_.get(), p->instance(), seed);
+    mj_forward(model_.get(), data_.get());
+    std::string error;
+    if (!servo_->Init(model_.get(), data_.get(), site_, &error)) Fail(error);
+  }
+  // The target the servo tracks, tool site in the scene frame, m.
+  void SetTarget(std::array<double, 3> xyz) { servo_->SetTarget({xyz[0], xyz[1], xyz[2]}); }
+  std::array<double, 3> Target() const { return servo_->target(); }
+  // smoothing_s: the look-ahead time constant (0 = none); max_speed_m_s: the command's speed
+  // limit (moveL's speed).
+  void SetServo(double smoothing_s, double max_speed_m_s) {
+    if (!(smoothing_s >= 0) || !(max_speed_m_s > 0)) {
+      Fail("servo: smoothing_s must be >= 0 and max_speed_m_s > 0");
+    }
+    ServoParams s;
+    s.smoothing_s = smoothing_s;
+    s.max_speed_m_s = max_speed_m_s;
+    servo_->set_params(s);
+  }
+  // Holds the command where the tool is now (servoStop): no motion left to realise.
+  void Stop() {
+    ToolServo::State s = servo_->state();
+    const Vec3 here = servo_->Measured(data_.get());
+    s.target = here;
+    s.command = here;
+    s.velocity = {0, 0, 0};
+    servo_->set_state(s);
+  }
+  // Physics steps until the simulated time reaches t_s (at least none); returns the time.
+  double AdvanceTo(double t_s) {
+    nb::gil_scoped_release release;
+    const double dt = model_->opt.timestep;
+    while (data_->time + 0.5 * dt <= t_s) {
+      servo_->Track(model_.get(), data_.get());
+      mj_step(model_.get(), data_.get());
+      for (int k = 0; k < 3; ++k) {
+        if (!std::isfinite(data_->qpos[k])) Fail("the simulation became unstable");
+      }
+    }
+    return data_->time;
+  }
+  std::array<double, 3> ToolPosition() const {
+    const double* p = data_->site_xpos + 3 * site_;
+    return {p[0], p[1], p[2]};
+  }
+  // The tool site's rotation, row-major (mjData.site_xmat).
+  std::array<double, 9> ToolRotation() const {
+    std::array<double, 9> r{};
+    for (int k = 0; k < 9; ++k) r[k] = data_->site_xmat[9 * site_ + k];
+    return r;
+  }
+  // The newest sensor sample: four chamber vacuums, Pa (positive = vacuum).
+  std::array<double, 4> Vacuum() const {
+    const double* p = data_->sensordata + pressure_adr_;
+    return {p[0], p[1], p[2], p[3]};
+  }
+  // Force (N) and torque (N m) the transducer exerts on the cup, F/T site frame (z down the cup
+  // axis: pressing on a surface reads +z).
+  std::array<double, 6> ForceTorque() const {
+    std::array<double, 6> ft{};
+    for (int k = 0; k < 3; ++k) {
+      ft[k] = data_->sensordata[force_adr_ + k];
+      ft[3 + k] = data_->sensordata[torque_adr_ + k];
+    }
+    return ft;
+  }
+  double Time() const { return data_->time; }
+  double Timestep() const { return model_->opt.timestep; }
+  // The sensor's sample rate, Hz (its config).
+  double SampleRateHz() const {
+    return FindChamberPressureDiagnostics(model_.get(), data_.get())
+        ->config()
+        .sensor.sample_rate_hz;
+  }
+  std::string scene() const { return scene_; }
+  // A static geom's centre x, y and top z in the scene frame, m (cylinders and boxes).
+  std::array<double, 3> GeomTop(const std::string& name) const {
+    const int g = mj_name2id(model_.get(), mjOBJ_GEOM, name.c_str());
+    if (g < 0) Fail(scene_ + ": no geom '" + name + "'");
+    const int type = model_->geom_type[g];
+    if (type != mjGEOM_CYLINDER && type != mjGEOM_BOX)
+      Fail("geom '" + name + "' is not a cylinder or box");
+    const double* p = data_->geom_xpos + 3 * g;
+    const double half = model_->geom_size[3 * g + (type == mjGEOM_BOX ? 2 : 1)];
+    return {p[0], p[1], p[2] + half};
+  }
+  // Raw model/data addresses for the viewer (mujoco.MjModel/MjData cannot wrap them; the viewer
+  // re-loads the scene and copies qpos).
+  std::vector<double> Qpos() const {
+    return std::vector<double>(data_->qpos, data_->qpos + model_->nq);
+  }
+
+ private:
+  std::string scene_;
+  ModelPtr model_;
+  DataPtr data_;
+  std::unique_ptr<ToolServo> servo_;
+  int site_ = -1, pressure_adr_ = -1, force_adr_ = -1, torque_adr_ = -1;
+};
+
+double DictNumber(const nb::dict& d, const char* key) {
+  return d.contains(key) ? nb::cast<double>(d[key]) : kNoValue;
+}
+std::vector<double> DictNumbers(const nb::dict& d, const char* key) {
+  return d.contains(key) ? nb::cast<std::vector<double>>(d[key]) : std::vector<double>{};
+}
+
+// The lab's merged .mat from one logger recording (its per-topic CSVs) and the script's
+// arguments, written by the C++ MAT writer (robotlog/mat_log.h) as the lab's saver lays it out.
+std::string WriteLabMat(const std::string& recording, const std::string& mat_dir,
+                        const std::string& append_txt, const nb::dict& args) {
+  RobotLog log;
+  LoadError error;
+  if (!LoadTopicCsvRecording(recording, &log, &error)) Fail(error.ToString());
+  LabRunArgs& a = log.args;
+  a.p_ref_pa = DictNumber(args, "Pref");
+  a.beta = DictNumber(args, "beta");
+  a.d_lat_m = DictNumber(args, "d_lat");
+  a.disk_radius_mm = DictNumber(args, "diskRadius");
+  a.start_offset_m = DictNumber(args, "start_offset");
+  a.success = DictNumber(args, "success");
+  a.p_lims_pa = DictNumbers(args, "P_lims");
+  a.alpha_beta = DictNumbers(args, "alpha_beta");
+  a.fz_set_n = DictNumbers(args, "Fz_set");
+  if (args.contains("edgeFollowing_history")) {
+    for (nb::handle row : nb::iter(args["edgeFollowing_history"])) {
+      const std::vector<double> v = nb::cast<std::vector<double>>(row);
+      if (v.size() != 14) {
+        Fail(
+            "edgeFollowing_history: each row needs 14 numbers [t, x, y, r_p(2), corr_p(2), "
+            "r_p_final(2), F_normal, P1..P4], got " +
+            std::to_string(v.size()));
+      }
+      HistoryRow h;
+      h.t_s = v[0];
+      h.x_m = v[1];
+      h.y_m = v[2];
+      h.r_p = {v[3], v[4]};
+      h.corr_p = {v[5], v[6]};
+      h.r_p_final = {v[7], v[8]};
+      h.f_normal_n = v[9];
+      h.p_pa = {v[10], v[11], v[12], v[13]};
+      a.history.push_back(h);
+    }
+  }
+  const std::string stamp = RecordingStamp(log.t0_ns);
+  const std::string path =
+      mat_dir + "/DataLog_" + stamp + (append_txt.empty() ? "" : "_" + append_txt) + ".mat";
+  std::string werr;
+  if (!WriteRobotLogMat(path, log, &werr)) Fail(werr);
+  return path;
+}
+
 }  // namespace
 }  // namespace ssc
 
@@ -692,4 +888,33 @@ NB_MODULE(_core, m) {
       .def_prop_ro("model", &SteppedTrial::model, "The trial's mujoco.MjModel (live).")
       .def_prop_ro("data", &SteppedTrial::data, "The trial's mujoco.MjData (live).")
       .def_prop_ro("tool_site", &SteppedTrial::tool_site, "Site id of the cup's lip centre.");
+  nb::class_<SilPlant>(m, "SilPlant",
+                       "A scene stepped from Python with its tool driven to Cartesian targets "
+                       "(ssc_twin.sil's robot, sensors and pump).")
+      .def(nb::init<const std::string&, std::uint64_t, int>(), "scene"_a = "disk_benchmark_gantry",
+           "seed"_a = 1, "average_samples"_a = 1)
+      .def("reset", &SilPlant::Reset, "seed"_a)
+      .def("set_target", &SilPlant::SetTarget, "xyz_m"_a)
+      .def("target", &SilPlant::Target)
+      .def("set_servo", &SilPlant::SetServo, "smoothing_s"_a, "max_speed_m_s"_a)
+      .def("stop", &SilPlant::Stop)
+      .def("advance_to", &SilPlant::AdvanceTo, "t_s"_a)
+      .def("tool_position", &SilPlant::ToolPosition)
+      .def("tool_rotation", &SilPlant::ToolRotation)
+      .def("vacuum", &SilPlant::Vacuum)
+      .def("force_torque", &SilPlant::ForceTorque)
+      .def("qpos", &SilPlant::Qpos)
+      .def("geom_top", &SilPlant::GeomTop, "name"_a)
+      .def_prop_ro("time", &SilPlant::Time)
+      .def_prop_ro("timestep", &SilPlant::Timestep)
+      .def_prop_ro("sample_rate_hz", &SilPlant::SampleRateHz)
+      .def_prop_ro("scene", &SilPlant::scene);
+  // The lab's disk benchmark set-up (compare/frames.h, geometry/dimensions.h).
+  m.attr("LAB_DISK_CENTRE_BASE_LINK_M") = nb::make_tuple(kLabDiskCentreX, kLabDiskCentreY);
+  m.attr("LAB_DISK_ENGAGE_Z_M") = kLabDiskEngageZ;
+  m.attr("TOOL_CENTRE_OFFSET_M") = kToolCentreOffsetM;
+  m.def("write_lab_mat", &WriteLabMat, "recording"_a, "mat_dir"_a, "append_txt"_a, "args"_a,
+        "The lab's DataLog_<stamp>_<append_txt>.mat from a logger recording (folder or one of "
+        "its CSVs) and the script's arguments (Pref, beta, d_lat, ..., edgeFollowing_history "
+        "rows of 14 numbers); returns its path.");
 }
