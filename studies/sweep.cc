@@ -21,11 +21,10 @@
 namespace ssc {
 namespace {
 
-using Key = std::tuple<long, long, long, int>;  // pref, beta, step in 1e-6 units; repeat
+using Key = SweepGridKey;
 
 Key MakeKey(double pref, double beta, double step, int repeat) {
-  auto q = [](double v) { return std::lround(v * 1e6); };
-  return {q(pref), q(beta), q(step), repeat};
+  return MakeSweepGridKey(pref, beta, step, repeat);
 }
 
 // The options that define the rows: resuming with other ones would mix their rows silently.
@@ -128,6 +127,37 @@ TrialConfig PointConfig(const SweepSpec& spec, const std::array<double, 3>& poin
   return c;
 }
 
+// Checks each resumed row against its key and the options; rewrites the CSV without the bad
+// ones (named on stderr), so their trials run again.
+bool DropBadRows(const SweepSpec& spec, SweepCsvContents* existing, std::string* error) {
+  SweepRowExpectations expect;
+  expect.scene = spec.scene_name;
+  expect.seed_of = [&spec](const SweepRowKey& r) {
+    return TrialSeed(spec.seed, r.pref_pa, r.beta, r.step_mm, r.repeat);
+  };
+  for (Outcome o : {Outcome::kSuccess, Outcome::kFailureOffEdge, Outcome::kFailureGrasp,
+                    Outcome::kTimeout, Outcome::kUnstable, Outcome::kLostEdge}) {
+    expect.outcomes.emplace_back(OutcomeName(o));
+  }
+  expect.success = OutcomeName(Outcome::kSuccess);
+  const std::vector<SweepRowProblem> problems = DropImpossibleSweepRows(expect, existing);
+  if (problems.empty()) return true;
+  constexpr size_t kShown = 10;
+  for (size_t i = 0; i < problems.size() && i < kShown; ++i) {
+    const SweepRowProblem& p = problems[i];
+    std::fprintf(
+        stderr, "sweep: %s line %d (P_ref %s Pa, beta %s, step %s mm, repeat %d): %s; %s\n",
+        spec.out_csv.c_str(), p.line, FormatNumber(p.row.pref_pa).c_str(),
+        FormatNumber(p.row.beta).c_str(), FormatNumber(p.row.step_mm).c_str(), p.row.repeat,
+        p.why.c_str(), p.kept_line > 0 ? "dropped" : "dropped, the trial runs again");
+  }
+  if (problems.size() > kShown) {
+    std::fprintf(stderr, "sweep: %zu more rows of %s like these dropped\n",
+                 problems.size() - kShown, spec.out_csv.c_str());
+  }
+  return RewriteSweepCsv(spec.out_csv, SweepCsvHeader(), existing->lines, error);
+}
+
 }  // namespace
 
 std::string CheckSweepGrid(const SweepSpec& spec) {
@@ -135,7 +165,23 @@ std::string CheckSweepGrid(const SweepSpec& spec) {
   if (points.empty() || spec.repeats < 1) {
     return "sweep grid is empty (need at least one P_ref, beta, step and repeat)";
   }
+  if (spec.threads < 1 || spec.threads > 256) {
+    return "threads = " + std::to_string(spec.threads) + " is out of range [1, 256]";
+  }
+  std::set<Key> seen;
   for (const auto& point : points) {
+    for (double v : point) {
+      if (!std::isfinite(v)) {
+        return "sweep point P_ref " + FormatNumber(point[0]) + " Pa, beta " +
+               FormatNumber(point[1]) + ", step " + FormatNumber(point[2]) +
+               " mm: not a finite number";
+      }
+    }
+    // A value listed twice would run its trials twice, as two rows for one key.
+    if (!seen.insert(MakeKey(point[0], point[1], point[2], 0)).second) {
+      return "sweep point P_ref " + FormatNumber(point[0]) + " Pa, beta " + FormatNumber(point[1]) +
+             ", step " + FormatNumber(point[2]) + " mm is listed twice (each grid value once)";
+    }
     if (const std::string e = PointConfig(spec, point, 0).Validate(); !e.empty()) {
       return "sweep point P_ref " + FormatNumber(point[0]) + " Pa, beta " + FormatNumber(point[1]) +
              ", step " + FormatNumber(point[2]) + " mm: " + e;
@@ -149,6 +195,10 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
               std::string* error) {
   if (std::string e = CheckSweepGrid(spec); !e.empty()) {
     *error = e;
+    return false;
+  }
+  if (spec.out_csv.empty()) {
+    *error = "no output CSV given (out_csv is empty)";
     return false;
   }
   struct Job {
@@ -169,12 +219,14 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
   const bool writer = JobRunnerRank() == 0;
   std::set<Key> done;
   SweepRowWriter out;
+  SweepOutputLock lock;
   if (writer) {
     SweepCsvContents existing;
-    if (!LoadSweepCsvForResume(spec.out_csv, SweepCsvHeader(), &existing, error) ||
+    if (!lock.Acquire(spec.out_csv, error) ||
+        !LoadSweepCsvForResume(spec.out_csv, SweepCsvHeader(), &existing, error) ||
         !CheckOrWriteSweepManifest(spec.out_csv, !existing.rows.empty(), MakeManifest(m, spec),
                                    error) ||
-        !out.Open(spec.out_csv, error)) {
+        !DropBadRows(spec, &existing, error) || !out.Open(spec.out_csv, error)) {
       return false;
     }
     if (existing.dropped > 0) {

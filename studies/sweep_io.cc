@@ -1,16 +1,22 @@
 #include "studies/sweep_io.h"
 
 #include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "common/input_file.h"
+#include "common/output_file.h"
 #include "common/strict_number.h"
 
 namespace ssc {
@@ -32,7 +38,35 @@ bool SplitFields(std::string_view line, std::vector<std::string_view>* fields) {
   return !quoted;
 }
 
-bool ParseKey(const std::vector<std::string_view>& f, SweepRowKey* key) {
+// A metric cell: a number, or "nan" as the writer spells a value it does not have.
+bool ParseMetric(std::string_view text, double* out) {
+  if (text == "nan") {
+    *out = std::numeric_limits<double>::quiet_NaN();
+    return true;
+  }
+  std::string e;
+  return ParseNumber(text, NumberRange(), out, &e);
+}
+
+// Column positions of the fields a resume reads, from the header.
+struct Columns {
+  int s_mm = -1, s_c = -1, duration_s = -1, sim_time_s = -1, iterations = -1;
+};
+
+Columns FindColumns(const std::vector<std::string_view>& header) {
+  Columns c;
+  for (size_t i = 0; i < header.size(); ++i) {
+    const int k = static_cast<int>(i);
+    if (header[i] == "s_mm") c.s_mm = k;
+    if (header[i] == "s_c") c.s_c = k;
+    if (header[i] == "duration_s") c.duration_s = k;
+    if (header[i] == "sim_time_s") c.sim_time_s = k;
+    if (header[i] == "iterations") c.iterations = k;
+  }
+  return c;
+}
+
+bool ParseKey(const std::vector<std::string_view>& f, const Columns& columns, SweepRowKey* key) {
   double pref = 0, beta = 0, step = 0, repeat = 0, seed = 0;
   std::string e;
   // Column order of SweepCsvHeader(): scene,pref_pa,beta,step_mm,repeat,seed,outcome,...
@@ -44,7 +78,25 @@ bool ParseKey(const std::vector<std::string_view>& f, SweepRowKey* key) {
       !ParseNumber(f[5], NumberRange::Whole(0, 9007199254740991.0), &seed, &e)) {
     return false;
   }
-  *key = {pref, beta, step, static_cast<int>(repeat), static_cast<std::uint64_t>(seed)};
+  key->pref_pa = pref;
+  key->beta = beta;
+  key->step_mm = step;
+  key->repeat = static_cast<int>(repeat);
+  key->seed = static_cast<std::uint64_t>(seed);
+  key->scene = std::string(f[0]);
+  key->outcome = std::string(f[6]);
+  auto metric = [&](int column, double* out) {
+    if (column < 0 || column >= static_cast<int>(f.size())) return;
+    if (!ParseMetric(f[static_cast<size_t>(column)], out)) key->metrics_parse = false;
+  };
+  double iterations = 0;
+  metric(columns.s_mm, &key->s_mm);
+  metric(columns.s_c, &key->s_c);
+  metric(columns.duration_s, &key->duration_s);
+  metric(columns.sim_time_s, &key->sim_time_s);
+  metric(columns.iterations, &iterations);
+  if (!(iterations >= 0) || iterations != std::floor(iterations)) key->metrics_parse = false;
+  key->iterations = std::isfinite(iterations) ? static_cast<long>(iterations) : -1;
   return true;
 }
 
@@ -52,6 +104,7 @@ bool WriteWhole(int fd, std::string_view text) {
   while (!text.empty()) {
     const ssize_t n = ::write(fd, text.data(), text.size());
     if (n < 0 && errno == EINTR) continue;
+    if (n == 0) errno = EIO;
     if (n <= 0) return false;
     text.remove_prefix(static_cast<size_t>(n));
   }
@@ -64,13 +117,16 @@ SweepCsvContents ParseSweepCsv(std::string_view text, std::string_view header) {
   SweepCsvContents c;
   std::vector<std::string_view> header_fields, fields;
   SplitFields(header, &header_fields);
+  const Columns columns = FindColumns(header_fields);
   size_t pos = 0;
+  int line_number = 0;
   bool first = true;
   while (pos < text.size()) {
     const size_t nl = text.find('\n', pos);
     const bool whole = nl != std::string_view::npos;
     std::string_view line = text.substr(pos, whole ? nl - pos : std::string_view::npos);
     pos = whole ? nl + 1 : text.size();
+    ++line_number;
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (!whole) c.ends_torn = true;
     if (first && whole && line == header) {
@@ -81,7 +137,8 @@ SweepCsvContents ParseSweepCsv(std::string_view text, std::string_view header) {
     first = false;
     SweepRowKey key;
     if (whole && SplitFields(line, &fields) && fields.size() == header_fields.size() &&
-        ParseKey(fields, &key)) {
+        ParseKey(fields, columns, &key)) {
+      key.line = line_number;
       c.rows.push_back(key);
       c.lines.emplace_back(line);
     } else if (!line.empty() || !whole) {
@@ -115,8 +172,7 @@ bool LoadSweepCsvForResume(const std::string& path, const std::string& header,
   if (header_line.compare(0, text.size(), text, 0, header_line.size()) == 0 &&
       text.size() < header_line.size()) {
     // Empty, or a header torn while being written: start the file anew.
-    if (!text.empty()) std::ofstream(path, std::ios::binary | std::ios::trunc);
-    return true;
+    return text.empty() || WriteWholeFile(path, "", error);
   }
   if (text.compare(0, header_line.size(), header_line) != 0) {
     *error = path + ": its first line is not this version's sweep header ('" +
@@ -126,23 +182,123 @@ bool LoadSweepCsvForResume(const std::string& path, const std::string& header,
   *contents = ParseSweepCsv(text, header);
   if (contents->dropped == 0) return true;
   // Rewrite without the torn or malformed lines (temp + rename: never half a file).
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << header << '\n';
-    for (const std::string& line : contents->lines) out << line << '\n';
-    out.flush();
-    if (!out) {
-      *error = tmp + ": cannot write";
+  return RewriteSweepCsv(path, header, contents->lines, error);
+}
+
+bool RewriteSweepCsv(const std::string& path, const std::string& header,
+                     const std::vector<std::string>& lines, std::string* error) {
+  OutputFile out(path);
+  out.Write(header);
+  out.Write("\n");
+  for (const std::string& line : lines) {
+    out.Write(line);
+    out.Write("\n");
+  }
+  return out.Commit(error);
+}
+
+SweepGridKey MakeSweepGridKey(double pref_pa, double beta, double step_mm, int repeat) {
+  auto q = [](double v) { return std::lround(v * 1e6); };
+  return {q(pref_pa), q(beta), q(step_mm), repeat};
+}
+
+std::vector<SweepRowProblem> DropImpossibleSweepRows(const SweepRowExpectations& expect,
+                                                     SweepCsvContents* contents) {
+  std::vector<SweepRowProblem> problems;
+  std::map<SweepGridKey, int> kept_at;  // key -> line of the row kept for it
+  std::vector<SweepRowKey> rows;
+  std::vector<std::string> lines;
+  for (size_t i = 0; i < contents->rows.size(); ++i) {
+    const SweepRowKey& r = contents->rows[i];
+    std::string why;
+    int kept_line = 0;
+    const SweepGridKey key = MakeSweepGridKey(r.pref_pa, r.beta, r.step_mm, r.repeat);
+    const bool known_outcome = std::find(expect.outcomes.begin(), expect.outcomes.end(),
+                                         r.outcome) != expect.outcomes.end();
+    if (r.scene != expect.scene) {
+      why = "scene '" + r.scene + "' is not this sweep's '" + expect.scene + "'";
+    } else if (expect.seed_of && r.seed != expect.seed_of(r)) {
+      why = "seed " + std::to_string(r.seed) + " is not this grid point's seed " +
+            std::to_string(expect.seed_of(r)) + " (an edited row, or another --seed)";
+    } else if (!known_outcome) {
+      why = "outcome '" + r.outcome + "' is not a finished trial's";
+    } else if (!r.metrics_parse) {
+      why = "a metric cell is not a number";
+    } else if (r.outcome == expect.success &&
+               !(std::isfinite(r.s_mm) && r.s_mm > 0 && std::isfinite(r.s_c) &&
+                 std::isfinite(r.duration_s) && r.duration_s > 0)) {
+      why = "a success with s_mm = " + FormatNumber(r.s_mm) + ", s_c = " + FormatNumber(r.s_c) +
+            ", duration_s = " + FormatNumber(r.duration_s) + " (a success has a finite path)";
+    } else if (!(r.sim_time_s >= 0) && !std::isnan(r.sim_time_s)) {
+      why = "sim_time_s = " + FormatNumber(r.sim_time_s) + " is negative";
+    } else if (const auto it = kept_at.find(key); it != kept_at.end()) {
+      why = "a second row for the trial of line " + std::to_string(it->second);
+      kept_line = it->second;
+    }
+    if (!why.empty()) {
+      problems.push_back({r.line, r, why, kept_line});
+      continue;
+    }
+    kept_at[key] = r.line;
+    rows.push_back(r);
+    lines.push_back(contents->lines[i]);
+  }
+  contents->rows = std::move(rows);
+  contents->lines = std::move(lines);
+  return problems;
+}
+
+SweepOutputLock::~SweepOutputLock() {
+  if (fd_ < 0) return;
+  // Remove the lock file while still holding the lock: a process waiting on the old file
+  // finds it gone (Acquire checks the inode) and takes a new one.
+  ::unlink(path_.c_str());
+  ::close(fd_);
+}
+
+bool SweepOutputLock::Acquire(const std::string& csv_path, std::string* error) {
+  path_ = csv_path + ".lock";
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const int fd = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0) {
+      *error = SystemError(path_, "cannot create the sweep lock", errno);
       return false;
     }
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+      const int err = errno;
+      char text[32] = {};
+      const ssize_t n = ::pread(fd, text, sizeof(text) - 1, 0);
+      ::close(fd);
+      if (err != EWOULDBLOCK) {
+        *error = SystemError(path_, "cannot lock", err);
+        return false;
+      }
+      std::string pid = n > 0 ? std::string(text, static_cast<size_t>(n)) : "";
+      while (!pid.empty() && (pid.back() == '\n' || pid.back() == ' ')) pid.pop_back();
+      *error = csv_path + " is being written by another sweep (pid " +
+               (pid.empty() ? std::string("unknown") : pid) + ", lock " + path_ +
+               "): wait for it to end, or use another --out";
+      return false;
+    }
+    // The holder may have removed the file between our open and flock: lock the current one.
+    struct stat held, now;
+    if (::fstat(fd, &held) != 0 || ::stat(path_.c_str(), &now) != 0 || held.st_ino != now.st_ino ||
+        held.st_dev != now.st_dev) {
+      ::close(fd);
+      continue;
+    }
+    const std::string pid = std::to_string(::getpid()) + "\n";
+    if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, pid.data(), pid.size(), 0) < 0) {
+      *error = SystemError(path_, "cannot write the sweep lock", errno);
+      ::unlink(path_.c_str());
+      ::close(fd);
+      return false;
+    }
+    fd_ = fd;
+    return true;
   }
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    *error = path + ": cannot replace: " + ec.message();
-    return false;
-  }
-  return true;
+  *error = path_ + ": the sweep lock keeps changing hands; try again";
+  return false;
 }
 
 SweepRowWriter::~SweepRowWriter() {
@@ -165,8 +321,15 @@ bool SweepRowWriter::Append(std::string_view row, std::string* error) {
     if (ch == '\n' || ch == '\r') ch = ' ';
   }
   line += '\n';
+  // A row that cannot be written whole (a full disk, a file-size limit) is cut off again, so
+  // the file ends on a whole row.
+  const off_t before = fd_ >= 0 ? ::lseek(fd_, 0, SEEK_END) : -1;
   if (fd_ < 0 || !WriteWhole(fd_, line)) {
-    *error = path_ + ": cannot append a row: " + std::strerror(errno);
+    const int err = fd_ < 0 ? EBADF : errno;
+    if (before >= 0 && ::ftruncate(fd_, before) != 0) {
+      // Left torn: the next resume drops the partial row.
+    }
+    *error = SystemError(path_, "cannot append a row", err);
     return false;
   }
   return true;
@@ -265,22 +428,7 @@ bool CheckOrWriteSweepManifest(const std::string& csv_path, bool csv_has_rows,
              ": cannot tell which options made them (use another --out)";
     return false;
   }
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    out << SweepManifestJson(now);
-    out.flush();
-    if (!out) {
-      *error = tmp + ": cannot write";
-      return false;
-    }
-  }
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    *error = path + ": cannot write: " + ec.message();
-    return false;
-  }
-  return true;
+  return WriteWholeFile(path, SweepManifestJson(now), error);
 }
 
 std::uint64_t Fnv1a64(const void* data, std::size_t size) {

@@ -7,14 +7,18 @@
 // header's number of fields (quoted fields respected) and its key fields (pref_pa, beta,
 // step_mm, repeat, seed) parse strictly. Anything else (a torn tail from a killed run, a torn
 // row that a later append glued onto) is dropped, the file is rewritten without it, and those
-// trials run again.
+// trials run again. Then no row is trusted: one whose seed is not its grid point's, whose scene
+// or outcome is not this sweep's, whose metrics a finished trial cannot have (a success with
+// s_mm = nan), or that repeats a key already kept is dropped too, named on stderr, and rerun.
 #ifndef SSC_STUDIES_SWEEP_IO_H_
 #define SSC_STUDIES_SWEEP_IO_H_
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <vector>
 
 namespace ssc {
@@ -23,6 +27,12 @@ struct SweepRowKey {
   double pref_pa = 0, beta = 0, step_mm = 0;
   int repeat = 0;
   std::uint64_t seed = 0;
+  std::string scene, outcome;
+  // The metrics as numbers ("nan" -> NaN); false when a metric cell is not a number at all.
+  double s_mm = 0, s_c = 0, duration_s = 0, sim_time_s = 0;
+  long iterations = 0;
+  bool metrics_parse = true;
+  int line = 0;  // 1-based line number in the file
 };
 
 struct SweepCsvContents {
@@ -41,6 +51,54 @@ SweepCsvContents ParseSweepCsv(std::string_view text, std::string_view header);
 // fresh line. False + *error when the file cannot be read or rewritten, or its header differs.
 bool LoadSweepCsvForResume(const std::string& path, const std::string& header,
                            SweepCsvContents* contents, std::string* error);
+
+// The grid point of a row, in 1e-6 units (P_ref Pa, beta, step mm) and its repeat: two rows with
+// one key are the same trial.
+using SweepGridKey = std::tuple<long, long, long, int>;
+SweepGridKey MakeSweepGridKey(double pref_pa, double beta, double step_mm, int repeat);
+
+// What a resuming sweep expects of every row it keeps.
+struct SweepRowExpectations {
+  std::string scene;
+  std::function<std::uint64_t(const SweepRowKey&)> seed_of;  // the seed its grid point gets
+  std::vector<std::string> outcomes;                         // names of finished outcomes
+  std::string success;                                       // the success outcome's name
+};
+
+// A row that cannot be a finished trial of this sweep, and why ("seed 12 is not this grid
+// point's seed 4711", "a duplicate of line 3", "success with s_mm = nan").
+struct SweepRowProblem {
+  int line = 0;
+  SweepRowKey row;
+  std::string why;
+  int kept_line = 0;  // a duplicate: the line of the row kept for its trial (0: none kept)
+};
+
+// Checks every row of `contents` against `expect` (scene, seed derived from the grid point, a
+// known outcome, metrics a finished trial can have, one row per key: the first good one wins)
+// and removes the bad ones from `contents`, returning them.
+std::vector<SweepRowProblem> DropImpossibleSweepRows(const SweepRowExpectations& expect,
+                                                     SweepCsvContents* contents);
+
+// Rewrites `path` with the header and `lines` (a temporary file renamed over it).
+bool RewriteSweepCsv(const std::string& path, const std::string& header,
+                     const std::vector<std::string>& lines, std::string* error);
+
+// One sweep at a time per output: an exclusive flock(2) on CSV.lock (holding the owner's pid),
+// taken before the CSV is read and released (the lock file removed) by the destructor. A second
+// process is refused naming the pid that holds it.
+class SweepOutputLock {
+ public:
+  SweepOutputLock() = default;
+  ~SweepOutputLock();
+  SweepOutputLock(const SweepOutputLock&) = delete;
+  SweepOutputLock& operator=(const SweepOutputLock&) = delete;
+  bool Acquire(const std::string& csv_path, std::string* error);
+
+ private:
+  int fd_ = -1;
+  std::string path_;
+};
 
 // Appends rows to a sweep CSV, each with one write(2) on an O_APPEND descriptor and newlines
 // inside a row replaced by spaces (a row never spans lines).

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "common/output_file.h"
 #include "studies/trial_io.h"
 
 namespace ssc {
@@ -156,6 +157,110 @@ TEST_F(SweepIoTest, ResumingWithOtherOptionsIsRefusedNamingTheDifference) {
   // A damaged manifest is an error, not a fresh start.
   std::ofstream(dir_ / "sweep.json") << "{\"seed\": ";
   EXPECT_FALSE(CheckOrWriteSweepManifest(csv_, true, first, &error));
+}
+
+// Resume trusts no row: each is checked against its key and the options.
+class ResumeRowsTest : public SweepIoTest {
+ protected:
+  SweepRowExpectations Expect() const {
+    SweepRowExpectations e;
+    e.scene = "gantry";
+    // kRow1..3 carry seeds 11, 12, 13: the seed of a grid point here is 11 + repeat + pref/150.
+    e.seed_of = [](const SweepRowKey& r) {
+      return static_cast<std::uint64_t>(11 + r.repeat + (r.pref_pa > 120 ? 2 : 0));
+    };
+    e.outcomes = {"success", "failure_I", "failure_II", "timeout", "unstable", "lost_edge"};
+    e.success = "success";
+    return e;
+  }
+  std::vector<SweepRowProblem> Check(const std::vector<std::string>& lines, SweepCsvContents* c) {
+    std::string text = header_ + "\n";
+    for (const std::string& l : lines) text += l + "\n";
+    *c = ParseSweepCsv(text, header_);
+    return DropImpossibleSweepRows(Expect(), c);
+  }
+  static std::string Replace(std::string row, const std::string& from, const std::string& to) {
+    return row.replace(row.find(from), from.size(), to);
+  }
+};
+
+TEST_F(ResumeRowsTest, GoodRowsAreAllKept) {
+  SweepCsvContents c;
+  EXPECT_TRUE(Check({kRow1, kRow2, kRow3}, &c).empty());
+  EXPECT_EQ(c.rows.size(), 3u);
+}
+
+TEST_F(ResumeRowsTest, ARowWhoseSeedWasEditedIsDropped) {
+  SweepCsvContents c;
+  const auto problems = Check({Replace(kRow1, ",0,11,", ",0,99,"), kRow2}, &c);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].line, 2);
+  EXPECT_NE(problems[0].why.find("seed 99 is not this grid point's seed 11"), std::string::npos)
+      << problems[0].why;
+  ASSERT_EQ(c.rows.size(), 1u);
+  EXPECT_EQ(c.rows[0].seed, 12u);
+}
+
+TEST_F(ResumeRowsTest, ASecondRowForOneTrialIsDroppedNamingTheFirst) {
+  SweepCsvContents c;
+  const auto problems = Check({kRow1, kRow2, kRow1}, &c);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].line, 4);
+  EXPECT_NE(problems[0].why.find("trial of line 2"), std::string::npos) << problems[0].why;
+  EXPECT_EQ(c.lines, (std::vector<std::string>{kRow1, kRow2}));
+}
+
+TEST_F(ResumeRowsTest, ImpossibleValuesAreDropped) {
+  SweepCsvContents c;
+  const auto problems =
+      Check({Replace(kRow1, ",success,209.7,", ",success,nan,"),
+             Replace(kRow2, "failure_II", "bogus"), Replace(kRow3, ",51,31.0,", ",51,abc,")},
+            &c);
+  ASSERT_EQ(problems.size(), 3u);
+  EXPECT_NE(problems[0].why.find("success with s_mm = nan"), std::string::npos);
+  EXPECT_NE(problems[1].why.find("outcome 'bogus'"), std::string::npos);
+  EXPECT_NE(problems[2].why.find("not a number"), std::string::npos);
+  EXPECT_TRUE(c.rows.empty());
+  // A failure may lack a path: failure_II with s_mm = nan is a row.
+  EXPECT_TRUE(Check({Replace(kRow2, ",failure_II,20.1,", ",failure_II,nan,")}, &c).empty());
+}
+
+TEST_F(ResumeRowsTest, ARowOfAnotherSceneIsDropped) {
+  SweepCsvContents c;
+  const auto problems = Check({Replace(kRow1, "gantry,", "arm,")}, &c);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_NE(problems[0].why.find("scene 'arm'"), std::string::npos);
+}
+
+TEST_F(SweepIoTest, OneSweepAtATimePerOutputNamingTheHolder) {
+  std::string error;
+  {
+    SweepOutputLock first;
+    ASSERT_TRUE(first.Acquire(csv_, &error)) << error;
+    SweepOutputLock second;  // another open file description: flock refuses it
+    EXPECT_FALSE(second.Acquire(csv_, &error));
+    EXPECT_NE(error.find("pid " + std::to_string(::getpid())), std::string::npos) << error;
+  }
+  EXPECT_FALSE(fs::exists(csv_ + ".lock"));  // released and removed
+  SweepOutputLock again;
+  EXPECT_TRUE(again.Acquire(csv_, &error)) << error;
+}
+
+TEST_F(SweepIoTest, AnOutputFileIsWholeOrAbsent) {
+  const std::string path = (dir_ / "out.txt").string();
+  std::string error;
+  {
+    OutputFile f(path);
+    f.Write("partial");
+    EXPECT_FALSE(fs::exists(path));  // nothing under the final name before Commit
+  }
+  EXPECT_TRUE(fs::is_empty(dir_));  // abandoned: the temporary file is gone too
+  ASSERT_TRUE(WriteWholeFile(path, "whole\n", &error)) << error;
+  EXPECT_TRUE(fs::exists(path));
+  // An unwritable target keeps the old content and names the file and the reason.
+  EXPECT_FALSE(WriteWholeFile((dir_ / "no_dir" / "x.txt").string(), "x", &error));
+  EXPECT_NE(error.find("no_dir/x.txt: cannot create: No such file or directory"), std::string::npos)
+      << error;
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ mkdir -p "$WORK/plugin_config/corpus" "$WORK/sweep_resume/corpus"
 "$CXX_FUZZ" "${FLAGS[@]}" plugin/fuzz/plugin_config_fuzz.cc plugin/chamber_pressure_config.cc \
   plugin/pneumatics/cup_geometry.cc plugin/pneumatics/flow_network.cc \
   plugin/pneumatics/sensor_chain.cc common/strict_number.cc -o "$WORK/plugin_config_fuzz"
-"$CXX_FUZZ" "${FLAGS[@]}" studies/fuzz/sweep_resume_fuzz.cc studies/sweep_io.cc \
+"$CXX_FUZZ" "${FLAGS[@]}" studies/fuzz/sweep_resume_fuzz.cc studies/sweep_io.cc common/output_file.cc \
   common/strict_number.cc -o "$WORK/sweep_resume_fuzz"
 
 # Seeds.
