@@ -4,7 +4,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <nlohmann/json.hpp>
+
+#include "common/output_file.h"
 
 namespace ssc {
 namespace {
@@ -95,7 +98,10 @@ bool WriteComparisonReport(const std::string& dir, const ComparisonSetup& setup,
                       {"direction_median_deg", Num(c.direction_median_deg)},
                       {"direction_samples", c.direction_samples}};
 
-  std::ofstream md(fs::path(dir) / "report.md");
+  // Each file whole or not at all (common/output_file.h), committed together at the end.
+  OutputFile md_file((fs::path(dir) / "report.md").string());
+  std::ostream& md = md_file.stream();
+  std::unique_ptr<OutputFile> hist_file;
   md << "# Twin against robot log: " << setup.log_path << "\n\n"
      << "Format: " << setup.format << ". Replay of the logged tool path; " << c.t_s.size()
      << " pressure samples over " << Fmt("%.1f", report["log"]["duration_s"].get<double>())
@@ -157,7 +163,8 @@ bool WriteComparisonReport(const std::string& dir, const ComparisonSetup& setup,
       md << Fmt("| P%.0f | RMS %.1f Pa, correlation ", k + 1, h.p_rms_pa[k])
          << CorrelationText(h.p_correlation[k]) << Fmt(", mean ratio %.3f |\n", h.p_mean_ratio[k]);
     }
-    std::ofstream hist(fs::path(dir) / "history.csv");
+    hist_file = std::make_unique<OutputFile>((fs::path(dir) / "history.csv").string());
+    std::ostream& hist = hist_file->stream();
     hist << "t_log_s,x_m,y_m,lab_r_p_y,lab_r_p_x,twin_r_p_y,twin_r_p_x,r_p_deg,corr_p_deg,"
             "r_p_final_deg,lab_f_normal_n,twin_f_normal_n,lab_p1_pa,lab_p2_pa,lab_p3_pa,"
             "lab_p4_pa,twin_p1_pa,twin_p2_pa,twin_p3_pa,twin_p4_pa\n";
@@ -192,9 +199,10 @@ bool WriteComparisonReport(const std::string& dir, const ComparisonSetup& setup,
        << Fmt("\nTwin path to logged path: mean %.2f mm, max %.2f mm.\n",
               closed->path_distance_mean_mm, closed->path_distance_max_mm);
   }
-  std::ofstream js(fs::path(dir) / "report.json");
-  js << report.dump(2) << '\n';
-  std::ofstream series(fs::path(dir) / "series.csv");
+  OutputFile js_file((fs::path(dir) / "report.json").string());
+  js_file.Write(report.dump(2) + "\n");
+  OutputFile series_file((fs::path(dir) / "series.csv").string());
+  std::ostream& series = series_file.stream();
   series << "t_s,x_m,y_m,z_m,sim_p1_pa,sim_p2_pa,sim_p3_pa,sim_p4_pa,log_p1_pa,log_p2_pa,"
             "log_p3_pa,log_p4_pa\n";
   char buf[512];
@@ -205,14 +213,8 @@ bool WriteComparisonReport(const std::string& dir, const ComparisonSetup& setup,
                   c.log_pa[i][2], c.log_pa[i][3]);
     series << buf;
   }
-  md.flush();
-  js.flush();
-  series.flush();
-  if (!md || !js || !series) {
-    *error = dir + ": cannot write the report";
-    return false;
-  }
-  return true;
+  return md_file.Commit(error) && js_file.Commit(error) && series_file.Commit(error) &&
+         (!hist_file || hist_file->Commit(error));
 }
 
 }  // namespace ssc

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "common/output_file.h"
+#include "common/strict_number.h"
 #include "controller/pure/contour_law.h"
 
 namespace ssc {
@@ -38,6 +40,24 @@ std::unique_ptr<EdgeProbe3d> EdgeProbe3d::Create(const std::string& scene_path,
   probe->tool_length_m_ = std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
                                     (a[2] - b[2]) * (a[2] - b[2]));
   return probe;
+}
+
+std::string EdgeProbe3d::CheckPlacement(double x_m, double y_m, double yaw_rad, double surface_z_m,
+                                        double compression_m, double settle_s) {
+  auto bad = [](const char* name, double v, const char* range) {
+    return std::string(name) + " = " + FormatNumber(v) + " is out of range " + range;
+  };
+  if (!(std::fabs(x_m) <= 10)) return bad("x_m", x_m, "[-10, 10] m");
+  if (!(std::fabs(y_m) <= 10)) return bad("y_m", y_m, "[-10, 10] m");
+  if (!(std::fabs(yaw_rad) <= 100)) return bad("yaw_rad", yaw_rad, "[-100, 100] rad");
+  if (!(std::fabs(surface_z_m) <= 10)) return bad("surface_z_m", surface_z_m, "[-10, 10] m");
+  if (!(std::fabs(compression_m) <= kMaxProbeCompressionMm * 1e-3)) {
+    return bad("compression_m", compression_m, "[-0.01, 0.01] m");
+  }
+  if (!(settle_s > 0 && settle_s <= kMaxProbeSettleS)) {
+    return bad("settle_s", settle_s, "(0, 10] s (settling time, simulated)");
+  }
+  return "";
 }
 
 ProbeReading EdgeProbe3d::Read(double x_m, double y_m, double yaw_rad, double surface_z_m,
@@ -89,14 +109,14 @@ ProbeReading EdgeProbe3d::Read(double x_m, double y_m, double yaw_rad, double su
 
 namespace {
 
-void WriteHeader(std::ofstream& f) {
+void WriteHeader(std::ostream& f) {
   f << "offset_mm,angle_deg,x_mm,y_mm,p1_pa,p2_pa,p3_pa,p4_pa,pbar_pa,dpx_pa,dpy_pa,diff_pa,"
        "g_world_deg,travel_world_deg,static_p1_pa,static_p2_pa,static_p3_pa,static_p4_pa,"
        "static_pbar_pa,sealed1_mm2,sealed2_mm2,sealed3_mm2,sealed4_mm2,leak1_mm2,leak2_mm2,"
        "leak3_mm2,leak4_mm2,lip_contacts\n";
 }
 
-void WriteRow(std::ofstream& f, double offset_mm, double angle_deg, const ProbeReading& r) {
+void WriteRow(std::ostream& f, double offset_mm, double angle_deg, const ProbeReading& r) {
   char line[1024];
   const double deg = 180.0 / M_PI;
   std::snprintf(line, sizeof(line),
@@ -122,7 +142,8 @@ bool RunProbeStudy(EdgeProbe3d* probe, const ProbeStudySpec& spec,
   result->disk_csv = (out / "disk.csv").string();
   // Straight edge along world y at x = 0, plate at x < 0 with its top at z = 10 mm.
   const double surface_z = 0.010, compression = spec.compression_mm * 1e-3;
-  std::ofstream edge(result->edge_csv);
+  OutputFile edge_file(result->edge_csv);
+  std::ostream& edge = edge_file.stream();
   WriteHeader(edge);
   for (double off = spec.from_mm; off <= spec.to_mm + 1e-9; off += spec.step_mm) {
     const ProbeReading r =
@@ -131,7 +152,8 @@ bool RunProbeStudy(EdgeProbe3d* probe, const ProbeStudySpec& spec,
     if (edge_row) edge_row(off, r);
   }
   // Around the disk (centre (0.15, 0), radius 35 mm) at a fixed inset.
-  std::ofstream disk(result->disk_csv);
+  OutputFile disk_file(result->disk_csv);
+  std::ostream& disk = disk_file.stream();
   WriteHeader(disk);
   const double cx = 0.15, radius = 0.035;
   for (double a = 0; a < 360 - 1e-9; a += spec.disk_step_deg) {
@@ -144,11 +166,7 @@ bool RunProbeStudy(EdgeProbe3d* probe, const ProbeStudySpec& spec,
     const double err = std::remainder(r.travel_world_rad - (th + M_PI / 2), 2 * M_PI) * 180 / M_PI;
     result->worst_direction_deg = std::max(result->worst_direction_deg, std::fabs(err));
   }
-  if (!edge || !disk) {
-    *error = spec.out_dir + ": cannot write edge.csv / disk.csv";
-    return false;
-  }
-  return true;
+  return edge_file.Commit(error) && disk_file.Commit(error);
 }
 
 }  // namespace ssc

@@ -29,6 +29,11 @@ struct ProbeReading {
   double static_pbar_pa = 0;
 };
 
+// Bounds of a placement's settling time and lip compression (ssc probe's --settle and
+// --compression, Probe.read's settle_s and compression_m).
+constexpr double kMaxProbeSettleS = 10;
+constexpr double kMaxProbeCompressionMm = 10;
+
 class EdgeProbe3d {
  public:
   // Loads the probe scene; null on error (message in *error).
@@ -37,8 +42,11 @@ class EdgeProbe3d {
   // Places the tool centre (lip plane) at world (x, y), the lip plane `compression_m` below the
   // surface top `surface_z_m`, the tool rotated by yaw about the world z axis relative to the
   // project's convention, lets the lip settle for settle_s and reads the sensor.
+  // Read() expects a placement CheckPlacement() accepts: "" or what is out of range.
   ProbeReading Read(double x_m, double y_m, double yaw_rad, double surface_z_m,
                     double compression_m, double settle_s);
+  static std::string CheckPlacement(double x_m, double y_m, double yaw_rad, double surface_z_m,
+                                    double compression_m, double settle_s);
 
   const mjModel* model() const { return model_.get(); }
   mjData* data() const { return data_.get(); }

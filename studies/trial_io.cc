@@ -2,10 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "common/output_file.h"
 #include "controller/pure/robot_effects.h"
 
 namespace ssc {
@@ -28,11 +28,8 @@ std::string CsvText(const std::string& s) {
 }  // namespace
 
 bool WriteTrialLogCsv(const std::string& path, const TrialResult& result, std::string* error) {
-  std::ofstream f(path);
-  if (!f) {
-    *error = path + ": cannot write";
-    return false;
-  }
+  OutputFile file(path);
+  std::ostream& f = file.stream();
   f << "t_s,x_m,y_m,z_m,p1_pa,p2_pa,p3_pa,p4_pa,pbar_pa,dpx_pa,dpy_pa,cf,step_x_m,step_y_m,"
        "ft_normal_n,phase,iteration\n";
   for (const TrialLogRow& r : result.log) {
@@ -43,20 +40,11 @@ bool WriteTrialLogCsv(const std::string& path, const TrialResult& result, std::s
       << ',' << Num(r.step_x_m) << ',' << Num(r.step_y_m) << ',' << Num(r.ft_normal_n) << ','
       << PhaseName(r.phase) << ',' << (r.iteration ? 1 : 0) << '\n';
   }
-  if (!f) {
-    *error = path + ": write failed";
-    return false;
-  }
-  return true;
+  return file.Commit(error);
 }
 
 bool WriteTrialSummaryJson(const std::string& path, const std::string& scene, const TrialConfig& c,
                            const TrialResult& r, std::string* error) {
-  std::ofstream f(path);
-  if (!f) {
-    *error = path + ": cannot write";
-    return false;
-  }
   const DiskTrialMetrics& m = r.metrics;
   // Numbers at 6 significant digits, as in the CSV files; non-finite values become null.
   auto num = [](double v) -> nlohmann::ordered_json {
@@ -100,12 +88,7 @@ bool WriteTrialSummaryJson(const std::string& path, const std::string& scene, co
   j["sim_time_s"] = num(r.sim_time_s);
   j["wall_time_s"] = num(r.wall_time_s);
   j["hold_height_mm"] = num(r.hold_height_m * 1e3);
-  f << j.dump(2) << '\n';
-  if (!f) {
-    *error = path + ": write failed";
-    return false;
-  }
-  return true;
+  return WriteWholeFile(path, j.dump(2) + "\n", error);
 }
 
 std::string SweepCsvHeader() {

@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "common/input_file.h"
+#include "common/output_file.h"
 #include "common/strict_number.h"
 #include "controller/pure/robot_effects.h"
 #include "studies/job_runner.h"
@@ -99,10 +100,22 @@ bool ReadPublishedMap(const std::string& path, std::vector<MapCell>* cells, std:
     *error = path + ": " + why + " (the published map)";
     return false;
   }
-  std::ifstream f(path);
+  std::ifstream f(path, std::ios::binary);
   if (!f) {
     *error = path + ": cannot open the published map";
     return false;
+  }
+  {
+    std::string head(4096, '\0');
+    f.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<size_t>(f.gcount()));
+    if (const std::string why = NonTextReason(head); !why.empty()) {
+      *error = path + ": " + why + " (the published map is a UTF-8 CSV step_mm,beta,pref_pa," +
+               "successes_of_3)";
+      return false;
+    }
+    f.clear();
+    f.seekg(0);
   }
   std::string line;
   int line_no = 0;
@@ -118,7 +131,7 @@ bool ReadPublishedMap(const std::string& path, std::vector<MapCell>* cells, std:
     if (line_no == 1) {
       if (c != expected) {
         *error = path + ":1: header must be 'step_mm,beta,pref_pa,successes_of_3', got '" +
-                 Trim(line) + "'";
+                 ShownText(Trim(line)) + "'";
         return false;
       }
       continue;
@@ -130,21 +143,21 @@ bool ReadPublishedMap(const std::string& path, std::vector<MapCell>* cells, std:
     }
     MapCell cell;
     if (!ReadNumber(c[0], kMinStepMm, kMaxStepMm, &cell.step_mm)) {
-      *error = where(0) + ": step_mm '" + c[0] + "' must be a number in [" +
+      *error = where(0) + ": step_mm '" + ShownText(c[0]) + "' must be a number in [" +
                FormatNumber(kMinStepMm) + ", " + FormatNumber(kMaxStepMm) +
                "] mm (below: metres given as mm?)";
       return false;
     }
     if (!ReadNumber(c[1], 0, 100, &cell.beta)) {
-      *error = where(1) + ": beta '" + c[1] + "' must be a number in [0, 100]";
+      *error = where(1) + ": beta '" + ShownText(c[1]) + "' must be a number in [0, 100]";
       return false;
     }
     if (!ReadNumber(c[2], 1e-3, 1e6, &cell.pref_pa)) {
-      *error = where(2) + ": pref_pa '" + c[2] + "' must be a number in [0.001, 1e6] Pa";
+      *error = where(2) + ": pref_pa '" + ShownText(c[2]) + "' must be a number in [0.001, 1e6] Pa";
       return false;
     }
     if (!ParseMapClass(c[3], &cell.published)) {
-      *error = where(3) + ": successes_of_3 '" + c[3] + "' must be 3, 2 or <=1";
+      *error = where(3) + ": successes_of_3 '" + ShownText(c[3]) + "' must be 3, 2 or <=1";
       return false;
     }
     if (!seen.insert(KeyOf(cell.step_mm, cell.beta, cell.pref_pa)).second) {
@@ -232,7 +245,8 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
   const std::vector<double> surface_p = SurfaceRatesOfMap(cells, ceiling_list);
   for (std::size_t i = 0; i < surface_p.size(); ++i) score->cells[i].surface_p = surface_p[i];
   const std::string cells_csv = spec.out_dir + "/cells.csv";
-  std::ofstream c(cells_csv);
+  OutputFile cells_file(cells_csv);
+  std::ostream& c = cells_file.stream();
   c << "step_mm,beta,pref_pa,published,twin_class,successes_of_3,successes,trials,p_success,"
        "p_low,p_high,expected_agreement,opposite,failure_I,failure_II,timeout,unstable,"
        "main_failure,surface_p\n";
@@ -244,10 +258,7 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
       << (s.opposite ? 1 : 0) << ',' << s.failure_off_edge << ',' << s.failure_grasp << ','
       << s.timeout << ',' << s.unstable << ',' << s.main_failure << ',' << s.surface_p << '\n';
   }
-  if (!c) {
-    *error = cells_csv + ": write failed";
-    return false;
-  }
+  if (!cells_file.Commit(error)) return false;
   nlohmann::json j;
   j["map"] = spec.map_path;
   j["scene"] = spec.scene_name;
@@ -298,12 +309,7 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
                                  {"successes", t.successes}});
   }
   j["wall_s"] = summary->wall_s;
-  std::ofstream js(spec.out_dir + "/validate.json");
-  js << j.dump(2) << '\n';
-  if (!js) {
-    *error = spec.out_dir + "/validate.json: write failed";
-    return false;
-  }
+  if (!WriteWholeFile(spec.out_dir + "/validate.json", j.dump(2) + "\n", error)) return false;
   if (fig6) *fig6 = targets;
   if (ceilings) *ceilings = ceiling_list;
   return true;

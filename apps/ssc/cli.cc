@@ -10,6 +10,9 @@
 #include <filesystem>
 #include <limits>
 #include <system_error>
+#include <vector>
+
+#include "common/output_file.h"
 
 #ifndef SSC_VERSION
 #define SSC_VERSION "unknown"
@@ -85,7 +88,18 @@ bool CreateOutputDir(const std::string& dir, std::string* error) {
   if (!CheckOutputDir(dir, error)) return false;
   std::error_code ec;
   const fs::path p(dir);
+  // The folders this creates, parent first, for RemoveStartedOutputs() (common/output_file.h).
+  std::vector<fs::path> missing;
+  fs::path start = fs::absolute(p, ec).lexically_normal();
+  if (start.filename().empty()) start = start.parent_path();  // "out/" -> "out"
+  for (fs::path q = start; !q.empty() && !fs::exists(q, ec); q = q.parent_path()) {
+    missing.push_back(q);
+    if (q == q.parent_path()) break;
+  }
   fs::create_directories(p, ec);
+  for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+    if (fs::is_directory(*it)) RecordCreatedOutputDir(it->string());
+  }
   if (ec || !fs::is_directory(p, ec)) {
     *error = "cannot create directory " + Shown(dir) + ": " +
              (ec ? ec.message() : std::string("not a directory"));
@@ -156,11 +170,12 @@ void Command::Number(const std::string& name, double* target, const std::string&
   AddValue(name, help + (unit.empty() ? "" : ", " + unit) + "; " + range.ToString(),
            unit.empty() ? "NUMBER" : unit, show_default ? FormatNumber(*target) : "");
   std::string* text = &texts_.back();
-  converters_.push_back([this, name, text, target, range](std::string* error) {
+  converters_.push_back([this, name, text, target, range, unit](std::string* error) {
     if (!Given(name)) return true;
     std::string e;
     if (!ParseNumber(*text, range, target, &e)) {
-      *error = "--" + name + ": " + e;
+      // The range in the option's unit ("expected [0, 500] mm"), as the help shows it.
+      *error = "--" + name + ": " + e + (unit.empty() ? "" : " " + unit);
       return false;
     }
     return true;

@@ -1,4 +1,6 @@
 // ssc: command-line front end of the Smart Suction Cup digital twin.
+#include <signal.h>
+
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -6,6 +8,7 @@
 
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
+#include "common/output_file.h"
 #include "runtime/mujoco_model.h"
 #include "studies/job_runner.h"
 
@@ -44,6 +47,27 @@ const Command kCommands[] = {
     {"bench", ssc::RunBench, "step cost with/without the pressure sensor (runs ssc_bench)"},
 };
 
+// SIGINT and SIGTERM outside a study's run (the job runner handles them there, keeping finished
+// rows): remove what this process started (temporary files, empty output folders), then end as
+// the signal would. A plot child ends with us (PR_SET_PDEATHSIG, apps/ssc/plotting.cc).
+extern "C" void OnCommandStopSignal(int sig) {
+  ssc::RemoveStartedOutputs();
+  signal(sig, SIG_DFL);
+  raise(sig);
+}
+
+void InstallSignalHandlers() {
+  // A write past `ulimit -f` then fails with EFBIG, reported with the file's name, instead of
+  // killing the process with a half-written file.
+  signal(SIGXFSZ, SIG_IGN);
+  struct sigaction sa;
+  std::memset(&sa, 0, sizeof(sa));
+  sa.sa_handler = OnCommandStopSignal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
+
 void PrintUsage() {
   std::printf(
       "usage: ssc <command> [options]   (ssc <command> --help for its options)\n"
@@ -55,6 +79,7 @@ void PrintUsage() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  InstallSignalHandlers();
   ssc::InstallMuJoCoMessageHandlers();
   const std::string version_error = ssc::CheckMuJoCoVersion();
   if (!version_error.empty()) {
@@ -82,6 +107,7 @@ int main(int argc, char** argv) {
     } catch (const std::exception& e) {
       std::fprintf(stderr, "ssc %s: error: %s\n", c.name, e.what());
     }
+    if (rc != 0) ssc::RemoveStartedOutputs();      // e.g. a folder made for a write that failed
     ssc::FinalizeJobRunnerMpi(/*abort=*/rc != 0);  // a failed rank must not leave others waiting
     return rc;
   }

@@ -1,6 +1,7 @@
 #include "apps/ssc/plotting.h"
 
-#include <spawn.h>
+#include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -38,11 +39,20 @@ bool RunPlotScript(const std::string& script, const std::vector<std::string>& ar
   envp.push_back(nullptr);
   std::fflush(stdout);
   std::fflush(stderr);
-  pid_t pid = 0;
-  if (const int rc = posix_spawn(&pid, python.c_str(), nullptr, nullptr, argv.data(), envp.data());
-      rc != 0) {
-    std::fprintf(stderr, "plot failed: cannot start %s: %s\n", python.c_str(), std::strerror(rc));
+  // fork + exec (not posix_spawn) so the child can ask to end with its parent: a plot never
+  // writes after ssc was stopped. Only async-signal-safe calls between fork and exec.
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid < 0) {
+    std::fprintf(stderr, "plot failed: cannot start %s: %s\n", python.c_str(),
+                 std::strerror(errno));
     return false;
+  }
+  if (pid == 0) {
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (getppid() != parent) _exit(1);  // the parent ended before prctl
+    execve(python.c_str(), argv.data(), envp.data());
+    _exit(127);
   }
   int status = 0;
   while (waitpid(pid, &status, 0) < 0) {

@@ -28,8 +28,9 @@ int RunProbe(int argc, char** argv) {
   cmd.Number("to", &to, "last offset", "mm", NumberRange::Closed(-50, 50));
   cmd.Number("step", &step, "offset step", "mm", NumberRange::Positive(100).OpenLow());
   cmd.Number("compression", &compression, "lip plane below the surface top", "mm",
-             NumberRange::Closed(-10, 10));
-  cmd.Number("settle", &settle, "settling time at each placement", "s", NumberRange::Positive(10));
+             NumberRange::Closed(-kMaxProbeCompressionMm, kMaxProbeCompressionMm));
+  cmd.Number("settle", &settle, "settling time at each placement", "s",
+             NumberRange::Positive(kMaxProbeSettleS));
   cmd.Number("disk-inset", &inset, "cup centre inside the disk edge for the disk sweep", "mm",
              NumberRange::Closed(-35, 35));
   cmd.Number("disk-step", &disk_step, "angle step around the disk", "deg",
