@@ -1,5 +1,6 @@
 #include "compare/comparison.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -18,6 +19,35 @@ std::string Mm(double m) {
 std::string Point(const std::array<double, 3>& p) {
   char buf[96];
   std::snprintf(buf, sizeof(buf), "(%.4f, %.4f, %.4f) m", p[0], p[1], p[2]);
+  return buf;
+}
+
+// A replayed cup that is not where the log shows it: at most of the samples where the log holds
+// a seal (mean vacuum above half its peak) the replay holds less than a quarter of it. Such a
+// comparison measures the frames, not the twin: "" when the replay agrees, else the warning
+// naming the options that place the path.
+std::string ReplayDisagreement(const ReplayComparison& c, const CompareOptions& o,
+                               const std::string& log_frame) {
+  auto mean = [](const std::array<double, 4>& p) { return 0.25 * (p[0] + p[1] + p[2] + p[3]); };
+  double peak = 0;
+  for (const auto& p : c.log_pa) peak = std::max(peak, mean(p));
+  if (!(peak > 0)) return "";
+  int sealed = 0, lost = 0;
+  for (size_t i = 0; i < c.log_pa.size(); ++i) {
+    const double log_mean = mean(c.log_pa[i]);
+    if (log_mean < 0.5 * peak) continue;
+    ++sealed;
+    if (mean(c.sim_pa[i]) < 0.25 * log_mean) ++lost;
+  }
+  if (sealed < 10 || lost * 2 <= sealed) return "";
+  char buf[512];
+  std::snprintf(buf, sizeof(buf),
+                "the replay disagrees with the log: at %d of the %d samples where the log holds "
+                "a seal (mean vacuum above %.0f Pa) the replayed cup holds less than a quarter "
+                "of it, so the replayed path is likely off the object. Check --tcp-offset "
+                "(%.1f mm now; the lab's tool %.1f mm), --log-frame (%s now) and --object-pose",
+                lost, sealed, 0.5 * peak, o.processing.tcp_offset_m * 1e3, kToolCentreOffsetM * 1e3,
+                log_frame.c_str());
   return buf;
 }
 
@@ -127,6 +157,9 @@ bool RunComparison(const CompareOptions& o, CompareResult* r, std::string* error
   if (!ReplayLog(model.get(), scene_log, o.processing.tcp_offset_m, o.loop_config.effects.lip,
                  &r->replay, error)) {
     return false;
+  }
+  if (std::string w = ReplayDisagreement(r->replay, o, s.log_frame); !w.empty()) {
+    r->log_warnings.push_back(w);
   }
   if (!args.history.empty()) {
     std::string why;

@@ -87,8 +87,11 @@ bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
   // host tares it in air.
   const int ft = mj_name2id(m, mjOBJ_SENSOR, kToolForceSensorName);
   const int ft_adr = ft >= 0 ? m->sensor_adr[ft] + 2 : -1;
-  d->time = log.t_s.front();
-  place(d->time);
+  // The simulation clock starts at 0 whatever the log's clock reads (a log starting at -5 s or
+  // at 1.7e9 s replays the same): sim time = log time - t0.
+  const double t0 = log.t_s.front();
+  d->time = 0;
+  place(t0);
   mj_forward(m, d);
   const double ft_tare = ft_adr >= 0 ? d->sensordata[ft_adr] : 0.0;
   // The lip drags along the path step by step, as in the closed-loop trial.
@@ -96,8 +99,8 @@ bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
   LipShearState shear;
   std::array<double, 2> last_xy = {d->site_xpos[3 * site], d->site_xpos[3 * site + 1]};
   for (size_t k = 0; k < log.t_s.size(); ++k) {
-    while (d->time + 0.5 * m->opt.timestep < log.t_s[k]) {
-      place(d->time);
+    while (d->time + 0.5 * m->opt.timestep < log.t_s[k] - t0) {
+      place(t0 + d->time);
       mj_step(m, d);
       const mjtNum* xy = d->site_xpos + 3 * site;
       AdvanceLipShear(lip,

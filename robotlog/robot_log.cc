@@ -258,11 +258,36 @@ bool ProcessRobotLog(const RobotLog& log, const ProcessOptions& o, ProcessedLog*
     const Stream& p = log.pressure_abs;
     const Stream& pose = log.tool_pose;
     const std::string p_file = p.source.empty() ? "pressure stream" : p.source;
-    if (!(o.offset_window_s > 0) || !(o.tcp_offset_m >= 0 && o.tcp_offset_m < 1) ||
-        o.moving_average > 100000 ||
+    if (!(o.tcp_offset_m >= 0 && o.tcp_offset_m <= kMaxTcpOffsetM)) {
+      // The option is in mm (--tcp-offset, tcp_offset_mm): say so in mm.
+      text::SetError(error, p_file, 0, 0,
+                     "TCP offset " + Num(o.tcp_offset_m * 1e3) + " mm is out of range [0, " +
+                         Num(kMaxTcpOffsetM * 1e3) +
+                         "] mm (the lab's tool: " + Num(kToolCentreOffsetM * 1e3) + " mm)");
+      return false;
+    }
+    // Windows measured against the log they act on: longer than the log, they would average
+    // the trial itself into the in-air offset (a mean ratio of -11280).
+    const double span_s = p.t_s.back() - p.t_s.front();
+    if (o.trial_start_s < 0 && o.offset_window_s >= 0.5 * span_s) {
+      text::SetError(error, p_file, 0, 0,
+                     "in-air offset window " + Num(o.offset_window_s) +
+                         " s (--offset-window) is not shorter than half the pressure stream (" +
+                         Num(span_s) + " s, " + Span(p) +
+                         "): the window must hold only the cup in air before the trial");
+      return false;
+    }
+    if (o.moving_average > static_cast<int>(p.size()) / 2) {
+      text::SetError(error, p_file, 0, 0,
+                     "moving average of " + std::to_string(o.moving_average) +
+                         " samples (--average) is longer than half the log's " +
+                         std::to_string(p.size()) + " pressure samples");
+      return false;
+    }
+    if (!(o.offset_window_s > 0) || o.moving_average > 100000 ||
         (o.clock == ClockSource::kUniform && !(o.clock_rate_hz > 0 && o.clock_rate_hz <= 1e5))) {
       text::SetError(error, p_file, 0, 0,
-                     "bad processing options: need offset window > 0 s, TCP offset in [0, 1) m, "
+                     "bad processing options: need offset window > 0 s, "
                      "moving average <= 100000 samples and a uniform clock rate in (0, 100000] "
                      "Hz");
       return false;

@@ -60,6 +60,9 @@ enum class ClockSource {
   kUniform,   // a uniform clock at clock_rate_hz over the pressure/pose overlap
 };
 
+// Largest tool centre point offset along tool0 z accepted (--tcp-offset, mm on the command line).
+constexpr double kMaxTcpOffsetM = 0.5;
+
 struct ProcessOptions {
   // In-air offset window: [trial_start_s - offset_window_s, trial_start_s). A negative
   // trial_start_s puts the window at the first offset_window_s of the pressure stream.

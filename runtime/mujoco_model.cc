@@ -1,7 +1,9 @@
 #include "runtime/mujoco_model.h"
 
 #include <dlfcn.h>
+#include <mujoco/mjxmacro.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -9,7 +11,10 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <regex>
 #include <sstream>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "common/input_file.h"
@@ -73,9 +78,139 @@ std::string g_resource_dir;  // SetResourceDir
 
 // Takes a compiled model; refuses (deletes it, null + *error prefixed by `label`) a bad time step
 // or a plugin that rejects its config when data is made.
+// Every file a scene names (<include>, <model>, <mesh>, <texture>, <hfield>, <skin> file=...),
+// recursively through included XML: one that exists but is not a regular file (a FIFO would
+// block MuJoCo's reader forever, a device never end) is refused naming the scene line. Missing
+// files are left to MuJoCo's own message.
+std::string CheckSceneFiles(const std::filesystem::path& file,
+                            const std::filesystem::path& main_dir, int depth) {
+  namespace fs = std::filesystem;
+  if (depth > 16) return file.string() + ": includes nested deeper than 16 files";
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream buf;
+  buf << in.rdbuf();
+  std::string text = buf.str();
+  for (size_t a = text.find("<!--"); a != std::string::npos; a = text.find("<!--", a)) {
+    const size_t b = text.find("-->", a);
+    const size_t end = b == std::string::npos ? text.size() : b + 3;
+    for (size_t i = a; i < end; ++i) {
+      if (text[i] != '\n') text[i] = ' ';
+    }
+    a = end;
+  }
+  static const std::regex file_attr(R"(<(\w+)\b[^>]*?\bfile\s*=\s*["']([^"']+)["'])");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), file_attr);
+       it != std::sregex_iterator(); ++it) {
+    const std::string tag = (*it)[1].str();
+    const fs::path name = (*it)[2].str();
+    std::error_code ec;
+    // MuJoCo resolves from the main file's folder (assets also from meshdir/texturedir, where a
+    // name that is not found here is left to MuJoCo); try the including file's folder too.
+    std::vector<fs::path> candidates = {name.is_absolute() ? name : main_dir / name};
+    if (!name.is_absolute()) candidates.push_back(file.parent_path() / name);
+    for (const fs::path& candidate : candidates) {
+      if (!fs::exists(candidate, ec)) continue;
+      if (const std::string why = CheckInputFile(candidate.string()); !why.empty()) {
+        const long line = 1 + std::count(text.begin(), text.begin() + it->position(), '\n');
+        return file.string() + ":" + std::to_string(line) + ": <" + tag + " file=\"" +
+               name.string() + "\">: " + candidate.string() + " " + why;
+      }
+      if ((tag == "include" || tag == "model") && candidate.extension() == ".xml") {
+        if (std::string e = CheckSceneFiles(candidate, main_dir, depth + 1); !e.empty()) return e;
+      }
+      break;
+    }
+  }
+  return "";
+}
+
+// The element kind whose count sizes an mjModel array ("nbody" -> body).
+mjtObj ElementKind(const char* rows) {
+  static const std::pair<const char*, mjtObj> kinds[] = {
+      {"nbody", mjOBJ_BODY},       {"njnt", mjOBJ_JOINT},     {"ngeom", mjOBJ_GEOM},
+      {"nsite", mjOBJ_SITE},       {"ncam", mjOBJ_CAMERA},    {"nlight", mjOBJ_LIGHT},
+      {"nmesh", mjOBJ_MESH},       {"nhfield", mjOBJ_HFIELD}, {"ntex", mjOBJ_TEXTURE},
+      {"nmat", mjOBJ_MATERIAL},    {"npair", mjOBJ_PAIR},     {"neq", mjOBJ_EQUALITY},
+      {"ntendon", mjOBJ_TENDON},   {"nu", mjOBJ_ACTUATOR},    {"nsensor", mjOBJ_SENSOR},
+      {"nnumeric", mjOBJ_NUMERIC}, {"nkey", mjOBJ_KEY},       {"nflex", mjOBJ_FLEX}};
+  for (const auto& [count_name, type] : kinds) {
+    if (std::strcmp(rows, count_name) == 0) return type;
+  }
+  return mjOBJ_UNKNOWN;
+}
+
+// The first non-finite number of the compiled model (a NaN or inf typed into the scene, which
+// MuJoCo's parser accepts), naming the element: "" when there is none.
+template <typename T>
+std::string NonFiniteIn(const mjModel* m, const char* field, const char* rows, const T* values,
+                        long count, long columns, bool named_only) {
+  if constexpr (std::is_floating_point_v<T>) {
+    // First pass: the arrays of named elements (what the scene says); second: derived ones.
+    if (named_only != (std::strcmp(rows, "nv") == 0 || ElementKind(rows) != mjOBJ_UNKNOWN)) {
+      return "";
+    }
+    for (long i = 0; i < count; ++i) {
+      if (std::isfinite(static_cast<double>(values[i]))) continue;
+      const long row = columns > 0 ? i / columns : 0;
+      std::string element = std::string(rows) + " index " + std::to_string(row);
+      if (const mjtObj type = ElementKind(rows); type != mjOBJ_UNKNOWN) {
+        const char* name = mj_id2name(m, type, static_cast<int>(row));
+        element = std::string(mju_type2Str(type)) + " " +
+                  (name != nullptr && name[0] ? "'" + std::string(name) + "'"
+                                              : "#" + std::to_string(row) + " (unnamed)");
+      }
+      if (std::strcmp(rows, "nv") == 0 && row < m->nv) {
+        const char* name = mj_id2name(m, mjOBJ_JOINT, m->dof_jntid[row]);
+        element =
+            "joint '" + std::string(name ? name : "?") + "' (dof " + std::to_string(row) + ")";
+      }
+      char value[32];
+      std::snprintf(value, sizeof(value), "%g", static_cast<double>(values[i]));
+      return element + ": " + field + " holds " + value +
+             " (a NaN or inf in the scene, or a value that overflows)";
+    }
+  }
+  return "";
+}
+
+std::string FindNonFiniteModelValue(const mjModel* m) {
+  std::string found;
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wconversion"  // MuJoCo's preamble copies sizes into ints
+  MJMODEL_POINTERS_PREAMBLE(m)
+#pragma GCC diagnostic pop
+  for (const bool named_only : {true, false}) {
+#define X(type, name, nr, nc)                                                                     \
+  if (found.empty()) {                                                                            \
+    found = NonFiniteIn(m, #name, #nr, m->name, static_cast<long>(m->nr) * (nc), nc, named_only); \
+  }
+#define XNV X
+    MJMODEL_POINTERS
+#undef XNV
+#undef X
+  }
+#define X(type, name, n)                                                                           \
+  if (found.empty()) {                                                                             \
+    found = NonFiniteIn(m, "option " #name, "", reinterpret_cast<const type*>(&m->opt.name), n, 0, \
+                        false);                                                                    \
+  }
+#define XVEC X
+  MJOPTION_FIELDS
+#undef XVEC
+#undef X
+      (void)
+      nuser_body;
+  return found;
+}
+
 ModelPtr CheckedModel(mjModel* m, const std::string& label, std::string* error) {
   std::string step_warning;
   if (std::string e = CheckTimestep(m->opt.timestep, &step_warning); !e.empty()) {
+    mj_deleteModel(m);
+    *error = label + ": " + e;
+    return nullptr;
+  }
+  if (std::string e = FindNonFiniteModelValue(m); !e.empty()) {
     mj_deleteModel(m);
     *error = label + ": " + e;
     return nullptr;
@@ -213,6 +348,11 @@ ModelPtr LoadModel(const std::string& path, std::string* error) {
   InstallMuJoCoMessageHandlers();
   if (const std::string why = CheckInputFile(path); !why.empty()) {
     *error = path + ": " + why;
+    return nullptr;
+  }
+  if (std::string e = CheckSceneFiles(path, std::filesystem::path(path).parent_path(), 0);
+      !e.empty()) {
+    *error = e;
     return nullptr;
   }
   // MuJoCo passes value="" to plugins as if the key were absent (silently the default).

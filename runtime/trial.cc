@@ -64,8 +64,9 @@ std::string TrialConfig::Validate() const {
   if (const std::string e = law.Validate(); !e.empty()) return e;
   if (!Finite(control_period_s) || control_period_s < 0.002 || control_period_s > 10)
     return RangeError("control_period_s", control_period_s, "[0.002, 10] s");
-  if (!Finite(approach_force_n) || approach_force_n <= 0 || approach_force_n > 50)
-    return RangeError("approach_force_n", approach_force_n, "(0, 50] N");
+  // Below 0.05 N the approach would stop on the first touch (F/T noise is of that order).
+  if (!Finite(approach_force_n) || approach_force_n < 0.05 || approach_force_n > 50)
+    return RangeError("approach_force_n", approach_force_n, "[0.05, 50] N");
   if (!Finite(approach_speed_m_s) || approach_speed_m_s <= 0 || approach_speed_m_s > 0.1)
     return RangeError("approach_speed_m_s", approach_speed_m_s, "(0, 0.1] m/s");
   if (!Finite(move_speed_m_s) || move_speed_m_s <= 0 || move_speed_m_s > 0.5)

@@ -12,6 +12,7 @@
 #include <memory>
 #include <vector>
 
+#include "common/output_file.h"
 #include "runtime/mujoco_model.h"
 #include "viewer/overlay.h"
 
@@ -190,8 +191,8 @@ void StepOnce(Session* s) {
   }
 }
 
-bool WritePng(const std::string& path, int width, int height,
-              const std::vector<unsigned char>& rgb) {
+bool WritePng(const std::string& path, int width, int height, const std::vector<unsigned char>& rgb,
+              std::string* error) {
   // OpenGL rows run bottom-up; PNG rows top-down.
   std::vector<unsigned char> flipped(rgb.size());
   const size_t row = static_cast<size_t>(width) * 3;
@@ -200,7 +201,18 @@ bool WritePng(const std::string& path, int width, int height,
               rgb.begin() + static_cast<long>(row * (height - y)),
               flipped.begin() + static_cast<long>(row * y));
   }
-  return stbi_write_png(path.c_str(), width, height, 3, flipped.data(), static_cast<int>(row)) != 0;
+  // Encoded in memory, then written whole (a full disk leaves no 0-byte PNG behind).
+  std::string png;
+  auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                               static_cast<size_t>(size));
+  };
+  if (stbi_write_png_to_func(append, &png, width, height, 3, flipped.data(),
+                             static_cast<int>(row)) == 0) {
+    *error = path + ": cannot encode the PNG";
+    return false;
+  }
+  return WriteWholeFile(path, png, error);
 }
 
 void ListScenes() {
@@ -273,7 +285,23 @@ int RunViewer(const ViewerOptions& options) {
   mjv_defaultScene(&s->scn);
   mjr_defaultContext(&s->con);
   mjv_makeScene(s->m, &s->scn, 6000);
+  if (offscreen) {
+    // The off-screen buffer the model asks for may be smaller than the requested image.
+    model->vis.global.offwidth = std::max(model->vis.global.offwidth, options.width);
+    model->vis.global.offheight = std::max(model->vis.global.offheight, options.height);
+  }
   mjr_makeContext(s->m, &s->con, mjFONTSCALE_150);
+  if (offscreen && (s->con.offWidth < options.width || s->con.offHeight < options.height)) {
+    std::fprintf(stderr,
+                 "ssc view: --width %d --height %d: this OpenGL renders off-screen images up to "
+                 "%dx%d; ask for at most that\n",
+                 options.width, options.height, s->con.offWidth, s->con.offHeight);
+    mjr_freeContext(&s->con);
+    mjv_freeScene(&s->scn);
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    return 2;
+  }
   s->cam.type = mjCAMERA_FREE;
   // Arm scenes: the base of the first joint's chain; gantry and probe scenes have none.
   if (mj_name2id(s->m, mjOBJ_JOINT, "gantry_x") < 0 && s->m->njnt > 0 &&
@@ -297,8 +325,9 @@ int RunViewer(const ViewerOptions& options) {
     Render(s, viewport, -1);  // no real-time factor: nothing ran in real time
     std::vector<unsigned char> rgb(static_cast<size_t>(w) * h * 3);
     mjr_readPixels(rgb.data(), nullptr, viewport, &s->con);
-    if (!WritePng(options.screenshot, w, h, rgb)) {
-      std::fprintf(stderr, "ssc view: cannot write %s\n", options.screenshot.c_str());
+    std::string write_error;
+    if (!WritePng(options.screenshot, w, h, rgb, &write_error)) {
+      std::fprintf(stderr, "ssc view: %s\n", write_error.c_str());
       code = 1;
     } else {
       const mjtNum* p = s->d->site_xpos + 3 * s->tool_site;

@@ -36,7 +36,7 @@ int RunCompareCommand(int argc, char** argv) {
   cmd.Integer("average", &average, "host moving-average window applied to the log, samples",
               NumberRange::Closed(1, 1000));
   cmd.Number("tcp-offset", &tcp_mm, "tool centre point along the tool0 z axis", "mm",
-             NumberRange::Closed(0, 1000));
+             NumberRange::Closed(0, kMaxTcpOffsetM * 1e3));
   cmd.Choice("log-frame", &frame,
              "frame of the lab log's poses: ROS base_link (the lab's tf) or the UR base (RTDE)",
              {"base_link", "base"});

@@ -25,7 +25,7 @@ void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* c, TrialSettings* s)
   cmd->Number("timeout", &c->timeout_s, "follow-phase time limit, simulated", "s",
               NumberRange::Positive(3600));
   cmd->Number("approach-force", &c->approach_force_n, "start-up compression read on the F/T", "N",
-              NumberRange::Positive(50));
+              NumberRange::Closed(0.05, 50));
   cmd->Number("start-offset", &s->start_offset_mm,
               "disk: start point distance east of the disk centre", "mm",
               NumberRange::Closed(0, 1000));

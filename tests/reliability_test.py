@@ -1,0 +1,273 @@
+"""Reliability of the command line against its own outputs and the data options act on: sweeps
+that trust no row on resume and run one at a time per folder, writes that fail whole (a file-size
+limit, SIGTERM), scenes with non-finite numbers or a FIFO include, maps that are not text, and
+compare options checked against the log. Each case ends quickly with a clear message or the
+right result; nothing is left behind."""
+import csv
+import glob
+import io
+import os
+import resource
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+
+BIN = os.environ.get("SSC_BIN_DIR", os.path.join(os.path.dirname(__file__), "..", "build", "bin"))
+SRC = os.path.abspath(os.environ.get("SSC_SOURCE_DIR",
+                                     os.path.join(os.path.dirname(__file__), "..")))
+SSC = os.path.abspath(os.path.join(BIN, "ssc"))
+# Short trials: the follow phase is cut at 1 s simulated (rows still whole trials).
+SWEEP = ["sweep", "--pref", "100", "--beta", "2", "--step", "7.5", "--timeout", "1",
+         "--threads", "1", "--no-plot", "--no-progress"]
+
+
+def run(args, timeout=120, **kw):
+    return subprocess.run([SSC] + args, capture_output=True, text=True, timeout=timeout, **kw)
+
+
+def rows(csv_path):
+    with open(csv_path) as f:
+        return list(csv.DictReader(f))
+
+
+def leftovers(folder):
+    return [p for p in glob.glob(os.path.join(folder, "**", "*"), recursive=True)
+            if ".tmp" in os.path.basename(p) or p.endswith(".lock")]
+
+
+class ReliabilityTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp(prefix="ssc_reliability_")
+        cls.scenes = []
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+        for s in cls.scenes:
+            if os.path.exists(s):
+                os.remove(s)
+
+    def scene_with(self, old, new, name):
+        """A copy of the gantry scene beside the original (its includes resolve), one change."""
+        with open(os.path.join(SRC, "scenes", "disk_benchmark_gantry.xml")) as f:
+            xml = f.read()
+        self.assertIn(old, xml)
+        path = os.path.join(SRC, "scenes", f".reliability_{os.getpid()}_{name}.xml")
+        with open(path, "w") as f:
+            f.write(xml.replace(old, new, 1))
+        self.scenes.append(path)
+        return path
+
+    # Sweeps trust no row.
+
+    def test_resume_reruns_edited_duplicated_and_impossible_rows(self):
+        out = os.path.join(self.tmp, "resume")
+        r = run(SWEEP + ["--repeats", "2", "--out", out])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        path = os.path.join(out, "sweep.csv")
+        with open(path) as f:
+            header, row1, row2 = f.read().splitlines()
+        good = rows(path)
+        f1, f2 = row1.split(","), row2.split(",")
+        edited_seed = ",".join(f1[:5] + [str(int(f1[5]) + 1)] + f1[6:])
+        nan_success = ",".join(f2[:6] + ["success", "nan"] + f2[8:])
+        with open(path, "w") as f:
+            f.write("\n".join([header, edited_seed, nan_success, row2, row2]) + "\n")
+        r = run(SWEEP + ["--repeats", "2", "--out", out])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertRegex(r.stderr, r"line 2 .*seed %d is not this grid point's seed %s"
+                         % (int(f1[5]) + 1, f1[5]))
+        self.assertRegex(r.stderr, r"line 3 .*success with s_mm = nan")
+        self.assertRegex(r.stderr, r"line 5 .*second row for the trial of line 4")
+        self.assertIn("1 already in", r.stdout)  # the one good row kept, the other rerun
+        again = rows(path)
+        self.assertEqual(sorted((x["repeat"], x["seed"]) for x in again),
+                         sorted((x["repeat"], x["seed"]) for x in good))
+        self.assertEqual(leftovers(out), [])
+
+    def test_two_sweeps_on_one_folder_and_sigterm_mid_sweep(self):
+        out = os.path.join(self.tmp, "shared")
+        args = [SSC] + SWEEP + ["--repeats", "4", "--out", out]
+        first = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        csv_path = os.path.join(out, "sweep.csv")
+        deadline = time.time() + 120
+        while time.time() < deadline and not (os.path.exists(csv_path + ".lock") and
+                                              os.path.exists(csv_path)):
+            time.sleep(0.05)
+        second = run(SWEEP + ["--repeats", "4", "--out", out])
+        self.assertEqual(second.returncode, 1, second.stderr)
+        self.assertIn("being written by another sweep (pid %d" % first.pid, second.stderr)
+        # SIGTERM once a row is in: the finished rows stay, whole; the lock goes.
+        while time.time() < deadline and len(rows(csv_path)) < 1:
+            time.sleep(0.05)
+        first.send_signal(signal.SIGTERM)
+        _, err = first.communicate(timeout=120)
+        self.assertEqual(first.returncode, 130, err)
+        kept = rows(csv_path)
+        self.assertGreaterEqual(len(kept), 1)
+        self.assertLess(len(kept), 4, "the sweep ended before SIGTERM: no interruption tested")
+        with open(csv_path) as f:
+            self.assertTrue(f.read().endswith("\n"))
+        self.assertEqual(leftovers(out), [])
+        r = run(SWEEP + ["--repeats", "4", "--out", out])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        final = rows(csv_path)
+        self.assertEqual(sorted(int(x["repeat"]) for x in final), [0, 1, 2, 3])
+        self.assertEqual([x["seed"] for x in final[:len(kept)]], [x["seed"] for x in kept])
+
+    # Writes fail whole.
+
+    def limited(self, limit_bytes):
+        def set_limit():
+            resource.setrlimit(resource.RLIMIT_FSIZE, (limit_bytes, limit_bytes))
+        return set_limit
+
+    def test_a_file_size_limit_fails_the_trial_whole(self):
+        out = os.path.join(self.tmp, "fsize_trial")
+        r = run(["trial", "--no-plot", "--timeout", "1", "--out", out],
+                preexec_fn=self.limited(4096))
+        self.assertEqual(r.returncode, 1, r.stderr)  # not 153 (SIGXFSZ)
+        self.assertIn("trial.csv: cannot write: File too large", r.stderr)
+        self.assertFalse(os.path.exists(os.path.join(out, "trial.csv")))
+        self.assertEqual(leftovers(self.tmp + "/fsize_trial"), [])
+
+    def test_a_file_size_limit_keeps_the_sweep_csv_whole(self):
+        out = os.path.join(self.tmp, "fsize_sweep")
+        r = run(SWEEP + ["--repeats", "3", "--out", out])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        csv_path = os.path.join(out, "sweep.csv")
+        with open(csv_path) as f:
+            before = f.read()
+        # Room for less than one more row: the next append fails with EFBIG.
+        r = run(SWEEP + ["--repeats", "5", "--out", out],
+                preexec_fn=self.limited(len(before) + 100))
+        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertIn("sweep.csv: cannot append a row: File too large", r.stderr)
+        with open(csv_path) as f:
+            self.assertEqual(f.read(), before)  # the partial row cut off again
+        self.assertEqual(leftovers(out), [])
+
+    def test_sigterm_during_a_trial_leaves_no_empty_folder(self):
+        out = os.path.join(self.tmp, "term_trial", "new")
+        p = subprocess.Popen([SSC, "trial", "--no-plot", "--timeout", "60", "--out", out],
+                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+        deadline = time.time() + 60
+        while time.time() < deadline and not os.path.isdir(out):
+            time.sleep(0.02)
+        self.assertTrue(os.path.isdir(out))
+        p.send_signal(signal.SIGTERM)
+        p.communicate(timeout=60)
+        self.assertEqual(p.returncode, -signal.SIGTERM)
+        self.assertFalse(os.path.exists(os.path.dirname(out)))
+
+    # Scenes.
+
+    def test_a_fifo_include_is_refused_without_blocking(self):
+        d = os.path.join(self.tmp, "fifo_scene")
+        os.makedirs(d)
+        os.mkfifo(os.path.join(d, "part.xml"))
+        scene = os.path.join(d, "scene.xml")
+        with open(scene, "w") as f:
+            f.write('<mujoco>\n  <include file="part.xml"/>\n</mujoco>\n')
+        r = run(["trial", "--no-plot", "--scene", scene, "--out", d], timeout=30)
+        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertIn('scene.xml:2: <include file="part.xml">', r.stderr)
+        self.assertIn("not a regular file", r.stderr)
+
+    def test_a_nan_in_the_scene_is_refused_naming_the_element(self):
+        scene = self.scene_with('pos="0.65 0 0.005"', 'pos="nan 0 0.005"', "nan_disk")
+        r = run(["trial", "--no-plot", "--scene", scene, "--out", self.tmp], timeout=60)
+        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertIn("geom 'disk': geom_pos holds nan", r.stderr)
+
+    def test_a_vanishing_approach_force_is_refused(self):
+        r = run(["trial", "--approach-force", "1e-300"])
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertIn("--approach-force", r.stderr)
+
+    @unittest.skipUnless(shutil.which("xvfb-run"), "xvfb-run not installed")
+    def test_a_screenshot_has_the_size_asked_for(self):
+        png = os.path.join(self.tmp, "shot.png")
+        r = subprocess.run(["xvfb-run", "-a", SSC, "view", "--screenshot", png, "--width", "1920",
+                            "--height", "1080", "--time", "0.1"], capture_output=True, text=True,
+                           timeout=120)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(png, "rb") as f:
+            head = f.read(24)
+        self.assertEqual((int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")),
+                         (1920, 1080))
+
+    # Maps that are not text.
+
+    def test_binary_and_utf16_maps_are_refused_saying_why(self):
+        with open(os.path.join(SRC, "data", "published", "success_map_dl5.csv"), "rb") as f:
+            text = f.read()
+        cases = {"utf16": (b"\xff\xfe" + text.decode().encode("utf-16-le"), "UTF-16"),
+                 "nul": (text[:40] + b"\0" + text[40:], "NUL"),
+                 "random": (os.urandom(200_000), "not text")}
+        for name, (data, why) in cases.items():
+            path = os.path.join(self.tmp, f"map_{name}.csv")
+            with open(path, "wb") as f:
+                f.write(data)
+            r = subprocess.run([SSC, "validate", "--map", path, "--out",
+                                os.path.join(self.tmp, f"v_{name}")], capture_output=True,
+                               timeout=60)
+            err = r.stderr.decode("utf-8", "replace")
+            self.assertNotEqual(r.returncode, 0, name)
+            self.assertIn(path, err, name)
+            self.assertRegex(err, "UTF-16|NUL|binary", name)
+            self.assertLess(len(r.stderr), 600, name)
+            self.assertTrue(all(32 <= b < 127 or b in (9, 10) for b in r.stderr), (name, err))
+            self.assertFalse(os.path.exists(os.path.join(self.tmp, f"v_{name}")), name)
+
+
+class CompareOptionsTest(unittest.TestCase):
+    """compare's options checked against the log: a twin trial written as the lab records it."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp(prefix="ssc_reliability_cmp_")
+        cls.rec = os.path.join(cls.tmp, "rec")
+        r = run(["trial", "--no-plot", "--out", os.path.join(cls.tmp, "trial"), "--robot-log",
+                 cls.rec], timeout=300)
+        assert r.returncode == 0, r.stderr
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+    def compare(self, *extra):
+        return run(["compare", self.rec, "--no-plot", "--out", os.path.join(self.tmp, "cmp")]
+                   + list(extra), timeout=300)
+
+    def test_a_tcp_offset_out_of_range_is_refused_in_mm(self):
+        r = self.compare("--tcp-offset", "1000")
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertIn("--tcp-offset", r.stderr)
+        self.assertIn("mm", r.stderr)
+
+    def test_a_replay_off_the_object_is_flagged_naming_the_options(self):
+        good = self.compare()
+        self.assertEqual(good.returncode, 0, good.stderr)
+        self.assertNotIn("replay disagrees", good.stderr)
+        off = self.compare("--tcp-offset", "100")
+        self.assertEqual(off.returncode, 0, off.stderr)
+        self.assertIn("the replay disagrees with the log", off.stderr)
+        for option in ("--tcp-offset", "--log-frame", "--object-pose"):
+            self.assertIn(option, off.stderr)
+
+    def test_windows_longer_than_the_log_are_refused(self):
+        r = self.compare("--offset-window", "59")
+        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertIn("--offset-window", r.stderr)
+        r = self.compare("--average", "1000")
+        self.assertIn("--average", r.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()
