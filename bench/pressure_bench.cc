@@ -8,6 +8,8 @@
 //   held      the same scene and state with the controls held (no controller): the reference
 //   -sensor   held, without the pressure sensor (its plugin removed through mjSpec)
 //   floor     held, without the sensor and without the lip's slide joints (a rigid lip)
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -166,6 +168,17 @@ int main(int argc, char** argv) {
   cmd.Integer("block", &block_arg, "steps per block", ssc::NumberRange::Closed(100, 1e7));
   cmd.Integer("rounds", &rounds_arg, "rounds of blocks (medians over them)",
               ssc::NumberRange::Closed(1, 1000));
+  // Bounded work: each scene steps (rounds + 1) x 5 blocks (the trial twice, three variants);
+  // beyond 2e6 steps per variant a run takes hours on one core.
+  cmd.Check([&]() -> std::string {
+    const double per_variant = static_cast<double>(block_arg) * static_cast<double>(rounds_arg + 1);
+    if (per_variant > 2e6) {
+      return "--block " + std::to_string(block_arg) + " x (--rounds " + std::to_string(rounds_arg) +
+             " + 1 warm-up) = " + ssc::FormatNumber(per_variant) +
+             " steps per variant, more than 2e6 (hours of stepping): use fewer";
+    }
+    return "";
+  });
   if (int rc = 0; !cmd.Parse(argc - 1, argv + 1, &rc)) return rc;
   const int block = static_cast<int>(block_arg), rounds = static_cast<int>(rounds_arg);
   std::vector<std::unique_ptr<Scene>> scenes;
@@ -205,8 +218,14 @@ int main(int argc, char** argv) {
     scenes.push_back(std::move(s));
   }
 
-  // Warm-up, then rounds of alternating blocks.
+  // Warm-up, then rounds of alternating blocks; progress on stderr (a terminal only).
+  const bool progress = isatty(STDERR_FILENO);
   for (int r = -1; r < rounds; ++r) {
+    if (progress) {
+      std::fprintf(stderr, "\rbench: %s %d/%d ", r < 0 ? "warm-up" : "round", r < 0 ? 0 : r + 1,
+                   rounds);
+      std::fflush(stderr);
+    }
     for (auto& s : scenes) {
       // Trial variant: first plain (the headline cost), then with MuJoCo's timers on and the
       // control callback timed (the breakdown; timing adds a little to each step).
@@ -247,6 +266,7 @@ int main(int argc, char** argv) {
       }
     }
   }
+  if (progress) std::fprintf(stderr, "\n");
 
   const Scene& ref = *scenes.front();
   std::printf(
