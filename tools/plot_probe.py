@@ -21,6 +21,11 @@ def read(path):
     return {k: [float(r[k]) for r in rows] for k in rows[0]}
 
 
+def same_curve(a, b, rel=1e-3):
+    """Whether two chambers' curves coincide (within `rel` of the larger value, or 1e-6 Pa)."""
+    return all(abs(x - y) <= rel * max(abs(x), abs(y)) + 1e-6 for x, y in zip(a, b))
+
+
 def main():
     if len(sys.argv) != 4:
         sys.exit(__doc__)
@@ -35,18 +40,29 @@ def main():
                label="mean P (noiseless)")
     a.semilogy(off, [max(v, floor) for v in edge["pbar_pa"]], "k.", ms=4,
                label="mean P (sensor output)")
-    for c, col in zip(range(1, 5), ["C0", "C1", "C2", "C3"]):
-        a.semilogy(off, [max(v, floor) for v in edge[f"static_p{c}_pa"]], "-", color=col,
-                   lw=1, label=f"chamber {c}")
+    # Chambers that read the same (a straight edge is symmetric: 1 = 4 and 2 = 3 when the edge
+    # runs along the tool's x axis) share one line and one legend entry, so none hides another.
+    shown = []
+    for c in range(1, 5):
+        values = edge[f"static_p{c}_pa"]
+        twin = next((g for g in shown if same_curve(values, edge[f"static_p{g[0]}_pa"])), None)
+        if twin:
+            twin.append(c)
+        else:
+            shown.append([c])
+    for group, col in zip(shown, ["C0", "C1", "C2", "C3"]):
+        label = ("chamber " if len(group) == 1 else "chambers ") + " = ".join(map(str, group))
+        a.semilogy(off, [max(v, floor) for v in edge[f"static_p{group[0]}_pa"]], "-", color=col,
+                   lw=1, label=label)
     targets = [(0.7, 40), (2.5, 100), (3.2, 200)]
     a.errorbar([t[0] for t in targets], [t[1] for t in targets], xerr=0.3, fmt="rs",
                label="published disk results (+-0.3 mm)")
     a.axhline(10000, color="r", ls=":", lw=1)
-    a.text(off[0], 11000, "grasp 10 kPa", color="r", fontsize=8)
+    a.text(off[0], 11000, "grasp 10 kPa", color="r", fontsize=8, va="bottom")
     a.set_xlabel("cup centre inside the edge (mm)")
     a.set_ylabel("vacuum (Pa)")
     a.set_title("straight edge: pressures")
-    a.legend(fontsize=7, loc="upper left")
+    a.legend(fontsize=7, loc="lower right")  # the lines rise to the right: that corner is free
     a.grid(True, which="both", alpha=0.3)
 
     # Differential magnitude across the edge.

@@ -13,6 +13,23 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
+# What a simulator setting changes (its colour in the cost-fidelity panel), in legend order.
+KIND_COLOURS = {"default": "red", "reference": "black", "rays": "C0", "sensor": "C1",
+                "step": "C2", "lip": "C4", "integrator": "C5", "scene": "C6", "other": "C7"}
+MARKERS = ["o", "s", "^", "D", "v", "P", "X"]
+
+
+def setting_kind(name, is_default):
+    if is_default or name.startswith("default"):
+        return "default"
+    for kind, words in (("reference", ["reference"]), ("rays", ["rays"]), ("sensor", ["Hz"]),
+                        ("step", ["ms step"]), ("lip", ["lip segments"]),
+                        ("integrator", ["Euler", "RK4", "implicit"]), ("scene", ["scene"])):
+        if any(w in name for w in words):
+            return kind
+    return "other"
+
+
 def main():
     if len(sys.argv) != 4:
         sys.exit(__doc__)
@@ -56,31 +73,43 @@ def main():
         a.set_ylabel(ylabel)
         a.set_title(title)
         a.grid(True, alpha=0.3)
-        a.legend(fontsize=7.5)
-    # Simulator settings: many sit on nearly the same point, so each label goes into a column
-    # right of the axes, in the order of its point's error, joined to the point by a thin line.
+    # One legend for both panels, under them: inside either it would cover lines.
+    handles, labels = {}, []
+    for a in ax[:2]:
+        for h, lab in zip(*a.get_legend_handles_labels()):
+            if lab not in handles:
+                handles[lab] = h
+                labels.append(lab)
+    fig.legend([handles[lab] for lab in labels], labels, loc="upper center", fontsize=8,
+               ncol=4, bbox_to_anchor=(0.3, 0.0), frameon=False)
+    # Simulator settings: many sit on nearly the same point, so each has its own marker (colour:
+    # what the setting changes; shape: which value) and the legend beside the axes names it.
     a = ax[2]
-    pts = []
+    kind_of = {}
     for r in sim:
+        kind_of[r["setting"]] = setting_kind(r["setting"], r["is_default"] == "1")
+    kinds = sorted(set(kind_of.values()), key=list(KIND_COLOURS).index)
+    used = {k: 0 for k in kinds}
+    rows = sorted(sim, key=lambda r: (kinds.index(kind_of[r["setting"]]),
+                                      -float(r["rms_log10_vs_reference"])))
+    for r in rows:
         x, y = float(r["wall_per_sim_s"]), max(float(r["rms_log10_vs_reference"]), 1e-4)
-        is_default = r["is_default"] == "1"
-        a.plot(x, y, "s" if is_default else "o", ms=10 if is_default else 6,
-               color="red" if is_default else "C0", zorder=3)
-        pts.append((y, x, r["setting"], is_default))
-    pts.sort(key=lambda p: -p[0])
-    for i, (y, x, name, is_default) in enumerate(pts):
-        label_y = 1.0 - (i + 0.5) / len(pts)
-        a.annotate(name, xy=(x, y), xycoords="data", xytext=(1.04, label_y),
-                   textcoords="axes fraction", fontsize=7.5, va="center",
-                   color="red" if is_default else "black",
-                   arrowprops=dict(arrowstyle="-", lw=0.4, color="0.6", shrinkA=0, shrinkB=3))
+        kind = kind_of[r["setting"]]
+        marker = MARKERS[used[kind] % len(MARKERS)]
+        used[kind] += 1
+        is_default = kind == "default"
+        a.plot(x, y, marker, ms=11 if is_default else 7, color=KIND_COLOURS[kind],
+               mec="black" if is_default else "none", zorder=4 if is_default else 3,
+               alpha=0.9, label=r["setting"], ls="none")
+    a.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7.5, frameon=False,
+             borderaxespad=0)
     a.set_xscale("log")
     a.set_yscale("log")
     a.set_xlabel("wall time per simulated second (s)")
     a.set_ylabel("pressure error vs reference (RMS log10)")
     a.set_title("simulator: cost vs fidelity (red: default)")
     a.grid(True, which="both", alpha=0.3)
-    fig.tight_layout(rect=(0, 0, 0.83, 1))
+    fig.tight_layout(rect=(0, 0.04, 0.83, 1))
     fig.savefig(sys.argv[3], dpi=100, bbox_inches="tight")
 
 

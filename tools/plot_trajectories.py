@@ -5,6 +5,7 @@ usage: plot_trajectories.py out.png trial.csv [trial.csv ...]
        (trial.csv files written by `ssc trial`; the disk: radius 35 mm centred at (650, 0) mm)
 """
 import csv
+import json
 import math
 import os
 import sys
@@ -31,6 +32,21 @@ def read(path):
     return xs, ys, pbar
 
 
+def trial_label(path):
+    """The trial's parameters and outcome from the summary.json beside trial.csv (ssc trial
+    writes both); else the file's name."""
+    summary = os.path.join(os.path.dirname(os.path.abspath(path)), "summary.json")
+    try:
+        with open(summary) as f:
+            s = json.load(f)
+        p = s["parameters"]
+        label = (f"P_ref {p['pref_pa']:g} Pa, β {p['beta']:g}, ΔL {p['step_mm']:g} mm, "
+                 f"seed {s['seed']}")
+        return label + (f": {s['outcome']}" if s.get("outcome") else "")
+    except (OSError, ValueError, KeyError, TypeError):
+        return os.path.basename(path)
+
+
 def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
@@ -41,7 +57,7 @@ def main():
             color="0.85", label="disk (R = 35 mm)")
     for i, path in enumerate(paths):
         xs, ys, _ = read(path)
-        label = os.path.basename(os.path.dirname(os.path.abspath(path))) or path
+        label = trial_label(path)
         ax.plot(xs, ys, "-", lw=1.2, color=f"C{i % 10}", label=label)
         ax.plot(xs[0], ys[0], "o", color=f"C{i % 10}")
         # The cup to scale at the start: body and opening.

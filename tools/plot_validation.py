@@ -13,9 +13,25 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib.colors import ListedColormap  # noqa: E402
+from matplotlib.cm import ScalarMappable  # noqa: E402
+from matplotlib.colors import BoundaryNorm, ListedColormap, Normalize  # noqa: E402
 
 CLASS_VALUE = {"<=1": 0, "2": 1, "3": 2}
+
+
+def colour_bar(fig, ax, panel, class_cmap):
+    """What the panel's colours mean, beside it."""
+    if panel == 0:
+        mappable = ScalarMappable(BoundaryNorm([-0.5, 0.5, 1.5, 2.5], 3), class_cmap)
+        bar = fig.colorbar(mappable, ax=ax, fraction=0.046, pad=0.04, ticks=[0, 1, 2],
+                           label="successes of 3")
+        bar.ax.set_yticklabels(["<=1", "2", "3"])
+    elif panel in (1, 3):
+        fig.colorbar(ScalarMappable(Normalize(0, 1), plt.cm.RdYlGn), ax=ax, fraction=0.046,
+                     pad=0.04, label="success rate")
+    else:
+        fig.colorbar(ScalarMappable(Normalize(-3, 3), plt.cm.coolwarm), ax=ax, fraction=0.046,
+                     pad=0.04, label="twin - published (successes of 3)")
 
 
 def main(cells_csv, out_png):
@@ -23,7 +39,7 @@ def main(cells_csv, out_png):
     steps = sorted({float(r["step_mm"]) for r in rows})
     surface = any(not math.isnan(float(r.get("surface_p", "nan") or "nan")) for r in rows)
     panels = 4 if surface else 3
-    fig, axes = plt.subplots(len(steps), panels, figsize=(4.4 * panels, 4.2 * len(steps)),
+    fig, axes = plt.subplots(len(steps), panels, figsize=(5.0 * panels, 4.2 * len(steps)),
                              squeeze=False)
     cmap = ListedColormap(["#d7301f", "#fdae61", "#1a9850"])
     for si, step in enumerate(steps):
@@ -78,6 +94,7 @@ def main(cells_csv, out_png):
             ax.set_ylabel("beta")
             ax.set_title(f"dL {step:g} mm: {titles[k]}", fontsize=10)
             ax.set_aspect("equal")
+            colour_bar(fig, ax, k, cmap)
     fig.text(0.5, 0.005, "small letters: the twin's most common failure (I off the edge, II "
              "grasped); black frame: opposite cell", ha="center", fontsize=9)
     fig.tight_layout(rect=(0, 0.02, 1, 1))
