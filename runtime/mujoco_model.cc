@@ -23,6 +23,42 @@
 namespace ssc {
 namespace {
 
+// MuJoCo passes tinyxml2's parse error on as it is ("XML parse error 14:\nError=XML_ERROR_
+// MISMATCHED_ELEMENT ErrorID=14 (0xe) Line number=3: XMLElement name=body"). Said plainly:
+// "line 3: malformed XML: a closing tag does not match the open element <body>". Other
+// messages are returned unchanged.
+std::string ReadableXmlError(const std::string& message) {
+  const size_t at = message.find("Error=XML_ERROR_");
+  if (at == std::string::npos) return message;
+  size_t end = message.find_first_of(" \n", at);
+  const std::string name = message.substr(at + 16, end == std::string::npos ? end : end - at - 16);
+  std::string out = "malformed XML";
+  if (const size_t line = message.find("Line number="); line != std::string::npos) {
+    out = "line " + std::to_string(std::atoi(message.c_str() + line + 12)) + ": " + out;
+  }
+  std::string element;
+  if (const size_t e = message.find("XMLElement name="); e != std::string::npos) {
+    element = message.substr(e + 16);
+    element = element.substr(0, element.find_first_of(" \n"));
+  }
+  static const std::pair<const char*, const char*> kPlain[] = {
+      {"MISMATCHED_ELEMENT", "a closing tag does not match the open element"},
+      {"PARSING_ELEMENT", "cannot read the element"},
+      {"PARSING_ATTRIBUTE", "cannot read an attribute of the element"},
+      {"PARSING_TEXT", "cannot read the text"},
+      {"PARSING_COMMENT", "an unfinished comment"},
+      {"EMPTY_DOCUMENT", "the file holds no XML"},
+      {"PARSING", "cannot read the file as XML"},
+  };
+  std::string what = name;  // an unknown code keeps tinyxml2's name
+  for (const auto& [code, plain] : kPlain) {
+    if (name == code) what = plain;
+  }
+  out += ": " + what;
+  if (!element.empty()) out += " <" + element + ">";
+  return out;
+}
+
 // MuJoCo reports plugin init failures through mju_warning; capture them while loading.
 std::mutex g_warning_mutex;
 std::string* g_captured = nullptr;
@@ -335,7 +371,7 @@ ModelPtr LoadModelFromTexts(const ModelTexts& texts, const std::string& label, s
   }
   mj_deleteVFS(&vfs);
   if (m == nullptr) {
-    *error = label + ": " + buffer;
+    *error = label + ": " + ReadableXmlError(buffer);
     if (!warnings.empty() && error->find(warnings) == std::string::npos) {
       *error += " (" + warnings + ")";
     }
@@ -374,7 +410,7 @@ ModelPtr LoadModel(const std::string& path, std::string* error) {
     }
   }
   if (m == nullptr) {
-    *error = path + ": " + buffer;
+    *error = path + ": " + ReadableXmlError(buffer);
     if (!warnings.empty()) *error += " (" + warnings + ")";
     return nullptr;
   }

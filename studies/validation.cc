@@ -1,6 +1,7 @@
 #include "studies/validation.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <limits>
@@ -24,6 +25,8 @@ std::string Trim(const std::string& s) {
   const std::size_t a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
   return a == std::string::npos ? "" : s.substr(a, b - a + 1);
 }
+
+constexpr char kUtf8Bom[] = "\xEF\xBB\xBF";
 
 std::vector<std::string> SplitComma(const std::string& line) {
   std::vector<std::string> cells;
@@ -123,6 +126,9 @@ bool ReadPublishedMap(const std::string& path, std::vector<MapCell>* cells, std:
   std::set<CellKey> seen;
   while (std::getline(f, line)) {
     ++line_no;
+    // A spreadsheet's UTF-8 byte-order mark before the header (line ends: Trim drops the \r of
+    // CRLF).
+    if (line_no == 1 && line.rfind(kUtf8Bom, 0) == 0) line.erase(0, sizeof(kUtf8Bom) - 1);
     if (Trim(line).empty()) continue;
     const std::vector<std::string> c = SplitComma(line);
     auto where = [&](int column) {

@@ -53,6 +53,9 @@ LONG_LINE = os.path.join(TMP, "one_line.csv")
 with open(LONG_LINE, "w") as f:
     f.write("t_s,x_m,y_m,z_m," + "9" * 20_000_000)  # 20 MB, no newline
 STEP_TINY = scene_with('timestep="0.002"', 'timestep="1e-9"', "dttiny")
+MALFORMED_XML = os.path.join(TMP, "malformed.xml")  # <body> never closed
+with open(MALFORMED_XML, "w") as f:
+    f.write("<mujoco>\n<worldbody>\n<body>\n</worldbody>\n</mujoco>\n")
 FIFO = os.path.join(TMP, "pipe.csv")
 os.mkfifo(FIFO)
 DANGLING = os.path.join(TMP, "dangling")
@@ -157,6 +160,8 @@ CASES = [
     (["trial", "--scene", STEPNEG, "--no-plot", "--out", TMP], 1, "time step"),
     (["trial", "--scene", EMPTY_CFG, "--no-plot", "--out", TMP], 1, "empty value"),
     (["trial", "--scene", HEX_CFG, "--no-plot", "--out", TMP], 1, "0x10"),
+    (["trial", "--scene", MALFORMED_XML, "--no-plot", "--out", TMP], 1,
+     "malformed.xml: line 3: malformed XML: a closing tag does not match the open element <body>"),
     (["sweep", "--pref", "40,70,"], 2, "stray comma"),
     (["sweep", "--pref", ",40"], 2, "empty"),
     (["sweep", "--pref", "40,,70"], 2, "empty"),

@@ -130,6 +130,24 @@ TEST(PublishedMapTest, BadFilesNameTheLineAndTheRange) {
   EXPECT_FALSE(ReadPublishedMap("/nonexistent/map.csv", &cells, &error));
 }
 
+TEST(PublishedMapTest, ASpreadsheetsByteOrderMarkAndCrlfLineEndsAreRead) {
+  std::vector<MapCell> cells;
+  std::string error;
+  const std::string path =
+      WriteFile("ssc_bom_map.csv",
+                "\xEF\xBB\xBFstep_mm,beta,pref_pa,successes_of_3\r\n5,1,100,3\r\n"
+                "5,2,70,<=1\r\n");
+  ASSERT_TRUE(ReadPublishedMap(path, &cells, &error)) << error;
+  ASSERT_EQ(cells.size(), 2u);
+  EXPECT_EQ(cells[1].pref_pa, 70);
+  // A mark elsewhere is still wrong, and the message shows it.
+  const std::string marked = WriteFile("ssc_marked_map.csv",
+                                       "step_mm,\xC2\xA0"
+                                       "beta,pref_pa,successes_of_3\n5,1,100,3\n");
+  EXPECT_FALSE(ReadPublishedMap(marked, &cells, &error));
+  EXPECT_NE(error.find("\\xC2\\xA0beta"), std::string::npos) << error;
+}
+
 // The whole study on a tiny map with the ideal loop, whose outcomes the docs state: beta 0 never
 // corrects (failure I), beta 2 at P_ref 100 follows the disk. Publishing "3" for beta 0 makes
 // that cell opposite with agreement 0.

@@ -113,6 +113,18 @@ class ViewerTest(unittest.TestCase):
         # Pressed on the disk at 3 s: the overlay reads the sealed cup, not 0.
         self.assertGreater(p[0], 0)  # (last row checked is the follow one)
 
+    def test_scene_option_as_in_ssc_trial(self):
+        # ssc trial --scene X and ssc view --scene X: the same option.
+        shot = os.path.join(self.tmp, "gantry.png")
+        r = run([XVFB, "-a", "-s", "-screen 0 640x480x24", SSC, "view", "--scene",
+                 "disk_benchmark_gantry", "--screenshot", shot, "--time", "0.2", "--width", "320",
+                 "--height", "240"])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertTrue(os.path.getsize(shot) > 0)
+        r = run([SSC, "view", "disk_benchmark", "--scene", "disk_benchmark_gantry"])
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("name different scenes", r.stderr)
+
     def test_plugin_in_mujocos_python_viewer(self):
         scene = os.path.join(os.environ['SSC_SOURCE_DIR'], 'scenes', 'disk_benchmark.xml')
         script = textwrap.dedent(f"""

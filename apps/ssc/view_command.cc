@@ -15,15 +15,17 @@ namespace ssc {
 int RunViewCommand(int argc, char** argv) {
   cli::Command cmd(
       "view",
-      "ssc view [SCENE] [options]: the twin in a window with the trial controller running\n"
+      "ssc view [SCENE | --scene SCENE] [options]: the twin in a window with the trial controller "
+      "running\n"
       "(the same mjcb_control callback as headless trials: same seed, same trajectory).\n"
       "SCENE: a name under scenes/ (default disk_benchmark), a path, or a test object by\n"
       "name (disk_d10, hole_d06, corner_a090, volute, semicircle_strip, fillet, ...).");
   ViewerOptions v;
   TrialSettings settings;
-  std::string scene = "disk_benchmark";
+  std::string scene, scene_option;
   long width = 1280, height = 720;
   cmd.Positional("SCENE", &scene, "scene name, path or test object", false);
+  cmd.Text("scene", &scene_option, "the same as SCENE (as in ssc trial --scene)");
   AddLawOptions(&cmd, &v.config.law);
   cmd.Seed("seed", &v.config.seed, "sensor noise seed");
   cmd.Number("speed", &v.speed, "simulated seconds per wall second at start (- / = change it)", "",
@@ -36,6 +38,11 @@ int RunViewCommand(int argc, char** argv) {
   cmd.Integer("height", &height, "image height, px", NumberRange::Closed(16, 8192));
   AddTrialSettingOptions(&cmd, &v.config, &settings);
   if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
+  if (!scene.empty() && !scene_option.empty() && scene != scene_option) {
+    return cmd.Fail("SCENE '" + scene + "' and --scene '" + scene_option +
+                    "' name different scenes: give one");
+  }
+  if (scene.empty()) scene = scene_option.empty() ? "disk_benchmark" : scene_option;
   std::string error;
   v.width = static_cast<int>(width);
   v.height = static_cast<int>(height);
