@@ -1,5 +1,6 @@
 #include "runtime/trial.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -62,6 +63,7 @@ const char* PhaseName(TrialPhase phase) {
 
 std::string TrialConfig::Validate() const {
   if (const std::string e = law.Validate(); !e.empty()) return e;
+  if (const std::string e = controller.Validate(); !e.empty()) return e;
   if (!Finite(control_period_s) || control_period_s < 0.002 || control_period_s > 10)
     return RangeError("control_period_s", control_period_s, "[0.002, 10] s");
   // Below 0.05 N the approach would stop on the first touch (F/T noise is of that order).
@@ -137,6 +139,10 @@ std::unique_ptr<ContourTrial> ContourTrial::Create(const mjModel* m, mjData* d,
     return nullptr;
   }
   trial->Reset();
+  if (!trial->controller_) {
+    *error = "controller '" + config.controller.name + "' could not be made";
+    return nullptr;
+  }
   if (!trial->active_) {
     // Bind once more to get the servo's reason.
     trial->servo_->Init(m, d, trial->tool_site_, error);
@@ -168,6 +174,9 @@ void ContourTrial::Reset() {
   result_ = TrialResult();
   last_step_ = ContourStep{};
   awaiting_step_ = false;
+  command_z_ = 0;
+  lifted_since_s_ = -1;
+  controller_ = config_.controller.Make({config_.law, config_.control_period_s});
   if (servo_) {
     std::string ignored;
     active_ = servo_->Init(m_, d_, tool_site_, &ignored);
@@ -258,17 +267,12 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
   if (!active_) return;
   const double t = d_->time;
   const Vec3 tool = servo_->Measured(d_);
-  if (phase_ == TrialPhase::kMoveToStart || phase_ == TrialPhase::kFollow) {
-    // The lip's footprint drags on the object while the body slides over it.
-    const mjtNum* R = d_->site_xmat + 9 * tool_site_;
-    AdvanceLipShear(config_.effects.lip,
-                    WorldToTool(R, tool[0] - last_tool_[0], tool[1] - last_tool_[1]), &lip_shear_);
-  }
+  if (phase_ == TrialPhase::kMoveToStart || phase_ == TrialPhase::kFollow) TrackLipShear(tool);
   last_tool_ = tool;
   if (step_pending_ && t + 1e-9 >= step_apply_s_) {
     // The pose read after the plot: measured pose + the step computed from older pressures.
     step_pending_ = false;
-    servo_->SetTarget({tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], hold_z_});
+    servo_->SetTarget({tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], command_z_});
   }
   // The log keeps every phase (the approach gives the in-air start a robot log also has),
   // one row per log period; a control iteration logs its own row instead.
@@ -278,122 +282,187 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
     next_log_time_s_ = t + config_.log_period_s;
   }
   switch (phase_) {
-    case TrialPhase::kApproach: {
-      // Tare the F/T over the first 50 ms in air, then descend until the compression is read.
-      if (t < 0.05) {
-        ft_tare_n_ =
-            (ft_tare_n_ * tare_samples_ + d_->sensordata[ft_adr_ + 2]) / (tare_samples_ + 1);
-        ++tare_samples_;
-        break;
-      }
-      // First carry the cup, at its starting height, over the landing point.
-      if (!transfer_done_) {
-        Vec3 target = servo_->target();
-        const double dx = config_.target.approach[0] - target[0];
-        const double dy = config_.target.approach[1] - target[1];
-        const double dist = std::hypot(dx, dy), step = config_.move_speed_m_s * m_->opt.timestep;
-        if (dist > step) {
-          target[0] += dx / dist * step;
-          target[1] += dy / dist * step;
-          servo_->SetTarget(target);
-          break;
-        }
-        target[0] = config_.target.approach[0];
-        target[1] = config_.target.approach[1];
-        servo_->SetTarget(target);
-        if (std::hypot(tool[0] - target[0], tool[1] - target[1]) > 2e-4) {
-          ReachTimedOut(t, "landing point", target);
-          break;
-        }
-        transfer_done_ = true;
-        reach_wait_since_s_ = -1;
-      }
-      const bool deep_enough =
-          tool[2] <= config_.target.surface_top_z_m - config_.target.max_compression_m;
-      if (FtNormalForce() >= config_.approach_force_n || deep_enough) {
-        hold_z_ = tool[2];
-        result_.hold_height_m = hold_z_;
-        servo_->SetTarget({tool[0], tool[1], hold_z_});
-        phase_ = TrialPhase::kMoveToStart;
-        break;
-      }
-      Vec3 target = servo_->target();
-      target[2] -= config_.approach_speed_m_s * m_->opt.timestep;
-      servo_->SetTarget(target);
-      if (t > 30) Finish(Outcome::kTimeout, "approach never reached the start-up force");
+    case TrialPhase::kApproach:
+      TareAndApproach(t, tool);
       break;
-    }
-    case TrialPhase::kMoveToStart: {
-      Vec3 target = servo_->target();
-      const double dx = start_point_[0] - target[0], dy = start_point_[1] - target[1];
-      const double dist = std::hypot(dx, dy);
-      const double step = config_.move_speed_m_s * m_->opt.timestep;
-      if (dist > step) {
-        target[0] += dx / dist * step;
-        target[1] += dy / dist * step;
-      } else {
-        target[0] = start_point_[0];
-        target[1] = start_point_[1];
-        if (std::hypot(tool[0] - start_point_[0], tool[1] - start_point_[1]) >= 2e-4) {
-          ReachTimedOut(t, "start point", start_point_);
-        } else {
-          phase_ = TrialPhase::kFollow;
-          follow_start_s_ = t;
-          next_iteration_s_ = t;
-          next_log_s_ = t;
-          goal_start_ = {tool[0], tool[1]};
-          goal_.Start(config_.target.goal, config_.target.edge, goal_start_);
-        }
-      }
-      target[2] = hold_z_;
-      servo_->SetTarget(target);
+    case TrialPhase::kMoveToStart:
+      MoveToStart(t, tool);
       break;
-    }
-    case TrialPhase::kFollow: {
-      if (t >= next_log_s_) {
-        path_xy_.push_back({tool[0], tool[1]});
-        path_t_.push_back(t);
-        goal_.Add({tool[0], tool[1]});
-        next_log_s_ += config_.log_period_s;
-      }
-      if (t + 1e-9 < next_iteration_s_) break;
-      next_iteration_s_ += IterationPeriod(config_.effects.loop, config_.control_period_s,
-                                           EffectsSeed(), iteration_index_++);
-      ++result_.iterations;
-      std::array<double, 4> p = Pressures();
-      ApplyLipTilt(config_.effects.lip, lip_shear_, &p);
-      ApplyChamberSpread(config_.effects.chambers, EffectsSeed(), t, &chamber_spread_, &p);
-      host_p_pa_ = p;
-      last_step_ = ComputeContourStep(p, config_.law);
-      if (external_policy_) {  // the caller's step arrives through ApplyStep
-        awaiting_step_ = true;
-        iteration_tool_ = tool;
-      } else {
-        last_step_world_ = LandedStepWorld(last_step_.step_m);
-        // Measured pose + step, height held; with a pose delay, the pose read after the plot.
-        if (config_.effects.loop.pose_delay_s > 0) {
-          step_pending_ = true;
-          step_apply_s_ = t + config_.effects.loop.pose_delay_s;
-        } else {
-          servo_->SetTarget(
-              {tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], hold_z_});
-        }
-      }
-      Log(true);
-      const SampleCheck check =
-          ClassifySample(config_.thresholds, p, FtNormalForce(), goal_.status(),
-                         t - follow_start_s_, config_.timeout_s);
-      if (check.outcome == Outcome::kSuccess || check.outcome == Outcome::kLostEdge) {
-        Finish(check.outcome, goal_.Detail());
-      } else if (check.outcome != Outcome::kRunning) {
-        Finish(check.outcome, check.detail);
-      }
+    case TrialPhase::kFollow:
+      Follow(t, tool);
       break;
-    }
     case TrialPhase::kDone:
       break;
   }
   servo_->Track(m_, d_);
+}
+
+void ContourTrial::TrackLipShear(const Vec3& tool) {
+  const mjtNum* R = d_->site_xmat + 9 * tool_site_;
+  AdvanceLipShear(config_.effects.lip,
+                  WorldToTool(R, tool[0] - last_tool_[0], tool[1] - last_tool_[1]), &lip_shear_);
+}
+
+bool ContourTrial::MoveSetPointToward(const Point2& point, double z) {
+  Vec3 target = servo_->target();
+  const double dx = point[0] - target[0], dy = point[1] - target[1];
+  const double dist = std::hypot(dx, dy), step = config_.move_speed_m_s * m_->opt.timestep;
+  const bool there = dist <= step;
+  if (there) {
+    target[0] = point[0];
+    target[1] = point[1];
+  } else {
+    target[0] += dx / dist * step;
+    target[1] += dy / dist * step;
+  }
+  target[2] = z;
+  servo_->SetTarget(target);
+  return there;
+}
+
+void ContourTrial::TareAndApproach(double t, const Vec3& tool) {
+  // Tare the F/T over the first 50 ms in air, then descend until the compression is read.
+  if (t < 0.05) {
+    ft_tare_n_ = (ft_tare_n_ * tare_samples_ + d_->sensordata[ft_adr_ + 2]) / (tare_samples_ + 1);
+    ++tare_samples_;
+    return;
+  }
+  // First carry the cup, at its starting height, over the landing point.
+  if (!transfer_done_) {
+    const Point2& landing = config_.target.approach;
+    if (!MoveSetPointToward(landing, servo_->target()[2])) return;
+    if (std::hypot(tool[0] - landing[0], tool[1] - landing[1]) > 2e-4) {
+      ReachTimedOut(t, "landing point", servo_->target());
+      return;
+    }
+    transfer_done_ = true;
+    reach_wait_since_s_ = -1;
+  }
+  const bool deep_enough =
+      tool[2] <= config_.target.surface_top_z_m - config_.target.max_compression_m;
+  if (FtNormalForce() >= config_.approach_force_n || deep_enough) {
+    hold_z_ = tool[2];
+    command_z_ = hold_z_;
+    result_.hold_height_m = hold_z_;
+    servo_->SetTarget({tool[0], tool[1], hold_z_});
+    phase_ = TrialPhase::kMoveToStart;
+    return;
+  }
+  Vec3 target = servo_->target();
+  target[2] -= config_.approach_speed_m_s * m_->opt.timestep;
+  servo_->SetTarget(target);
+  if (t > 30) Finish(Outcome::kTimeout, "approach never reached the start-up force");
+}
+
+void ContourTrial::MoveToStart(double t, const Vec3& tool) {
+  const Point2 start = {start_point_[0], start_point_[1]};
+  if (!MoveSetPointToward(start, hold_z_)) return;
+  if (std::hypot(tool[0] - start[0], tool[1] - start[1]) >= 2e-4) {
+    ReachTimedOut(t, "start point", start_point_);
+    return;
+  }
+  StartFollowing(t, tool);
+}
+
+void ContourTrial::StartFollowing(double t, const Vec3& tool) {
+  phase_ = TrialPhase::kFollow;
+  follow_start_s_ = t;
+  next_iteration_s_ = t;
+  next_log_s_ = t;
+  goal_start_ = {tool[0], tool[1]};
+  goal_.Start(config_.target.goal, config_.target.edge, goal_start_);
+}
+
+void ContourTrial::Follow(double t, const Vec3& tool) {
+  if (t >= next_log_s_) {
+    path_xy_.push_back({tool[0], tool[1]});
+    path_t_.push_back(t);
+    goal_.Add({tool[0], tool[1]});
+    next_log_s_ += config_.log_period_s;
+  }
+  if (t + 1e-9 >= next_iteration_s_) RunIteration(t, tool);
+}
+
+ControllerInput ContourTrial::InputAt(double t, const Vec3& tool,
+                                      const std::array<double, 4>& p_pa) const {
+  ControllerInput in;
+  in.t_s = t;
+  in.follow_s = t - follow_start_s_;
+  in.iteration = static_cast<std::uint64_t>(result_.iterations - 1);
+  in.p_pa = p_pa;
+  in.ft_normal_n = FtNormalForce();
+  in.tool_m = tool;
+  const mjtNum* R = d_->site_xmat + 9 * tool_site_;
+  for (int k = 0; k < 9; ++k) in.tool_rotation[static_cast<std::size_t>(k)] = R[k];
+  in.hold_z_m = hold_z_;
+  return in;
+}
+
+bool ContourTrial::TakeCommand(const ControllerCommand& command, double t, const Vec3& tool) {
+  if (const std::string e = CheckControllerCommand(command); !e.empty()) {
+    const std::string why = controller_->FaultDetail();
+    Finish(Outcome::kControllerFault, "controller '" + config_.controller.name + "': " + e +
+                                          (why.empty() ? "" : " (" + why + ")"));
+    return false;
+  }
+  last_step_.step_m = command.step_m;
+  // Never deeper than the approach's limit (nor than where the approach itself stopped).
+  const double floor_z =
+      std::min(hold_z_, config_.target.surface_top_z_m - config_.target.max_compression_m);
+  command_z_ = std::max(hold_z_ + command.height_offset_m, floor_z);
+  if (!command.lifted) {
+    lifted_since_s_ = -1;
+  } else if (lifted_since_s_ < 0) {
+    lifted_since_s_ = t;
+  }
+  last_step_world_ = LandedStepWorld(command.step_m);
+  // Measured pose + step; with a pose delay, the pose read after the plot.
+  if (config_.effects.loop.pose_delay_s > 0) {
+    step_pending_ = true;
+    step_apply_s_ = t + config_.effects.loop.pose_delay_s;
+  } else {
+    servo_->SetTarget({tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], command_z_});
+  }
+  return true;
+}
+
+void ContourTrial::RunIteration(double t, const Vec3& tool) {
+  next_iteration_s_ += IterationPeriod(config_.effects.loop, config_.control_period_s,
+                                       EffectsSeed(), iteration_index_++);
+  ++result_.iterations;
+  std::array<double, 4> p = Pressures();
+  ApplyLipTilt(config_.effects.lip, lip_shear_, &p);
+  ApplyChamberSpread(config_.effects.chambers, EffectsSeed(), t, &chamber_spread_, &p);
+  host_p_pa_ = p;
+  // The law's reading of the pressures (P_mean, the differentials, c_f) for the log and overlays.
+  last_step_ = ComputeContourStep(p, config_.law);
+  if (external_policy_) {  // the caller's step arrives through ApplyStep
+    awaiting_step_ = true;
+    iteration_tool_ = tool;
+  } else if (!TakeCommand(controller_->Step(InputAt(t, tool, p)), t, tool)) {
+    Log(true);
+    return;
+  }
+  Log(true);
+  TrialThresholds thresholds = config_.thresholds;
+  if (lifted_since_s_ >= 0) {  // a hop: in the air on purpose, for a while
+    if (t - lifted_since_s_ > thresholds.max_lifted_s) {
+      std::ostringstream os;
+      os << "lifted for " << t - lifted_since_s_ << " s, longer than " << thresholds.max_lifted_s
+         << " s";
+      Finish(Outcome::kFailureOffEdge, os.str());
+      return;
+    }
+    thresholds.off_edge_pa = -std::numeric_limits<double>::infinity();
+    thresholds.grasp_pa = std::numeric_limits<double>::infinity();
+  }
+  const SampleCheck check = ClassifySample(thresholds, p, FtNormalForce(), goal_.status(),
+                                           t - follow_start_s_, config_.timeout_s);
+  if (check.outcome == Outcome::kSuccess || check.outcome == Outcome::kLostEdge) {
+    Finish(check.outcome, goal_.Detail());
+  } else if (check.outcome != Outcome::kRunning) {
+    Finish(check.outcome, check.detail);
+  }
 }
 
 bool ContourTrial::ReachTimedOut(double t, const char* what, const Vec3& point) {
@@ -465,7 +534,7 @@ void ContourTrial::ApplyStep(const std::array<double, 2>& step_m) {
   last_step_.step_m = step_m;
   last_step_world_ = LandedStepWorld(step_m);
   servo_->SetTarget({iteration_tool_[0] + last_step_world_[0],
-                     iteration_tool_[1] + last_step_world_[1], hold_z_});
+                     iteration_tool_[1] + last_step_world_[1], command_z_});
 }
 
 bool ContourTrial::RunToFollowStart(double max_sim_s) {
@@ -501,6 +570,7 @@ void ContourTrial::ResumeAtFollowStart(const mjData* follow_start_data, const Fo
   ft_tare_n_ = s.ft_tare_n;
   tare_samples_ = s.tare_samples;
   hold_z_ = s.hold_z_m;
+  command_z_ = s.hold_z_m;
   result_.hold_height_m = s.hold_z_m;
   follow_start_s_ = s.follow_start_s;
   next_iteration_s_ = s.next_iteration_s;

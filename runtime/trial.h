@@ -2,8 +2,9 @@
 //
 // Phases (as on the robot): APPROACH from above the object's centre until the tared F/T reads
 // the start-up compression, then hold that height; MOVE to the start point (start_offset from the
-// centre toward start_direction); FOLLOW the edge with the contour law, one control iteration per
-// control_period; then DONE with one outcome. Failure checks run only while following.
+// centre toward start_direction); FOLLOW the edge with the controller (the published contour law
+// by default; controller/pure/controller.h), one control iteration per control_period; then DONE
+// with one outcome. Failure checks run only while following.
 #ifndef SSC_RUNTIME_TRIAL_H_
 #define SSC_RUNTIME_TRIAL_H_
 
@@ -17,6 +18,8 @@
 #include <vector>
 
 #include "controller/pure/contour_law.h"
+#include "controller/pure/controller.h"
+#include "controller/pure/controller_registry.h"
 #include "controller/pure/robot_effects.h"
 #include "controller/pure/trial_goal.h"
 #include "controller/pure/trial_metrics.h"
@@ -53,7 +56,10 @@ struct TrialTarget {
 };
 
 struct TrialConfig {
-  ContourLawParams law;        // P_ref, beta, step, thresholds of the law
+  ContourLawParams law;  // P_ref, beta, step, thresholds of the law
+  // What decides while following (controller/pure/controller_registry.h): the published law
+  // by default; every controller also reads `law`.
+  ControllerChoice controller;
   TrialThresholds thresholds;  // success sweep, failure I/II, safety force
   ServoParams servo;           // look-ahead smoothing of the arm
   // One control iteration. 0.15 s with the 0.15 s servo smoothing below gives the published
@@ -180,6 +186,22 @@ class ContourTrial : public ControlCallback {
 
  private:
   ContourTrial(const mjModel* m, mjData* d, const TrialConfig& config, bool keep_log);
+  // The control callback's phases, each with the time and the measured tool position.
+  void TareAndApproach(double t, const Vec3& tool);
+  void MoveToStart(double t, const Vec3& tool);
+  void Follow(double t, const Vec3& tool);
+  // One control iteration: read the host's pressures, ask the controller, take the step, check.
+  void RunIteration(double t, const Vec3& tool);
+  void StartFollowing(double t, const Vec3& tool);
+  // The lip's footprint drags on the object while the body slides over it.
+  void TrackLipShear(const Vec3& tool);
+  // Moves the servo's set point toward `point` at the move speed, at height z; true once the
+  // set point is there.
+  bool MoveSetPointToward(const Point2& point, double z);
+  // The controller's command at this iteration: the step landed and sent (or held for the pose
+  // read after the plot), the height. False when it is out of range (the trial then ends).
+  bool TakeCommand(const ControllerCommand& command, double t, const Vec3& tool);
+  ControllerInput InputAt(double t, const Vec3& tool, const std::array<double, 4>& p_pa) const;
   void Finish(Outcome outcome, const std::string& detail);
   // While the tool has not yet reached `point` (target already there): ends the trial as a
   // timeout naming the point once it has waited kReachWaitS; true when it did.
@@ -204,6 +226,9 @@ class ContourTrial : public ControlCallback {
   double ft_tare_n_ = 0;
   int tare_samples_ = 0;
   double hold_z_ = 0;
+  double command_z_ = 0;        // the tool height the controller asks for (hold_z_ first)
+  double lifted_since_s_ = -1;  // when the controller's current hop began (-1: on surface)
+  std::unique_ptr<Controller> controller_;
   double next_iteration_s_ = 0, next_log_s_ = 0, follow_start_s_ = 0;
   double next_log_time_s_ = 0;  // next row of the trial log (all phases)
   Vec3 start_point_{};

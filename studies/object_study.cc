@@ -92,7 +92,8 @@ bool RunObjectStudy(const ObjectStudySpec& spec,
       row.result.outcome = Outcome::kUnstable;
       row.result.detail = load_error;
     } else {
-      row = RunObjectTrial(model.get(), object, spec.law, spec.effects, jobs[j].seed, true);
+      row = RunObjectTrial(model.get(), object, spec.law, spec.effects, jobs[j].seed, true,
+                           spec.controller);
       // The cup-centre path (follow phase), for the plots; the log itself is not kept.
       std::ofstream path(fs::path(summary->paths_dir) /
                          (object.name + "_s" + std::to_string(jobs[j].seed) + ".csv"));

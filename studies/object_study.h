@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "controller/pure/contour_law.h"
+#include "controller/pure/controller_registry.h"
 #include "controller/pure/robot_effects.h"
 #include "objects/object_spec.h"
 
@@ -23,6 +24,7 @@ struct ObjectStudySpec {
   bool arm_scenes = false;  // the UR-10 scenes instead of the light gantry ones
   ContourLawParams law;     // the published primitive-geometry controller: dL 0.5 mm
   RobotEffectsParams effects = FittedRobotEffects();  // the robot effects (docs/fidelity.md)
+  ControllerChoice controller;  // what decides while following (the published law by default)
   int threads = 1;
   std::string out_dir;      // scenes in OUT/scenes, paths in OUT/paths
   bool write_only = false;  // only the scenes and contours

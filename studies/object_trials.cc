@@ -33,7 +33,8 @@ TrialConfig ObjectTrialConfig(const ObjectSpec& spec, TrialConfig base) {
 
 ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,
                               const ContourLawParams& law, const RobotEffectsParams& effects,
-                              std::uint64_t seed, bool keep_log) {
+                              std::uint64_t seed, bool keep_log,
+                              const ControllerChoice& controller) {
   ObjectTrialRow row;
   row.object = spec.name;
   row.kind = ObjectKindName(spec.kind);
@@ -44,6 +45,7 @@ ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,
   base.law = law;
   base.seed = seed;
   base.effects = effects;
+  base.controller = controller;
   row.result = RunTrial(model, ObjectTrialConfig(spec, base), keep_log, &error);
   const double steps = row.result.sim_time_s / model->opt.timestep;
   row.step_cost_us = steps > 0 ? row.result.wall_time_s / steps * 1e6 : 0;

@@ -29,9 +29,11 @@ struct ObjectTrialRow {
 
 // Runs one object trial on `model` (a scene written by WriteObjectScenes) with `effects` (the
 // robot effects; the twin's defaults are FittedRobotEffects()).
+// `controller` decides while following (the published law by default).
 ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,
                               const ContourLawParams& law, const RobotEffectsParams& effects,
-                              std::uint64_t seed, bool keep_log);
+                              std::uint64_t seed, bool keep_log,
+                              const ControllerChoice& controller = ControllerChoice());
 
 std::string ObjectTableHeader();
 std::string ObjectTableRow(const ObjectTrialRow& row);

@@ -69,6 +69,7 @@ bool WriteTrialSummaryJson(const std::string& path, const std::string& scene, co
                      {"start_y_mm", num(c.target.start[1] * 1e3)},
                      {"timeout_s", num(c.timeout_s)},
                      {"effects", FormatRobotEffects(c.effects)}};
+  if (!c.controller.IsPublished()) j["parameters"]["controller"] = c.controller.Text();
   j["seed"] = c.seed;
   j["outcome"] = OutcomeName(r.outcome);
   j["detail"] = r.detail;

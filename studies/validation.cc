@@ -271,6 +271,7 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
   j["seeds_per_cell"] = spec.seeds;
   j["base_seed"] = spec.seed;
   j["effects"] = FormatRobotEffects(spec.base.effects);
+  if (!spec.base.controller.IsPublished()) j["controller"] = spec.base.controller.Text();
   j["control_period_s"] = spec.base.control_period_s;
   j["servo_smoothing_s"] = spec.base.servo.smoothing_s;
   j["servo_damping"] = spec.base.servo.damping;

@@ -63,6 +63,8 @@ int RunCompareCommand(int argc, char** argv) {
                    "robot effects (docs/fidelity.md) of the closed loop, and the lip's (slip_mm, "
                    "tilt_decades, peel_decades) also in the replay",
                    &effects, &tc.effects);
+  std::string controller_name = "published", controller_params;
+  AddControllerOptions(&cmd, &controller_name, &controller_params, &tc.controller);
   cmd.Flag("no-plot", &no_plot, "skip the PNG plot");
   cmd.Check([&tc]() { return tc.Validate(); });
   cmd.Check([&o]() -> std::string {

@@ -35,6 +35,8 @@ int RunObjectsCommand(int argc, char** argv) {
   ObjectStudySpec spec;
   std::string effects_text = "default";
   AddEffectsOption(&cmd, "robot effects (docs/fidelity.md)", &effects_text, &spec.effects);
+  std::string controller_name = "published", controller_params;
+  AddControllerOptions(&cmd, &controller_name, &controller_params, &spec.controller);
   cmd.Integer("threads", &threads, "worker threads", NumberRange::Closed(1, 256));
   cmd.OutputDir("out", &out_dir, "output directory (scenes in OUT/scenes)");
   cmd.Flag("write-only", &write_only, "only write the scenes");

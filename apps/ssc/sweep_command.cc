@@ -52,6 +52,8 @@ int RunSweepCommand(int argc, char** argv) {
     spec.base.law.step_mm = spec.step_mm.front();
     return std::string();
   });
+  AddControllerOptions(&cmd, &settings.controller, &settings.controller_params,
+                       &spec.base.controller);
   AddTrialSettingOptions(&cmd, &spec.base, &settings);
   // Then every point of the grid, before anything is created.
   cmd.Check([&spec, &repeats]() {

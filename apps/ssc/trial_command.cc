@@ -34,6 +34,7 @@ int RunTrialCommand(int argc, char** argv) {
              "stop after this many simulated seconds and print the tool position", "s",
              NumberRange::Positive(3600), false);
   cmd.Flag("no-plot", &no_plot, "skip the PNG plot");
+  AddControllerOptions(&cmd, &settings.controller, &settings.controller_params, &config.controller);
   AddTrialSettingOptions(&cmd, &config, &settings);
   if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
   std::string error;

@@ -65,6 +65,21 @@ void AddEffectsOption(cli::Command* cmd, const std::string& what, std::string* t
   });
 }
 
+void AddControllerOptions(cli::Command* cmd, std::string* name, std::string* params,
+                          ControllerChoice* choice) {
+  cmd->Text("controller", name,
+            "what decides while following: " + ControllerNames() +
+                " (docs/controllers.md; keys with --controller-param)");
+  cmd->Text(
+      "controller-param", params,
+      "the controller's parameters, key=value,... over its defaults:\n" + ControllerKeyTable());
+  cmd->Check([name, params, choice]() {
+    std::string error;
+    return ParseControllerChoice(*name, *params, choice, &error) ? std::string()
+                                                                 : "--controller: " + error;
+  });
+}
+
 void PrintApproachSharing(bool on, const SweepSummary& summary) {
   if (!on) {
     std::printf("approach: not shared (--no-shared-approach)\n");

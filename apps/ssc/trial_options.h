@@ -23,12 +23,19 @@ struct TrialSettings {
   std::string object_on = "left";
   bool no_dead_band = false;
   std::string effects = "default";
+  std::string controller = "published", controller_params;
 };
 void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* config, TrialSettings* settings);
 // --effects: the text goes to *text and is parsed onto *effects by a check registered here (so
 // before any check registered after it). `what` leads the help line.
 void AddEffectsOption(cli::Command* cmd, const std::string& what, std::string* text,
                       RobotEffectsParams* effects);
+
+// --controller NAME and --controller-param key=value,...: parsed onto *choice by a check
+// registered here (unknown names and keys, values out of range are errors naming the key and
+// its range). `name` and `params` hold the texts and must outlive the parse.
+void AddControllerOptions(cli::Command* cmd, std::string* name, std::string* params,
+                          ControllerChoice* choice);
 
 // One summary line on the shared approach (runtime/approach_cache.h) of this rank's trials.
 void PrintApproachSharing(bool on, const SweepSummary& summary);

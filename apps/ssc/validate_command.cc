@@ -43,6 +43,8 @@ int RunValidateCommand(int argc, char** argv) {
   cmd.Flag("no-progress", &no_progress, "no progress bar even on a terminal");
   cmd.Flag("no-shared-approach", &no_shared_approach,
            "simulate every trial's approach itself (as ssc sweep --no-shared-approach)");
+  AddControllerOptions(&cmd, &settings.controller, &settings.controller_params,
+                       &spec.base.controller);
   AddTrialSettingOptions(&cmd, &spec.base, &settings);
   if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
   spec.seeds = static_cast<int>(seeds);

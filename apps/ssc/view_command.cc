@@ -36,6 +36,8 @@ int RunViewCommand(int argc, char** argv) {
              NumberRange::Closed(0, 3600));
   cmd.Integer("width", &width, "image width, px", NumberRange::Closed(16, 8192));
   cmd.Integer("height", &height, "image height, px", NumberRange::Closed(16, 8192));
+  AddControllerOptions(&cmd, &settings.controller, &settings.controller_params,
+                       &v.config.controller);
   AddTrialSettingOptions(&cmd, &v.config, &settings);
   if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
   if (!scene.empty() && !scene_option.empty() && scene != scene_option) {

@@ -21,6 +21,8 @@ const char* OutcomeName(Outcome outcome) {
       return "unstable";
     case Outcome::kLostEdge:
       return "lost_edge";
+    case Outcome::kControllerFault:
+      return "controller_fault";
   }
   return "?";
 }

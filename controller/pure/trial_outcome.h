@@ -14,10 +14,15 @@ struct TrialThresholds {
   double off_edge_pa = 5.0;            // failure I below this mean vacuum (disk script: 5 Pa)
   double grasp_pa = 10000.0;           // failure II when ALL four chambers exceed this
   double max_contact_force_n = 100.0;  // safety: unstable beyond this |F/T| force
+  // A controller's hop (ControllerCommand::lifted) pauses failures I and II for at most this
+  // long at a time; longer in the air is failure I.
+  double max_lifted_s = 5.0;
 };
 
 // kLostEdge: the trial's goal can no longer count as followed: the cup centre left the band
 // about the edge, or it circled a feature its opening covers whole (trial_goal.h).
+// kControllerFault: the controller returned a non-finite or out-of-range command
+// (controller/pure/controller.h).
 enum class Outcome {
   kRunning,
   kSuccess,
@@ -25,11 +30,12 @@ enum class Outcome {
   kFailureGrasp,
   kTimeout,
   kUnstable,
-  kLostEdge
+  kLostEdge,
+  kControllerFault
 };
 
 // The text form, as written in tables and summaries: "running", "success", "failure_I",
-// "failure_II", "timeout", "unstable", "lost_edge".
+// "failure_II", "timeout", "unstable", "lost_edge", "controller_fault".
 const char* OutcomeName(Outcome outcome);
 
 // Signed swept angle of a point about a centre, unwrapped (counter-clockwise positive seen from

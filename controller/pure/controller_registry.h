@@ -1,0 +1,115 @@
+// The controllers a trial can run, by name, each with a key table for its parameters (unit,
+// default, range, what it is): the one home of those facts for parsing, --help and docs. The
+// published law is "published"; the others are listed in ControllerTypes()
+// (controller_registry.cc).
+//
+// Every controller also gets the trial's ContourLawParams (P_ref, beta, dL, P_n, P_g, the follow
+// side and dead band: the grid point of a sweep, the map cell of a validation), so the study
+// options that vary the law vary any controller built on it.
+#ifndef SSC_CONTROLLER_PURE_CONTROLLER_REGISTRY_H_
+#define SSC_CONTROLLER_PURE_CONTROLLER_REGISTRY_H_
+
+#include <functional>
+#include <initializer_list>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "controller/pure/contour_law.h"
+#include "controller/pure/controller.h"
+
+namespace ssc {
+
+// What a controller is built with, besides its own parameters.
+struct ControllerContext {
+  ContourLawParams law;
+  double control_period_s = 0.15;  // the host's nominal loop period, s
+};
+
+struct ControllerParamKey {
+  std::string key, unit;
+  double default_value = 0, min = 0, max = 0;
+  std::string what;
+};
+
+using ControllerValues = std::vector<double>;  // one per key, in key order
+using ControllerFactory =
+    std::function<std::unique_ptr<Controller>(const ControllerContext&, const ControllerValues&)>;
+
+struct ControllerType {
+  std::string name, what;
+  std::vector<ControllerParamKey> keys;
+  ControllerFactory make;
+};
+
+// A parameter of controller parameters struct P: its key table row, with the default read from
+// P{} (the struct's initialisers are the one home of the defaults).
+template <typename P>
+struct ParamField {
+  const char* key;
+  const char* unit;
+  double min, max;
+  const char* what;
+  double P::*field;
+};
+
+// The ControllerType of a controller class C constructed as C(context, P).
+template <typename C, typename P>
+ControllerType MakeControllerType(const char* name, const char* what,
+                                  std::initializer_list<ParamField<P>> fields) {
+  ControllerType t;
+  t.name = name;
+  t.what = what;
+  std::vector<double P::*> members;
+  const P defaults{};
+  for (const ParamField<P>& f : fields) {
+    t.keys.push_back({f.key, f.unit, defaults.*(f.field), f.min, f.max, f.what});
+    members.push_back(f.field);
+  }
+  t.make = [members](const ControllerContext& context, const ControllerValues& values) {
+    P p{};
+    for (size_t i = 0; i < members.size() && i < values.size(); ++i) p.*(members[i]) = values[i];
+    return std::unique_ptr<Controller>(new C(context, p));
+  };
+  return t;
+}
+
+// The registered controllers, "published" first.
+const std::vector<ControllerType>& ControllerTypes();
+const ControllerType* FindControllerType(const std::string& name);
+
+// The controller a trial runs.
+struct ControllerChoice {
+  std::string name = "published";
+  ControllerValues values;  // one per key of the type; empty = every default
+  // A factory from outside the registry (a Python callable); `name` is then its label only.
+  std::shared_ptr<const std::function<std::unique_ptr<Controller>(const ControllerContext&)>>
+      custom;
+
+  // The published law, as the trial runs it without a choice.
+  bool IsPublished() const { return !custom && name == "published"; }
+  // "" when the name is registered (or custom is set) and every value is within its key's range.
+  std::string Validate() const;
+  // "name" with no parameters, else "name:key=value,..." with every key (manifests, summaries).
+  std::string Text() const;
+  // Null when Validate() fails.
+  std::unique_ptr<Controller> Make(const ControllerContext& context) const;
+};
+
+// key=value,... over `type`'s defaults onto *values (one per key, in key order).
+bool ParseControllerValues(const ControllerType& type, const std::string& params,
+                           ControllerValues* values, std::string* error);
+// --controller NAME --controller-param key=value,...: the values over the type's defaults. Keys
+// must be the type's, each at most once, values strict numbers within the key's range; the
+// error names the key, the value and the range (or the registered names).
+bool ParseControllerChoice(const std::string& name, const std::string& params,
+                           ControllerChoice* choice, std::string* error);
+
+// The registered names, ", "-separated.
+std::string ControllerNames();
+// One line per controller and per key (name, unit, default, range, what) for --help and docs.
+std::string ControllerKeyTable();
+
+}  // namespace ssc
+
+#endif  // SSC_CONTROLLER_PURE_CONTROLLER_REGISTRY_H_
