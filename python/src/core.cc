@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "common/strict_number.h"
 #include "common/tool_names.h"
 #include "compare/comparison.h"
 #include "compare/frames.h"
@@ -93,6 +94,15 @@ nb::dict Dict(std::initializer_list<std::pair<const char*, nb::object>> items) {
 }
 
 [[noreturn]] void Fail(const std::string& what) { throw std::runtime_error(what); }
+// A bad argument: ValueError in Python. The message comes from the same C++ check the command
+// line uses (one validation home per input).
+[[noreturn]] void Invalid(const std::string& what) { throw std::invalid_argument(what); }
+
+// timeout_s as the bindings take it: 0 = the default, else the trial's own range check.
+void SetTimeout(double timeout_s, TrialConfig* config) {
+  if (timeout_s != 0) config->timeout_s = timeout_s;
+  if (const std::string e = config->Validate(); !e.empty()) Invalid(e);
+}
 
 ModelPtr Load(const std::string& scene) {
   std::string error;
@@ -113,7 +123,8 @@ TrialConfig MakeConfig(double pref, double beta, double step_mm, std::uint64_t s
     // A test object: its scenes are written next to the other generated files (like ssc view).
     const ObjectSpec spec = ObjectByName(object);
     if (spec.name.empty())
-      Fail("unknown test object '" + object + "' (e.g. disk_d10, hole_d10, corner_a090, volute)");
+      Invalid("unknown test object '" + object +
+              "' (e.g. disk_d10, hole_d10, corner_a090, volute)");
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "ssc_twin_objects";
     std::string error;
     if (!WriteObjectFiles(spec, dir.string(), ResourceDir(), &error)) Fail(error);
@@ -123,8 +134,8 @@ TrialConfig MakeConfig(double pref, double beta, double step_mm, std::uint64_t s
             .string();
     config = ObjectTrialConfig(spec, config);
   }
-  if (std::string e; !ParseRobotEffects(effects, &config.effects, &e)) Fail(e);
-  if (const std::string e = config.Validate(); !e.empty()) Fail(e);
+  if (std::string e; !ParseRobotEffects(effects, &config.effects, &e)) Invalid(e);
+  if (const std::string e = config.Validate(); !e.empty()) Invalid(e);
   return config;
 }
 
@@ -219,7 +230,7 @@ ContourLawParams Law(double pref, double beta, double step_mm) {
   law.p_ref_pa = pref;
   law.beta = beta;
   law.step_mm = step_mm;
-  if (const std::string e = law.Validate(); !e.empty()) Fail(e);
+  if (const std::string e = law.Validate(); !e.empty()) Invalid(e);
   return law;
 }
 
@@ -287,8 +298,7 @@ class SteppedTrial {
                const std::string& effects) {
     scene_ = scene;
     config_ = MakeConfig(pref, beta, step_mm, seed, object, effects, &scene_);
-    if (timeout_s > 0) config_.timeout_s = timeout_s;
-    if (const std::string e = config_.Validate(); !e.empty()) Fail(e);
+    SetTimeout(timeout_s, &config_);
     // The mujoco package owns the model and the data (MjModel._from_model_ptr takes ownership
     // of a compiled mjModel; both sides use the same libmujoco), so Python sees the live
     // MjModel/MjData the trial steps: renderers, viewers and mujoco functions work on them.
@@ -313,7 +323,14 @@ class SteppedTrial {
     nb::gil_scoped_release release;
     return trial_->RunToNextIteration();
   }
-  void ApplyStep(std::array<double, 2> step_m) { trial_->ApplyStep(step_m); }
+  void ApplyStep(std::array<double, 2> step_m) {
+    // NaN or inf would reach the controls and throw the tool; refuse them here.
+    if (!std::isfinite(step_m[0]) || !std::isfinite(step_m[1])) {
+      Invalid("apply_step: step_m = (" + FormatNumber(step_m[0]) + ", " + FormatNumber(step_m[1]) +
+              ") m is not finite");
+    }
+    trial_->ApplyStep(step_m);
+  }
   std::array<double, 4> IterationPressures() const { return trial_->HostPressures(); }
   std::array<double, 4> Pressures() const { return trial_->Pressures(); }
   std::array<double, 3> ToolPosition() const {
@@ -597,6 +614,13 @@ NB_MODULE(_core, m) {
   m.def(
       "contour_step",
       [](std::array<double, 4> p_pa, double pref, double beta, double step_mm) {
+        for (int k = 0; k < 4; ++k) {
+          // Beyond 1e6 Pa (ten atmospheres) the law's sums overflow nothing but mean nothing.
+          if (!(std::fabs(p_pa[k]) <= 1e6)) {
+            Invalid("p_pa[" + std::to_string(k) + "] = " + FormatNumber(p_pa[k]) +
+                    " is out of range [-1e6, 1e6] Pa (a chamber pressure)");
+          }
+        }
         return StepDict(ComputeContourStep(p_pa, Law(pref, beta, step_mm)));
       },
       "p_pa"_a, "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 7.5,
@@ -609,8 +633,11 @@ NB_MODULE(_core, m) {
          const std::string& effects) {
         std::string scene_path = scene;
         TrialConfig config = MakeConfig(pref, beta, step_mm, seed, object, effects, &scene_path);
-        if (timeout_s > 0) config.timeout_s = timeout_s;
-        if (const std::string e = config.Validate(); !e.empty()) Fail(e);
+        SetTimeout(timeout_s, &config);
+        if (!(stop_at_s >= 0 && stop_at_s <= 3600)) {
+          Invalid("stop_at_s = " + FormatNumber(stop_at_s) +
+                  " is out of range [0, 3600] s (0: run to the end)");
+        }
         ModelPtr model = Load(scene_path);
         std::string error;
         TrialResult r;
@@ -646,6 +673,8 @@ NB_MODULE(_core, m) {
         spec.seed = seed;
         spec.threads = threads;
         spec.out_csv = out_csv;
+        if (out_csv.empty()) Invalid("out_csv is empty: give the sweep CSV's path");
+        if (const std::string e = CheckSweepGrid(spec); !e.empty()) Invalid(e);
         ModelPtr model = Load(scene);
         SweepSummary summary;
         std::string error;
@@ -675,22 +704,22 @@ NB_MODULE(_core, m) {
         spec.seed = seed;
         spec.out_dir = out_dir;
         if (seeds < 3 || seeds > 10000) {
-          Fail("seeds = " + std::to_string(seeds) +
-               " is out of range [3, 10000] (trials per cell)");
+          Invalid("seeds = " + std::to_string(seeds) +
+                  " is out of range [3, 10000] (trials per cell)");
         }
         if (threads < 1 || threads > 256) {
-          Fail("threads = " + std::to_string(threads) + " is out of range [1, 256]");
+          Invalid("threads = " + std::to_string(threads) + " is out of range [1, 256]");
         }
         spec.seeds = seeds;
         spec.threads = threads;
         std::string error;
-        if (!ParseRobotEffects(effects, &spec.base.effects, &error)) Fail(error);
-        if (timeout_s < 0 || timeout_s > 3600) {
-          Fail("timeout_s = " + std::to_string(timeout_s) +
-               " is out of range (0, 3600] s (0: the default)");
+        if (!ParseRobotEffects(effects, &spec.base.effects, &error)) Invalid(error);
+        SetTimeout(timeout_s, &spec.base);
+        // The map before anything is created (a FIFO, a device or a binary file is refused).
+        if (std::vector<MapCell> cells; !ReadPublishedMap(spec.map_path, &cells, &error)) {
+          Invalid(error);
         }
-        if (timeout_s > 0) spec.base.timeout_s = timeout_s;
-        if (const std::string e = spec.base.Validate(); !e.empty()) Fail(e);
+        if (out_dir.empty()) Invalid("out_dir is empty: give the output directory");
         std::error_code ec;
         std::filesystem::create_directories(out_dir, ec);
         if (ec || !std::filesystem::is_directory(out_dir)) {
@@ -773,6 +802,11 @@ NB_MODULE(_core, m) {
           "read",
           [](EdgeProbe3d& p, double x_m, double y_m, double yaw_rad, double surface_z_m,
              double compression_m, double settle_s) {
+            if (const std::string e = EdgeProbe3d::CheckPlacement(x_m, y_m, yaw_rad, surface_z_m,
+                                                                  compression_m, settle_s);
+                !e.empty()) {
+              Invalid("Probe.read: " + e);
+            }
             ProbeReading r;
             {
               nb::gil_scoped_release release;
@@ -828,6 +862,7 @@ NB_MODULE(_core, m) {
         d["log_pa"] = Rows(c.log_pa);
         d["tcp_m"] = Rows(c.tcp_m);
         d["report_dir"] = out_dir;
+        d["warnings"] = nb::cast(result.log_warnings);  // e.g. a replay off the object
         return d;
       },
       "log"_a, "scene"_a = "disk_replay", "out_dir"_a = "out/compare",

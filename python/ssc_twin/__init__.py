@@ -56,9 +56,25 @@ def load_plugin(path=None):
 
 
 def read_sweep(csv_path):
-    """The rows of a sweep CSV (written by sweep()) as a dict of NumPy arrays, one per column."""
+    """The rows of a sweep CSV (written by sweep()) as a dict of NumPy arrays, one per column.
+
+    Raises ValueError naming the file when it is not a sweep CSV (another header, binary data).
+    """
     import numpy as np
-    table = np.genfromtxt(csv_path, delimiter=",", names=True, dtype=None, encoding="utf-8")
+    path = _os.fspath(csv_path)
+    if not _os.path.isfile(path):
+        raise ValueError(f"{path}: not a regular file (the sweep CSV to read)")
+    with open(path, "rb") as f:
+        head = f.readline(4096)
+    if b"\0" in head or not head.startswith(b"scene,pref_pa,beta,step_mm,repeat,seed,outcome"):
+        shown = head[:60].decode("ascii", "backslashreplace").rstrip()
+        raise ValueError(f"{path}: not a sweep CSV (its first line is {shown!r}, expected the "
+                         "header scene,pref_pa,beta,step_mm,repeat,seed,outcome,...)")
+    try:
+        table = np.genfromtxt(path, delimiter=",", names=True, dtype=None, encoding="utf-8",
+                              invalid_raise=True)
+    except ValueError as e:
+        raise ValueError(f"{path}: cannot read as a sweep CSV: {e}") from None
     return {name: table[name] for name in table.dtype.names}
 
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # pip builds the ssc_twin wheel (scikit-build-core + nanobind; a persistent build folder under
 # BUILD_DIR makes re-runs incremental), installs it into a temporary venv and runs
-# python/tests/package_test.py there against the CLI.
+# python/tests/package_test.py there against the CLI, then strict_args_test.py (bad arguments).
 #   python_package_test.sh SOURCE_DIR BUILD_DIR PYTHON SSC
 # The temporary venv borrows the project venv's mujoco, numpy and gymnasium (a .pth file), so no
 # download is needed. Exit 77 (CTest: skipped) when the build tools are missing.
@@ -26,3 +26,5 @@ echo "$deps" > "$site/ssc_project_deps.pth"
 cd "$tmp"
 env -u SSC_SOURCE_DIR -u SSC_RESOURCE_DIR -u PYTHONPATH \
   "$tmp/venv/bin/python" "$src/python/tests/package_test.py" "$ssc"
+env -u SSC_SOURCE_DIR -u SSC_RESOURCE_DIR -u PYTHONPATH \
+  "$tmp/venv/bin/python" "$src/python/tests/strict_args_test.py"
