@@ -40,14 +40,19 @@ std::string ReplayDisagreement(const ReplayComparison& c, const CompareOptions& 
     if (mean(c.sim_pa[i]) < 0.25 * log_mean) ++lost;
   }
   if (sealed < 10 || lost * 2 <= sealed) return "";
-  char buf[512];
+  const std::string frames =
+      log_frame == "scene"
+          ? "and that the plain CSV's poses are in the scene frame (--log-frame and "
+            "--object-pose place lab logs only)"
+          : "--log-frame (" + log_frame + " now) and --object-pose";
+  char buf[640];
   std::snprintf(buf, sizeof(buf),
                 "the replay disagrees with the log: at %d of the %d samples where the log holds "
                 "a seal (mean vacuum above %.0f Pa) the replayed cup holds less than a quarter "
                 "of it, so the replayed path is likely off the object. Check --tcp-offset "
-                "(%.1f mm now; the lab's tool %.1f mm), --log-frame (%s now) and --object-pose",
+                "(%.1f mm now; the lab's tool %.1f mm), %s",
                 lost, sealed, 0.5 * peak, o.processing.tcp_offset_m * 1e3, kToolCentreOffsetM * 1e3,
-                log_frame.c_str());
+                frames.c_str());
   return buf;
 }
 
@@ -124,7 +129,8 @@ bool RunComparison(const CompareOptions& o, CompareResult* r, std::string* error
     s.object.yaw_rad = o.object_pose.size() > 3 ? o.object_pose[3] * M_PI / 180 : 0.0;
     s.object.source = "--object-pose";
   }
-  ProcessedLog scene_log = loaded.log;
+  // A plain log is needed once, in the scene frame: moved, not copied (a 1M-row log is ~100 MB).
+  ProcessedLog scene_log = lab ? loaded.log : std::move(loaded.log);
   if (lab) {
     ObjectPose where = s.object;
     if (!where.known) {  // which object: the nearest to the log's first tool position
@@ -154,10 +160,14 @@ bool RunComparison(const CompareOptions& o, CompareResult* r, std::string* error
     }
     return false;
   }
-  if (!ReplayLog(model.get(), scene_log, o.processing.tcp_offset_m, o.loop_config.effects.lip,
-                 &r->replay, error)) {
-    return false;
-  }
+  // Without the closed loop nothing needs the scene-frame log after the replay: its series move
+  // into the result.
+  const bool replayed =
+      o.closed_loop ? ReplayLog(model.get(), scene_log, o.processing.tcp_offset_m,
+                                o.loop_config.effects.lip, &r->replay, error, o.progress)
+                    : ReplayLogConsuming(model.get(), &scene_log, o.processing.tcp_offset_m,
+                                         o.loop_config.effects.lip, &r->replay, error, o.progress);
+  if (!replayed) return false;
   if (std::string w = ReplayDisagreement(r->replay, o, s.log_frame); !w.empty()) {
     r->log_warnings.push_back(w);
   }

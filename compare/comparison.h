@@ -4,6 +4,7 @@
 #ifndef SSC_COMPARE_COMPARISON_H_
 #define SSC_COMPARE_COMPARISON_H_
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,8 @@ struct CompareOptions {
   bool closed_loop = false;
   TrialConfig loop_config;    // defaults for what the file does not give
   bool override_law = false;  // the command line's P_ref, beta, dL win over the file's
+  // Sees the fraction of the replay done, every 1 % (optional; ssc compare shows it on stderr).
+  std::function<void(double)> progress;
 };
 
 struct CompareResult {

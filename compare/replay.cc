@@ -44,8 +44,13 @@ std::string CorrelationText(double r) {
   return buf;
 }
 
-bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
-               const LipShearParams& lip, ReplayComparison* out, std::string* error) {
+namespace {
+
+// The replay; with `take` the log's series move into `out` at the end instead of being copied
+// sample by sample.
+bool Replay(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
+            const LipShearParams& lip, ReplayComparison* out, std::string* error,
+            const std::function<void(double)>& progress, ProcessedLog* take) {
   *out = ReplayComparison();
   const int body = mj_name2id(m, mjOBJ_BODY, "probe");
   if (body < 0 || m->body_mocapid[body] < 0) {
@@ -98,7 +103,20 @@ bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
   const int site = sensor->site_id();
   LipShearState shear;
   std::array<double, 2> last_xy = {d->site_xpos[3 * site], d->site_xpos[3 * site + 1]};
-  for (size_t k = 0; k < log.t_s.size(); ++k) {
+  const size_t samples = log.t_s.size();
+  out->sim_pa.reserve(samples);
+  out->sim_ft_normal_n.reserve(samples);
+  if (take == nullptr) {
+    out->t_s.reserve(samples);
+    out->log_pa.reserve(samples);
+    out->tcp_m.reserve(samples);
+  }
+  size_t next_report = samples / 100;
+  for (size_t k = 0; k < samples; ++k) {
+    if (progress && k >= next_report && samples >= 100) {
+      progress(static_cast<double>(k) / static_cast<double>(samples));
+      next_report += samples / 100;
+    }
     while (d->time + 0.5 * m->opt.timestep < log.t_s[k] - t0) {
       place(t0 + d->time);
       mj_step(m, d);
@@ -111,29 +129,48 @@ bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
     std::array<double, 4> sim;
     for (int c = 0; c < 4; ++c) sim[c] = d->sensordata[adr + c];
     ApplyLipTilt(lip, shear, &sim);
-    out->t_s.push_back(log.t_s[k]);
     out->sim_pa.push_back(sim);
-    out->log_pa.push_back(log.p_pa[k]);
-    out->tcp_m.push_back(log.tcp_m[k]);
     out->sim_ft_normal_n.push_back(ft_adr >= 0 ? d->sensordata[ft_adr] - ft_tare : 0.0);
+    if (take == nullptr) {
+      out->t_s.push_back(log.t_s[k]);
+      out->log_pa.push_back(log.p_pa[k]);
+      out->tcp_m.push_back(log.tcp_m[k]);
+    }
   }
   mj_deleteData(d);
+  if (take != nullptr) {
+    out->t_s = std::move(take->t_s);
+    out->log_pa = std::move(take->p_pa);
+    out->tcp_m = std::move(take->tcp_m);
+    *take = ProcessedLog();
+  }
+  if (progress) progress(1.0);
 
   const size_t n = out->t_s.size();
   for (int c = 0; c < 4; ++c) {
-    std::vector<double> a(n), b(n);
-    double se = 0, sl = 0;
+    // One pass of sums per chamber (no copies of the series): RMS, log10 RMS, correlation.
+    double se = 0, sl = 0, sa = 0, sb = 0;
     for (size_t i = 0; i < n; ++i) {
-      a[i] = out->sim_pa[i][c];
-      b[i] = out->log_pa[i][c];
-      se += (a[i] - b[i]) * (a[i] - b[i]);
-      sl += std::pow(Log10Floor(a[i]) - Log10Floor(b[i]), 2);
+      const double a = out->sim_pa[i][c], b = out->log_pa[i][c];
+      se += (a - b) * (a - b);
+      sl += std::pow(Log10Floor(a) - Log10Floor(b), 2);
+      sa += a;
+      sb += b;
+    }
+    const double ma = sa / static_cast<double>(n), mb = sb / static_cast<double>(n);
+    double sab = 0, saa = 0, sbb = 0;
+    for (size_t i = 0; i < n; ++i) {
+      const double a = out->sim_pa[i][c] - ma, b = out->log_pa[i][c] - mb;
+      sab += a * b;
+      saa += a * a;
+      sbb += b * b;
     }
     out->rms_pa[c] = std::sqrt(se / static_cast<double>(n));
     out->rms_log10[c] = std::sqrt(sl / static_cast<double>(n));
-    out->correlation[c] = Correlation(a, b);
-    const double mb = std::accumulate(b.begin(), b.end(), 0.0);
-    out->mean_ratio[c] = std::fabs(mb) > 1e-9 ? std::accumulate(a.begin(), a.end(), 0.0) / mb : 0;
+    // As Correlation(): NaN when either side is constant.
+    out->correlation[c] = (n >= 2 && saa > 0 && sbb > 0) ? sab / std::sqrt(saa * sbb)
+                                                         : std::numeric_limits<double>::quiet_NaN();
+    out->mean_ratio[c] = std::fabs(sb) > 1e-9 ? sa / sb : 0;
   }
   double se = 0, bias = 0;
   std::vector<double> angles;
@@ -162,6 +199,20 @@ bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
     out->direction_median_deg = angles[angles.size() / 2];
   }
   return true;
+}
+
+}  // namespace
+
+bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
+               const LipShearParams& lip, ReplayComparison* out, std::string* error,
+               const std::function<void(double)>& progress) {
+  return Replay(m, log, tcp_offset_m, lip, out, error, progress, nullptr);
+}
+
+bool ReplayLogConsuming(const mjModel* m, ProcessedLog* log, double tcp_offset_m,
+                        const LipShearParams& lip, ReplayComparison* out, std::string* error,
+                        const std::function<void(double)>& progress) {
+  return Replay(m, *log, tcp_offset_m, lip, out, error, progress, log);
 }
 
 }  // namespace ssc

@@ -5,6 +5,7 @@
 #include <mujoco/mujoco.h>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,8 +32,15 @@ struct ReplayComparison {
 // `lip` is the lip-drag reading effect the closed loop applies (controller/pure/robot_effects.h):
 // the replay drags the lip along the logged path and applies it too, so its pressures are what
 // the host would read, as the log's are. LipShearParams{} (slip 0) compares the plugin alone.
+// `progress` (optional) sees the fraction of the log replayed, every 1 %.
 bool ReplayLog(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
-               const LipShearParams& lip, ReplayComparison* out, std::string* error);
+               const LipShearParams& lip, ReplayComparison* out, std::string* error,
+               const std::function<void(double)>& progress = nullptr);
+// The same, taking the log's clock, positions and pressures into `out` instead of copying
+// them (a long log is held once, not twice); `log` is left without them.
+bool ReplayLogConsuming(const mjModel* m, ProcessedLog* log, double tcp_offset_m,
+                        const LipShearParams& lip, ReplayComparison* out, std::string* error,
+                        const std::function<void(double)>& progress = nullptr);
 
 // Pearson correlation; NaN (undefined) when either side is constant or shorter than 2.
 // CorrelationText shows it: "0.991" or "n/a (constant)".

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <exception>
 #include <fstream>
+#include <functional>
 #include <vector>
 
+#include "common/output_file.h"
 #include "robotlog/robot_log.h"
 #include "robotlog/text_cells.h"
 
@@ -104,8 +106,14 @@ bool ParseHeader(const std::vector<std::string_view>& cells, const std::string& 
 
 }  // namespace
 
-bool ParsePlainLog(std::string_view contents, const std::string& file, ProcessedLog* log,
-                   LoadError* error) {
+namespace {
+
+using LineFn = std::function<bool(int, std::string_view)>;
+
+// The parser over any source of lines (`for_each_line(fn)`: false on a read error, with *error
+// set), so a file is parsed as it is read, never held whole (a 1M-row log is ~95 MB of text).
+bool ParsePlainLines(const std::function<bool(const LineFn&)>& for_each_line,
+                     const std::string& file, ProcessedLog* log, LoadError* error) {
   try {
     *log = ProcessedLog();
     std::array<int, kNumColumns> at{};
@@ -113,7 +121,7 @@ bool ParsePlainLog(std::string_view contents, const std::string& file, Processed
     size_t n_cells = 0;
     bool header = false, ok = true, has_ft = false, has_pwm = false;
     std::vector<int> lines;  // file line of each row
-    text::ForEachLine(contents, [&](int line_no, std::string_view line) {
+    const bool read = for_each_line([&](int line_no, std::string_view line) {
       if (text::Trim(line).empty()) return true;
       const std::vector<std::string_view> cells = text::SplitCells(line);
       if (!header) {
@@ -168,7 +176,7 @@ bool ParsePlainLog(std::string_view contents, const std::string& file, Processed
       lines.push_back(line_no);
       return true;
     });
-    if (!ok) return false;
+    if (!read || !ok) return false;
     if (log->t_s.empty()) {
       text::SetError(error, file, 0, 0,
                      header ? "empty log: no data rows after the header" : "empty file");
@@ -206,22 +214,22 @@ bool ParsePlainLog(std::string_view contents, const std::string& file, Processed
   }
 }
 
+}  // namespace
+
+bool ParsePlainLog(std::string_view contents, const std::string& file, ProcessedLog* log,
+                   LoadError* error) {
+  return ParsePlainLines(
+      [contents](const LineFn& fn) {
+        text::ForEachLine(contents, fn);
+        return true;
+      },
+      file, log, error);
+}
+
 bool LoadPlainLog(const std::string& path, ProcessedLog* log, LoadError* error) {
-  // Line by line with a bounded line length; the rows go through the same parser.
-  std::string contents;
-  bool ok = true;
-  if (!text::ForEachFileLine(
-          path,
-          [&](int, std::string_view line) {
-            contents.append(line);
-            contents.push_back('\n');
-            return true;
-          },
-          error)) {
-    return false;
-  }
-  ok = ParsePlainLog(contents, path, log, error);
-  return ok;
+  // Line by line with a bounded line length, parsed as read.
+  return ParsePlainLines([&](const LineFn& fn) { return text::ForEachFileLine(path, fn, error); },
+                         path, log, error);
 }
 
 bool WritePlainLog(const std::string& path, const ProcessedLog& log, std::string* error) {
@@ -233,11 +241,8 @@ bool WritePlainLog(const std::string& path, const ProcessedLog& log, std::string
       *error = path + ": the log's columns have different lengths";
       return false;
     }
-    std::ofstream f(path);
-    if (!f) {
-      *error = path + ": cannot create";
-      return false;
-    }
+    OutputFile file(path);
+    std::ostream& f = file.stream();
     const bool has_ft = !log.ft.empty(), has_pwm = !log.pwm_pct.empty();
     const int last = has_ft ? kPwm : kFx;
     for (int k = 0; k < last; ++k) f << (k ? "," : "") << kColumns[k];
@@ -254,12 +259,7 @@ bool WritePlainLog(const std::string& path, const ProcessedLog& log, std::string
       if (has_pwm) f << ',' << Num(log.pwm_pct[i]);
       f << '\n';
     }
-    f.flush();
-    if (!f) {
-      *error = path + ": write failed";
-      return false;
-    }
-    return true;
+    return file.Commit(error);
   } catch (const std::exception& ex) {
     *error = path + ": " + ex.what();
     return false;

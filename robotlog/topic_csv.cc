@@ -11,6 +11,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "common/output_file.h"
 #include "robotlog/robot_log.h"
 #include "robotlog/text_cells.h"
 
@@ -171,11 +172,8 @@ std::string StampOfFileName(const std::string& name) {
 
 bool WriteTopicFile(const fs::path& path, const LabTopic& topic, LoggerVersion version,
                     const Stream& s, long long t0_ns, std::string* error) {
-  std::ofstream f(path, std::ios::binary);
-  if (!f) {
-    *error = path.string() + ": cannot create";
-    return false;
-  }
+  OutputFile file(path.string());
+  std::ostream& f = file.stream();
   const bool pressure = topic.id == StreamId::kPressure;
   const bool older = version == LoggerVersion::kOlder;
   f << kTimeColumn;
@@ -212,12 +210,7 @@ bool WriteTopicFile(const fs::path& path, const LabTopic& topic, LoggerVersion v
     }
     f << '\n';
   }
-  f.flush();
-  if (!f) {
-    *error = path.string() + ": write failed";
-    return false;
-  }
-  return true;
+  return file.Commit(error);
 }
 
 }  // namespace

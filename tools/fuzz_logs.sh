@@ -23,7 +23,7 @@ if [[ ! -x "$WORK/topic_csv_fuzz" ]] || \
   "$CXX_FUZZ" -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
   -I. -I/usr/include/eigen3 robotlog/fuzz/topic_csv_fuzz.cc robotlog/align.cc \
   robotlog/mat_log.cc robotlog/plain_log.cc robotlog/robot_log.cc robotlog/synthetic_log.cc \
-  robotlog/text_cells.cc robotlog/topic_csv.cc -lmatio -o "$WORK/topic_csv_fuzz"
+  robotlog/text_cells.cc robotlog/topic_csv.cc common/output_file.cc -lmatio -o "$WORK/topic_csv_fuzz"
 fi
 
 # Seeds: the lab's topic files (both logger versions) and a plain log.

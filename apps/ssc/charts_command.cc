@@ -15,6 +15,7 @@
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
+#include "common/output_file.h"
 #include "runtime/mujoco_model.h"
 #include "studies/fidelity_table.h"
 #include "studies/sweep.h"
@@ -80,11 +81,8 @@ int RunChartsCommand(int argc, char** argv) {
     std::fprintf(stderr, "ssc charts: %s\n", error.c_str());
     return 1;
   }
-  std::ofstream simulator(out / "simulator.csv");
-  simulator << FidelityCsv(rows);
-  simulator.close();
-  if (!simulator) {
-    std::fprintf(stderr, "ssc charts: cannot write %s\n", (out / "simulator.csv").c_str());
+  if (!WriteWholeFile((out / "simulator.csv").string(), FidelityCsv(rows), &error)) {
+    std::fprintf(stderr, "ssc charts: %s\n", error.c_str());
     return 1;
   }
   const std::string png = (out / "speed_accuracy.png").string();

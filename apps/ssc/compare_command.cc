@@ -1,4 +1,7 @@
 // ssc compare: the twin against a robot log (compare/comparison.h does the work).
+#include <unistd.h>
+
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -86,6 +89,24 @@ int RunCompareCommand(int argc, char** argv) {
   o.processing.tcp_offset_m = tcp_mm * 1e-3;
   ParseLogFrame(frame, &o.frame);
 
+  // Progress on stderr once a replay has run 2 s (a long log): a line per 10 %, or a bar on a
+  // terminal.
+  const bool tty = isatty(STDERR_FILENO);
+  const auto start = std::chrono::steady_clock::now();
+  int shown_pct = -1;
+  o.progress = [&](double fraction) {
+    const double elapsed_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const int pct = static_cast<int>(fraction * 100);
+    if (elapsed_s < 2 || pct == shown_pct || (!tty && pct % 10 != 0)) return;
+    shown_pct = pct;
+    const double eta_s = fraction > 0 ? elapsed_s * (1 - fraction) / fraction : 0;
+    std::fprintf(stderr,
+                 tty ? "\rssc compare: replay %3d%% (%.0f s, ETA %.0f s) %s"
+                     : "ssc compare: replay %3d%% (%.0f s, ETA %.0f s)%s\n",
+                 pct, elapsed_s, eta_s, tty && pct == 100 ? "\n" : "");
+    std::fflush(stderr);
+  };
   CompareResult r;
   std::string error;
   if (!RunComparison(o, &r, &error)) {

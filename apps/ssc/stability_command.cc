@@ -7,6 +7,7 @@
 
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
+#include "common/output_file.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/trial.h"
 #include "studies/stability_study.h"
@@ -69,11 +70,8 @@ int RunStabilityCommand(int argc, char** argv) {
                 largest_ms);
   }
   const std::filesystem::path csv = std::filesystem::path(out_dir) / "stability.csv";
-  std::ofstream file(csv);
-  file << StabilityCsv(result);
-  file.close();
-  if (!file) {
-    std::fprintf(stderr, "ssc stability: cannot write %s\n", csv.c_str());
+  if (std::string e; !WriteWholeFile(csv.string(), StabilityCsv(result), &e)) {
+    std::fprintf(stderr, "ssc stability: %s\n", e.c_str());
     return 1;
   }
   std::printf("wrote %s\n", csv.c_str());
