@@ -5,13 +5,15 @@
 #include <sstream>
 
 #include "common/strict_number.h"
+#include "controller/pure/fast_following.h"
 #include "controller/pure/published_controller.h"
 
 namespace ssc {
 
 const std::vector<ControllerType>& ControllerTypes() {
   // A new controller: its ControllerType here (the published law stays first: the default).
-  static const std::vector<ControllerType> kTypes = {PublishedControllerType()};
+  static const std::vector<ControllerType> kTypes = {PublishedControllerType(),
+                                                     FastFollowingControllerType()};
   return kTypes;
 }
 

@@ -1,0 +1,145 @@
+// Fast following's pure logic: the adaptive step's bounds and trends, the turn measurement, and
+// steps taken from the arm's target.
+#include "controller/pure/fast_following.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace ssc {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+TEST(AdaptiveStepTest, StaysWithinItsBoundsAndShrinksWithTurnAndWeakSignal) {
+  FastFollowingParams p;
+  p.step_max_mm = 10;
+  p.step_min_mm = 4;
+  p.strength_pa = 50;
+  p.turn_slow_deg = 30;
+  p.timing = 0;
+  EXPECT_DOUBLE_EQ(AdaptiveStepMm(p, 500, 0, 1), 10);  // straight, strong: the longest
+  // A turn of turn_slow over a step halves it; a sharper one takes it to the floor.
+  EXPECT_DOUBLE_EQ(AdaptiveStepMm(p, 500, 30 * kPi / 180, 1), 5);
+  EXPECT_DOUBLE_EQ(AdaptiveStepMm(p, 500, -30 * kPi / 180, 1), 5);  // either sense
+  EXPECT_DOUBLE_EQ(AdaptiveStepMm(p, 500, kPi, 1), 4);
+  EXPECT_DOUBLE_EQ(AdaptiveStepMm(p, 30, 0, 1), 6);  // weak: in proportion
+  EXPECT_DOUBLE_EQ(AdaptiveStepMm(p, 0, 0, 1), 4);
+  EXPECT_DOUBLE_EQ(AdaptiveStepMm(p, -5, 0, 1), 4);
+  for (double s : {0.0, 10.0, 60.0, 1e6})
+    for (double turn : {0.0, 0.1, 1.0, 3.0}) {
+      const double step = AdaptiveStepMm(p, s, turn, 1);
+      EXPECT_GE(step, p.step_min_mm);
+      EXPECT_LE(step, p.step_max_mm);
+    }
+}
+
+TEST(AdaptiveStepTest, FollowsTheMeasuredPeriodWithinHalfAndTwice) {
+  FastFollowingParams p;
+  p.step_max_mm = 10;
+  p.strength_pa = 0;
+  EXPECT_DOUBLE_EQ(AdaptiveStepMm(p, 0, 0, 1.5), 15);
+  EXPECT_DOUBLE_EQ(AdaptiveStepMm(p, 0, 0, 0.1), 5);
+  EXPECT_DOUBLE_EQ(AdaptiveStepMm(p, 0, 0, 9), 20);
+  EXPECT_DOUBLE_EQ(AdaptiveStepMm(p, 0, 0, std::nan("")), 10);
+  p.timing = 0;
+  EXPECT_DOUBLE_EQ(AdaptiveStepMm(p, 0, 0, 1.5), 10);
+}
+
+TEST(SignedAngleTest, CounterClockwiseIsPositive) {
+  EXPECT_NEAR(SignedAngle({1, 0}, {0, 1}), kPi / 2, 1e-12);
+  EXPECT_NEAR(SignedAngle({0, 1}, {1, 0}), -kPi / 2, 1e-12);
+  EXPECT_NEAR(SignedAngle({1, 0}, {-1, 0}), kPi, 1e-12);
+  EXPECT_EQ(SignedAngle({0, 0}, {1, 0}), 0);
+}
+
+// The four chambers of a cup on an edge whose object lies toward `toward` (tool frame, unit):
+// each chamber reads more the further its centre lies toward the object.
+std::array<double, 4> Straddling(std::array<double, 2> toward, double covered, double open) {
+  std::array<double, 4> p{};
+  const double s = std::sqrt(0.5);
+  const std::array<std::array<double, 2>, 4> dir = {{{s, -s}, {-s, -s}, {-s, s}, {s, s}}};
+  for (int i = 0; i < 4; ++i) {
+    const double along = dir[i][0] * toward[0] + dir[i][1] * toward[1];
+    p[i] = 0.5 * (covered + open) + 0.5 * (covered - open) * along;
+  }
+  return p;
+}
+
+ControllerInput At(double t, double x, double y, std::array<double, 4> p) {
+  ControllerInput in;
+  in.t_s = t;
+  in.tool_m = {x, y, 0.01};
+  in.p_pa = p;
+  return in;
+}
+
+TEST(FastFollowingTest, OnAStraightEdgeTheStepIsTheLawsDirectionAtTheLongestStep) {
+  ControllerContext context;
+  FastFollowingParams p;
+  p.step_max_mm = 8;
+  p.lag_gain = 0;
+  FastFollowingController c(context, p);
+  const std::array<double, 4> pressures = Straddling({0, 1}, 200, 10);
+  const ControllerCommand cmd = c.Step(At(0, 0, 0, pressures));
+  const ContourStep law = ComputeContourStep(pressures, context.law);
+  ASSERT_TRUE(law.moving);
+  const double along = cmd.step_m[0] * law.along_edge[0] + cmd.step_m[1] * law.along_edge[1];
+  EXPECT_NEAR(along, 8e-3 / std::sqrt(1 + law.cf * law.cf), 1e-12);
+  EXPECT_EQ(cmd.height_offset_m, 0.0);
+}
+
+TEST(FastFollowingTest, TheArmsLagAlongTheEdgeIsAddedSoTheTargetAdvancesByTheStep) {
+  ControllerContext context;
+  FastFollowingParams p;
+  p.step_max_mm = p.step_min_mm = 8;
+  p.strength_pa = 0;
+  p.timing = 0;
+  const std::array<double, 4> pressures = Straddling({0, 1}, 200, 10);
+  FastFollowingController lagging(context, p);
+  const ControllerCommand first = lagging.Step(At(0, 0, 0, pressures));
+  // The arm covered only half of the first step by the next iteration.
+  const ControllerCommand second =
+      lagging.Step(At(0.15, 0.5 * first.step_m[0], 0.5 * first.step_m[1], pressures));
+  const double first_len = std::hypot(first.step_m[0], first.step_m[1]);
+  const double second_len = std::hypot(second.step_m[0], second.step_m[1]);
+  EXPECT_NEAR(second_len, 1.5 * first_len, 0.05 * first_len);
+  p.lag_gain = 0;
+  FastFollowingController fixed(context, p);
+  fixed.Step(At(0, 0, 0, pressures));
+  const ControllerCommand no_lag =
+      fixed.Step(At(0.15, 0.5 * first.step_m[0], 0.5 * first.step_m[1], pressures));
+  EXPECT_NEAR(std::hypot(no_lag.step_m[0], no_lag.step_m[1]), first_len, 1e-12);
+}
+
+TEST(FastFollowingTest, AnEdgeThatTurnsIsMeasuredAndSlowsTheStep) {
+  ControllerContext context;
+  FastFollowingParams p;
+  p.step_max_mm = 8;
+  p.step_min_mm = 2;
+  p.strength_pa = 0;
+  p.turn_slow_deg = 10;
+  p.turn_filter = 1;
+  p.lag_gain = 0;
+  p.timing = 0;
+  FastFollowingController c(context, p);
+  // The object's direction turns by 0.2 rad per 5 mm travelled: 40 rad/m.
+  c.Step(At(0, 0, 0, Straddling({0, 1}, 200, 10)));
+  c.Step(At(0.15, 0.005, 0, Straddling({-std::sin(0.2), std::cos(0.2)}, 200, 10)));
+  // The differential points toward the object: it turned by 0.2 rad (in the tool frame's
+  // sense) over the 5 mm travelled; a turn of 18 deg over a step of 8 mm (turn_slow 10 deg)
+  // takes the step to 8 / (1 + 1.83) mm.
+  EXPECT_NEAR(std::fabs(c.turn_per_m()), 40, 1e-6);
+  EXPECT_NEAR(c.last_step_mm(), 8 / (1 + 0.32 * 180 / kPi / 10), 1e-9);
+}
+
+TEST(FastFollowingTest, InTheDeadBandItHolds) {
+  ControllerContext context;
+  FastFollowingController c(context, FastFollowingParams{});
+  const ControllerCommand cmd = c.Step(At(0, 0, 0, {3, 3, 3, 3}));
+  EXPECT_EQ(cmd.step_m[0], 0.0);
+  EXPECT_EQ(cmd.step_m[1], 0.0);
+}
+
+}  // namespace
+}  // namespace ssc
