@@ -113,6 +113,19 @@ class ViewerTest(unittest.TestCase):
         # Pressed on the disk at 3 s: the overlay reads the sealed cup, not 0.
         self.assertGreater(p[0], 0)  # (last row checked is the follow one)
 
+    def test_cup_camera_is_a_close_up(self):
+        shot = os.path.join(self.tmp, "cup.png")
+        r = run([XVFB, "-a", "-s", "-screen 0 1280x720x24", SSC, "view", "--camera", "cup",
+                 "--screenshot", shot, "--time", "6", "--seed", "3"])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        def orange_share(path):
+            img = mpimg.imread(path)[:, :, :3]
+            r, g, b = img[..., 0], img[..., 1], img[..., 2]
+            w = img.shape[1] * 5 // 8  # left of the plots
+            return float(((r > 0.2) & (r > 1.3 * g) & (g > 1.5 * b))[:, :w].mean())
+        # The cup fills many times the pixels of the overview's ~30-pixel cup.
+        self.assertGreater(orange_share(shot), 10 * orange_share(self.png))
+
     def test_scene_option_as_in_ssc_trial(self):
         # ssc trial --scene X and ssc view --scene X: the same option.
         shot = os.path.join(self.tmp, "gantry.png")

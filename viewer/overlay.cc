@@ -93,7 +93,7 @@ void PressureFigures::Reset() {
   for (mjvFigure* f : {&pressures_, &correction_}) {
     mjv_defaultFigure(f);
     f->flg_extend = 1;
-    f->gridsize[0] = 5;
+    f->gridsize[0] = 6;  // five intervals: four of data, one for the legend
     f->figurergba[3] = 0.5f;
     f->linewidth = 2;
     std::snprintf(f->xformat, sizeof(f->xformat), "%%.1f");
@@ -159,26 +159,38 @@ void PressureFigures::Add(const OverlayValues& v, const ContourLawParams& law) {
     if (first + 4 * interval >= t) break;
     interval = k;
   }
+  // One more interval on the right than the data fills: the legends sit there (top right),
+  // over no data.
   for (mjvFigure* f : {&pressures_, &correction_}) {
     f->range[0][0] = static_cast<float>(interval * std::floor(first / interval));
-    f->range[0][1] = f->range[0][0] + static_cast<float>(4 * interval);
+    f->range[0][1] = f->range[0][0] + static_cast<float>(5 * interval);
     std::snprintf(f->xformat, sizeof(f->xformat), interval < 1 ? "%%.2g" : "%%.0f");
   }
 }
+
+namespace {
+// Noise about ambient printed at 0 decimals reads "-0": values within half the last printed
+// digit of zero print as 0.
+double NoNegativeZero(double v, double half_digit = 0.5) {
+  return std::fabs(v) < half_digit ? 0.0 : v;
+}
+}  // namespace
 
 std::string TrialStatusText(const ContourTrial& trial, const OverlayValues& v, double rtf,
                             bool paused, double speed, const ChamberPressureDiagnostics* sensor) {
   const ChamberPressureSample* sample = sensor ? &sensor->last_sample() : nullptr;
   const TrialConfig& c = trial.config();
-  // Sealed share of each chamber's opening (the sensor's view).
-  char sealed[160] = "sealed area: (no sample yet)";
+  // A chamber's opening can be mostly covered and still read ambient through a leak under the
+  // lip: both are shown, so a covered share beside 0 Pa reads as "open through the leak".
+  char sealed[200] = "covered / leak: (no sample yet)";
   if (sample && sample->time_s >= 0) {
     const double quarter = sensor->config().geometry.ChamberOpeningArea();
-    std::snprintf(
-        sealed, sizeof(sealed),
-        "sealed area  1 SE %3.0f%%  2 NE %3.0f%%  3 NW %3.0f%%  4 SW %3.0f%%",
-        100 * sample->sealed_area_m2[0] / quarter, 100 * sample->sealed_area_m2[1] / quarter,
-        100 * sample->sealed_area_m2[2] / quarter, 100 * sample->sealed_area_m2[3] / quarter);
+    int n = std::snprintf(sealed, sizeof(sealed), "covered %% / leak mm2 ");
+    const char* names[4] = {"SE", "NE", "NW", "SW"};
+    for (int k = 0; k < 4 && n > 0 && n < static_cast<int>(sizeof(sealed)); ++k) {
+      n += std::snprintf(sealed + n, sizeof(sealed) - n, " %s %.0f/%.1f", names[k],
+                         100 * sample->sealed_area_m2[k] / quarter, sample->leak_area_m2[k] * 1e6);
+    }
   }
   char timing[96];
   if (rtf >= 0) {
@@ -198,8 +210,10 @@ std::string TrialStatusText(const ContourTrial& trial, const OverlayValues& v, d
                 "%s\n"
                 "%s",
                 c.law.p_ref_pa, c.law.beta, c.law.step_mm, static_cast<unsigned long long>(c.seed),
-                PhaseName(v.phase), OutcomeName(r.outcome), v.p_pa[0], v.p_pa[1], v.p_pa[2],
-                v.p_pa[3], v.mean_pa, v.dpx_pa, v.dpy_pa, v.cf, v.iterations,
+                PhaseName(v.phase), OutcomeName(r.outcome), NoNegativeZero(v.p_pa[0]),
+                NoNegativeZero(v.p_pa[1]), NoNegativeZero(v.p_pa[2]), NoNegativeZero(v.p_pa[3]),
+                NoNegativeZero(v.mean_pa, 0.05), NoNegativeZero(v.dpx_pa, 0.05),
+                NoNegativeZero(v.dpy_pa, 0.05), NoNegativeZero(v.cf, 0.005), v.iterations,
                 trial.phase() == TrialPhase::kDone ? r.swept_deg : trial.swept_deg(),
                 trial.path().size(), sealed, timing);
   return buf;

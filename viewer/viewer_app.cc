@@ -311,6 +311,13 @@ int RunViewer(const ViewerOptions& options) {
   mj_forward(s->m, s->d);
   s->cam.azimuth = 225;
   s->cam.elevation = -25;
+  // --camera: the start of T's cycle.
+  if (options.camera == ViewerCamera::kCup) {
+    s->close_up = true;
+  } else if (options.camera == ViewerCamera::kFree) {
+    s->tracking = false;
+    mjv_defaultFreeCamera(s->m, &s->cam);
+  }
   FollowCup(s);
   s->speed = options.speed;
 

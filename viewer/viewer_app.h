@@ -10,6 +10,10 @@
 
 namespace ssc {
 
+// The camera at the start (T cycles through them): the whole arm and the cup (a close-up in
+// scenes without an arm), the cup alone close up and following it, or MuJoCo's free camera.
+enum class ViewerCamera { kOverview, kCup, kFree };
+
 struct ViewerOptions {
   std::string scene_path;
   TrialConfig config;      // the trial the controller runs
@@ -17,6 +21,7 @@ struct ViewerOptions {
   double time_s = 5.0;     // simulated seconds before the screenshot
   int width = 1280, height = 720;
   double speed = 1.0;  // simulated seconds per wall second (slow motion < 1)
+  ViewerCamera camera = ViewerCamera::kOverview;
   // Called once the display, the scene and the trial are known to work, before anything is
   // written: creates the output locations; returns 0 or the exit code (message printed).
   std::function<int()> create_outputs;

@@ -4,11 +4,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <thread>
 
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
+#include "apps/ssc/progress.h"
 #include "apps/ssc/trial_options.h"
 #include "runtime/mujoco_model.h"
 #include "studies/job_runner.h"
@@ -41,7 +43,8 @@ int RunSweepCommand(int argc, char** argv) {
   cmd.Integer("threads", &threads, "worker threads", NumberRange::Closed(1, 256));
   cmd.OutputDir("out", &out_dir, "output directory (sweep.csv, success_maps.png)");
   cmd.Flag("no-plot", &no_plot, "skip the PNG plot");
-  cmd.Flag("no-progress", &no_progress, "no progress bar even on a terminal");
+  cmd.Flag("no-progress", &no_progress,
+           "no progress (a bar on a terminal, a line per 5 % of the trials otherwise)");
   cmd.Flag("no-shared-approach", &no_shared_approach,
            "simulate every trial's approach and move to the start point itself (by default "
            "each distinct approach is simulated once and shared; the rows are the same)");
@@ -79,24 +82,13 @@ int RunSweepCommand(int argc, char** argv) {
   }
   if (int rc = cmd.CreateOutputs(); rc != 0) return rc;
   const bool rank0 = JobRunnerRank() == 0;
-  const bool bar = rank0 && !no_progress && isatty(STDERR_FILENO);
-  auto progress = [&](const SweepProgress& s) {
-    if (!bar) return;
-    const int ran = s.done - s.skipped;
-    const double rate = s.elapsed_s > 0 ? ran / s.elapsed_s : 0;
-    const double eta = rate > 0 ? (s.total - s.done) / rate : 0;
-    const int width = 30;
-    const int filled = s.total ? width * s.done / s.total : width;
-    std::fprintf(stderr, "\r[%.*s%*s] %d/%d trials  %.1f trials/s  ETA %.0f s ", filled,
-                 "##############################", width - filled, "", s.done, s.total, rate, eta);
-    std::fflush(stderr);
-  };
+  TrialProgress progress("ssc sweep", rank0 && !no_progress);
   SweepSummary summary;
-  if (!RunSweep(model.get(), spec, progress, &summary, &error)) {
+  if (!RunSweep(model.get(), spec, std::ref(progress), &summary, &error)) {
     std::fprintf(stderr, "ssc sweep: %s\n", error.c_str());
     return 1;
   }
-  if (bar) std::fprintf(stderr, "\n");
+  progress.Finish();
   if (!rank0) return summary.interrupted ? 130 : 0;
   std::printf(
       "sweep: %d trials (%d already in %s, %d run) in %.1f s wall on %d rank(s) x %d "

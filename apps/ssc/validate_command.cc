@@ -5,11 +5,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <thread>
 
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
+#include "apps/ssc/progress.h"
 #include "apps/ssc/trial_options.h"
 #include "runtime/mujoco_model.h"
 #include "studies/job_runner.h"
@@ -40,7 +42,8 @@ int RunValidateCommand(int argc, char** argv) {
   cmd.Integer("threads", &threads, "worker threads", NumberRange::Closed(1, 256));
   cmd.OutputDir("out", &out_dir, "output directory");
   cmd.Flag("no-plot", &no_plot, "skip the PNG figure");
-  cmd.Flag("no-progress", &no_progress, "no progress bar even on a terminal");
+  cmd.Flag("no-progress", &no_progress,
+           "no progress (a bar on a terminal, a line per 5 % of the trials otherwise)");
   cmd.Flag("no-shared-approach", &no_shared_approach,
            "simulate every trial's approach itself (as ssc sweep --no-shared-approach)");
   AddControllerOptions(&cmd, &settings.controller, &settings.controller_params,
@@ -76,21 +79,17 @@ int RunValidateCommand(int argc, char** argv) {
   }
   if (int rc = cmd.CreateOutputs(); rc != 0) return rc;
   const bool rank0 = JobRunnerRank() == 0;
-  const bool bar = rank0 && !no_progress && isatty(STDERR_FILENO);
-  auto progress = [&](const SweepProgress& s) {
-    if (!bar) return;
-    std::fprintf(stderr, "\r%d/%d trials  %.0f s ", s.done, s.total, s.elapsed_s);
-    std::fflush(stderr);
-  };
+  TrialProgress progress("ssc validate", rank0 && !no_progress);
   MapScore score;
   SweepSummary summary;
   std::vector<MetricTarget> fig6;
   MapCeilings ceilings;
-  if (!RunValidation(model.get(), spec, progress, &score, &summary, &error, &fig6, &ceilings)) {
+  if (!RunValidation(model.get(), spec, std::ref(progress), &score, &summary, &error, &fig6,
+                     &ceilings)) {
     std::fprintf(stderr, "ssc validate: %s\n", error.c_str());
     return 1;
   }
-  if (bar) std::fprintf(stderr, "\n");
+  progress.Finish();
   if (!rank0) return 0;
   std::printf("%-6s %-5s %-7s %-9s %-6s %-9s %-8s %-8s %s\n", "dL_mm", "beta", "Pref_Pa",
               "published", "twin3", "p(N)", "P(class)", "surface", "failures");

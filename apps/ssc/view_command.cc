@@ -26,6 +26,11 @@ int RunViewCommand(int argc, char** argv) {
   long width = 1280, height = 720;
   cmd.Positional("SCENE", &scene, "scene name, path or test object", false);
   cmd.Text("scene", &scene_option, "the same as SCENE (as in ssc trial --scene)");
+  std::string camera = "overview";
+  cmd.Choice("camera", &camera,
+             "camera at start: overview (the arm and the cup), cup (a close-up that follows the "
+             "cup), free (MuJoCo's); T cycles them",
+             {"overview", "cup", "free"});
   AddLawOptions(&cmd, &v.config.law);
   cmd.Seed("seed", &v.config.seed, "sensor noise seed");
   cmd.Number("speed", &v.speed, "simulated seconds per wall second at start (- / = change it)", "",
@@ -45,6 +50,9 @@ int RunViewCommand(int argc, char** argv) {
                     "' name different scenes: give one");
   }
   if (scene.empty()) scene = scene_option.empty() ? "disk_benchmark" : scene_option;
+  v.camera = camera == "cup"    ? ViewerCamera::kCup
+             : camera == "free" ? ViewerCamera::kFree
+                                : ViewerCamera::kOverview;
   std::string error;
   v.width = static_cast<int>(width);
   v.height = static_cast<int>(height);

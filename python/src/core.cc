@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -288,6 +289,63 @@ nb::dict CellsDict(const std::vector<CellScore>& cells) {
   d["surface_p"] = Column(surface_p);          // the smooth surface's rate (NaN: none fitted)
   return d;
 }
+
+// A study's progress for Python: None (quiet), True (a line on sys.stderr each time another 5 %
+// of the trials is done) or a callable progress(done, total, elapsed_s). Called from the
+// study's worker threads, which hold no GIL: it takes the GIL for each call. An exception in
+// the callable stops further calls and is raised once the study returns (Raise()).
+class PyProgress {
+ public:
+  PyProgress(nb::object progress, std::string name)
+      : progress_(std::move(progress)), name_(std::move(name)) {
+    if (!progress_.is_none() && !nb::isinstance<nb::bool_>(progress_) &&
+        !PyCallable_Check(progress_.ptr())) {
+      throw nb::type_error("progress must be None, True or a callable (done, total, elapsed_s)");
+    }
+  }
+  std::function<void(const SweepProgress&)> Callback() {
+    if (progress_.is_none() || (nb::isinstance<nb::bool_>(progress_) && !nb::cast<bool>(progress_)))
+      return nullptr;
+    return [this](const SweepProgress& s) { Report(s); };
+  }
+  void Raise() {
+    if (error_) {
+      std::unique_ptr<nb::python_error> e = std::move(error_);
+      e->restore();
+      throw nb::python_error();
+    }
+  }
+
+ private:
+  void Report(const SweepProgress& s) {
+    nb::gil_scoped_acquire gil;
+    if (error_ || s.total <= 0) return;
+    try {
+      if (nb::isinstance<nb::bool_>(progress_)) {
+        const int percent = 100 * s.done / s.total;
+        if (percent < next_percent_ && s.done < s.total) return;
+        next_percent_ = (percent / 5 + 1) * 5;
+        const int ran = s.done - s.skipped;
+        const double rate = s.elapsed_s > 0 ? ran / s.elapsed_s : 0;
+        const double eta = rate > 0 ? (s.total - s.done) / rate : 0;
+        char line[160];
+        std::snprintf(line, sizeof line,
+                      "%s: %d/%d trials (%d %%), %.1f trials/s, %.0f s, ETA %.0f s\n",
+                      name_.c_str(), s.done, s.total, percent, rate, s.elapsed_s, eta);
+        nb::module_::import_("sys").attr("stderr").attr("write")(std::string(line));
+      } else {
+        progress_(s.done, s.total, s.elapsed_s);
+      }
+    } catch (nb::python_error& e) {
+      error_ = std::make_unique<nb::python_error>(std::move(e));
+    }
+  }
+
+  nb::object progress_;
+  std::string name_;
+  int next_percent_ = 0;
+  std::unique_ptr<nb::python_error> error_;
+};
 
 // A trial that Python steps one control iteration at a time (the Gymnasium environment), with
 // the law's step or one given per iteration.
@@ -663,7 +721,8 @@ NB_MODULE(_core, m) {
       "sweep",
       [](const std::string& scene, std::vector<double> pref, std::vector<double> beta,
          std::vector<double> step_mm, int repeats, std::uint64_t seed, int threads,
-         const std::string& out_csv) {
+         const std::string& out_csv, nb::object progress) {
+        PyProgress reporter(std::move(progress), "ssc_twin.sweep");
         SweepSpec spec;
         spec.scene_name = scene;
         spec.pref_pa = std::move(pref);
@@ -681,8 +740,9 @@ NB_MODULE(_core, m) {
         bool ok = false;
         {
           nb::gil_scoped_release release;
-          ok = RunSweep(model.get(), spec, nullptr, &summary, &error);
+          ok = RunSweep(model.get(), spec, reporter.Callback(), &summary, &error);
         }
+        reporter.Raise();
         if (!ok) Fail(error);
         return Dict({{"csv", nb::cast(out_csv)},
                      {"total", nb::cast(summary.total)},
@@ -691,13 +751,17 @@ NB_MODULE(_core, m) {
                      {"wall_s", nb::cast(summary.wall_s)}});
       },
       "scene"_a = "disk_benchmark_gantry", "pref"_a, "beta"_a, "step_mm"_a, "repeats"_a = 3,
-      "seed"_a = 1, "threads"_a = 1, "out_csv"_a,
-      "A P_ref x beta x step x repeats grid of trials into a resumable CSV (ssc sweep).");
+      "seed"_a = 1, "threads"_a = 1, "out_csv"_a, "progress"_a = nb::none(),
+      "A P_ref x beta x step x repeats grid of trials into a resumable CSV (ssc sweep). "
+      "progress: None (quiet), True (a line on stderr per 5 % of the trials) or a callable "
+      "progress(done, total, elapsed_s).");
 
   m.def(
       "validate",
       [](const std::string& map, const std::string& out_dir, const std::string& scene, int seeds,
-         std::uint64_t seed, int threads, double timeout_s, const std::string& effects) {
+         std::uint64_t seed, int threads, double timeout_s, const std::string& effects,
+         nb::object progress) {
+        PyProgress reporter(std::move(progress), "ssc_twin.validate");
         ValidateSpec spec;
         spec.map_path = map.empty() ? ResourceDir() + "/data/published/success_map_dl5.csv" : map;
         spec.scene_name = scene;
@@ -733,9 +797,10 @@ NB_MODULE(_core, m) {
         bool ok = false;
         {
           nb::gil_scoped_release release;
-          ok = RunValidation(model.get(), spec, nullptr, &score, &summary, &error, nullptr,
-                             &ceilings);
+          ok = RunValidation(model.get(), spec, reporter.Callback(), &score, &summary, &error,
+                             nullptr, &ceilings);
         }
+        reporter.Raise();
         if (!ok) Fail(error);
         nb::dict d;
         d["scores"] = Dict({{"cells", nb::cast(score.cells_scored)},
@@ -782,10 +847,12 @@ NB_MODULE(_core, m) {
       },
       "map"_a = "", "out_dir"_a = "out/validate", "scene"_a = "disk_benchmark_gantry",
       "seeds"_a = 10, "seed"_a = 1, "threads"_a = 1, "timeout_s"_a = 0.0, "effects"_a = "default",
+      "progress"_a = nb::none(),
       "The twin on every cell of a published success map, scored (ssc validate). map: CSV "
       "step_mm,beta,pref_pa,successes_of_3 ('' = the published dL 5 mm map). Writes "
       "out_dir/trials.csv (resumable), cells.csv and validate.json; returns the scores, the "
-      "per-cell results (NumPy arrays, cells.csv's columns) and the run summary.");
+      "per-cell results (NumPy arrays, cells.csv's columns) and the run summary. progress: as "
+      "sweep's.");
 
   nb::class_<EdgeProbe3d>(m, "Probe",
                           "The cup on a mocap body placed over an edge; reads the sensor.")

@@ -98,6 +98,31 @@ class PackageTest(unittest.TestCase):
                                threads=1, out_csv=path)
         self.assertEqual(again["skipped"], 2)  # resumed: nothing runs twice
 
+    def test_sweep_reports_progress(self):
+        import ssc_twin
+        calls = []
+        path = os.path.join(self.tmp, "progress.csv")
+        ssc_twin.sweep(pref=[100, 1000], beta=[2], step_mm=[7.5], repeats=1, seed=6, threads=2,
+                       out_csv=path, progress=lambda *a: calls.append(a))
+        self.assertEqual([c[:2] for c in calls], [(1, 2), (2, 2)])
+        self.assertTrue(all(c[2] >= 0 for c in calls))
+        # True: lines on stderr (a fresh interpreter, to read them).
+        script = ("import ssc_twin; ssc_twin.sweep(pref=[100], beta=[2], step_mm=[7.5], "
+                  "repeats=2, seed=6, out_csv=%r, progress=True)" %
+                  os.path.join(self.tmp, "progress_lines.csv"))
+        r = run([sys.executable, "-c", script], cwd=self.tmp)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("ssc_twin.sweep: 2/2 trials (100 %)", r.stderr)
+
+        def fails(done, total, elapsed_s):
+            raise KeyError("from the callback")
+        with self.assertRaisesRegex(KeyError, "from the callback"):
+            ssc_twin.sweep(pref=[100], beta=[2], step_mm=[7.5], repeats=1, seed=7,
+                           out_csv=os.path.join(self.tmp, "progress_fails.csv"), progress=fails)
+        with self.assertRaisesRegex(TypeError, "progress must be"):
+            ssc_twin.sweep(pref=[100], beta=[2], step_mm=[7.5], repeats=1,
+                           out_csv=os.path.join(self.tmp, "progress_bad.csv"), progress="yes")
+
     @unittest.skipUnless(SSC, "no ssc executable given")
     def test_validate_equals_the_cli(self):
         import ssc_twin
