@@ -44,10 +44,11 @@ list(REMOVE_ITEM SSC_EXPORTED_LIBRARIES ssc_warnings)  # static libraries list i
 target_link_libraries(ssc_all INTERFACE ${SSC_EXPORTED_LIBRARIES})
 set_target_properties(ssc_all PROPERTIES EXPORT_NAME ssc)
 
-# Installed `ssc` and the plugin find each other and MuJoCo through their rpath.
+# Installed `ssc` and the plugin find each other and MuJoCo through $ORIGIN-relative rpaths, so
+# the prefix can move. Installed: the plugin beside libmujoco in lib/; in the Python wheel the
+# plugin sits in ssc_twin/, libmujoco in ../mujoco.
 set_target_properties(ssc PROPERTIES INSTALL_RPATH "$ORIGIN/../${CMAKE_INSTALL_LIBDIR};${CMAKE_INSTALL_RPATH}")
-# In the Python wheel the plugin sits in ssc_twin/, libmujoco in ../mujoco.
-set_target_properties(ssc_plugin PROPERTIES INSTALL_RPATH "$ORIGIN/../mujoco;${CMAKE_INSTALL_RPATH}")
+set_target_properties(ssc_plugin PROPERTIES INSTALL_RPATH "$ORIGIN;$ORIGIN/../mujoco;${CMAKE_INSTALL_RPATH}")
 
 install(TARGETS ssc_all ssc_warnings ${SSC_EXPORTED_LIBRARIES} EXPORT sscTargets
         RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}"
@@ -72,33 +73,55 @@ install(DIRECTORY "${PROJECT_SOURCE_DIR}/tools/" DESTINATION "${SSC_INSTALL_DATA
 install(FILES "${PROJECT_SOURCE_DIR}/requirements.txt" DESTINATION "${SSC_INSTALL_DATADIR}")
 
 # Other packages' imported targets the libraries link (privately too: a static library passes
-# them on), e.g. NLopt::nlopt, nlohmann_json::nlohmann_json, MPI::MPI_CXX: the package config
-# finds each package again. Eigen, Threads and MuJoCo are handled there by name.
-set(SSC_CONFIG_PACKAGES)
-foreach(t ${SSC_EXPORTED_LIBRARIES})
-  get_target_property(_links ${t} LINK_LIBRARIES)
+# them on), e.g. NLopt::nlopt, nlohmann_json::nlohmann_json, MPI::MPI_CXX, Eigen3::Eigen,
+# mujoco::mujoco: per library, with what the libraries it links need, so that
+# find_package(ssc COMPONENTS control) looks for the pure control law's packages only.
+function(ssc_packages_of target out)
+  set(_packages)
+  get_target_property(_links ${target} LINK_LIBRARIES)
   foreach(l ${_links})
     if(l MATCHES "^([A-Za-z0-9_]+)::")
-      set(_package "${CMAKE_MATCH_1}")
-      if(NOT _package MATCHES "^(ssc|mujoco|Eigen3|Threads)$")
-        list(APPEND SSC_CONFIG_PACKAGES "${_package}")
-      endif()
+      list(APPEND _packages "${CMAKE_MATCH_1}")
+    elseif(TARGET "${l}" AND l MATCHES "^ssc_")
+      ssc_packages_of(${l} _inner)
+      list(APPEND _packages ${_inner})
     endif()
   endforeach()
+  list(REMOVE_DUPLICATES _packages)
+  set(${out} "${_packages}" PARENT_SCOPE)
+endfunction()
+set(SSC_CONFIG_COMPONENT_PACKAGES "")  # set(_ssc_packages_<component> ...) lines for the config
+set(SSC_CONFIG_COMPONENTS)
+foreach(t ${SSC_EXPORTED_LIBRARIES})
+  ssc_packages_of(${t} _packages)
+  get_target_property(_component ${t} EXPORT_NAME)
+  list(APPEND SSC_CONFIG_COMPONENTS ${_component})
+  string(APPEND SSC_CONFIG_COMPONENT_PACKAGES
+         "set(_ssc_packages_${_component} \"${_packages}\")\n")
+endforeach()
+set(SSC_CONFIG_PACKAGES)  # all of them (find_package(ssc) without components)
+foreach(t ${SSC_EXPORTED_LIBRARIES})
+  ssc_packages_of(${t} _packages)
+  list(APPEND SSC_CONFIG_PACKAGES ${_packages})
 endforeach()
 list(REMOVE_DUPLICATES SSC_CONFIG_PACKAGES)
 
-# MuJoCo as this build found it: a regular install (find_dependency) or the wheel's library.
+# Built against the PyPI wheel: its libmujoco goes into lib/ and its headers into include/ssc/
+# (beside ours, on the same include path), so the prefix needs nothing of the builder's venv.
+set(SSC_INSTALL_MUJOCO_LIBRARY "")
 if(SSC_MUJOCO_LIBRARY)
-  set(SSC_CONFIG_MUJOCO_LIBRARY "${SSC_MUJOCO_LIBRARY}")
-  set(SSC_CONFIG_MUJOCO_INCLUDE_DIR "${SSC_MUJOCO_INCLUDE_DIR}")
-else()
-  set(SSC_CONFIG_MUJOCO_LIBRARY "")
-  set(SSC_CONFIG_MUJOCO_INCLUDE_DIR "")
+  get_filename_component(_mujoco_name "${SSC_MUJOCO_LIBRARY}" NAME)
+  set(SSC_INSTALL_MUJOCO_LIBRARY "${CMAKE_INSTALL_LIBDIR}/${_mujoco_name}")
+  install(FILES "${SSC_MUJOCO_LIBRARY}" DESTINATION "${CMAKE_INSTALL_LIBDIR}")
+  install(DIRECTORY "${SSC_MUJOCO_INCLUDE_DIR}/mujoco" DESTINATION "${SSC_INSTALL_INCLUDEDIR}")
+endif()
+
+if(SSC_INSTALL_MUJOCO_LIBRARY)
+  set(SSC_CONFIG_MUJOCO_PATH_VARS SSC_INSTALL_MUJOCO_LIBRARY)
 endif()
 configure_package_config_file("${CMAKE_CURRENT_LIST_DIR}/sscConfig.cmake.in"
   "${PROJECT_BINARY_DIR}/sscConfig.cmake" INSTALL_DESTINATION "${SSC_INSTALL_CMAKEDIR}"
-  PATH_VARS SSC_INSTALL_DATADIR SSC_INSTALL_INCLUDEDIR)
+  PATH_VARS SSC_INSTALL_DATADIR SSC_INSTALL_INCLUDEDIR ${SSC_CONFIG_MUJOCO_PATH_VARS})
 write_basic_package_version_file("${PROJECT_BINARY_DIR}/sscConfigVersion.cmake"
   VERSION "${PROJECT_VERSION}" COMPATIBILITY SameMinorVersion)
 install(FILES "${PROJECT_BINARY_DIR}/sscConfig.cmake" "${PROJECT_BINARY_DIR}/sscConfigVersion.cmake"

@@ -62,9 +62,10 @@ if(NOT _ssc_found_mujoco)
   set_target_properties(mujoco::mujoco PROPERTIES
     IMPORTED_LOCATION "${SSC_MUJOCO_LIBRARY}"
     INTERFACE_INCLUDE_DIRECTORIES "${SSC_MUJOCO_INCLUDE_DIR}")
-  # The wheel's library has its full version as SONAME; the rpath lets binaries find it.
+  # The wheel's library has its full version as SONAME; the build rpath lets binaries in the
+  # build tree find it. `cmake --install` copies it into lib/ (cmake/Install.cmake): installed
+  # binaries find it there through $ORIGIN, never in the builder's venv.
   list(APPEND CMAKE_BUILD_RPATH "${SSC_MUJOCO_WHEEL_DIR}")
-  list(APPEND CMAKE_INSTALL_RPATH "${SSC_MUJOCO_WHEEL_DIR}")
   message(STATUS "MuJoCo: PyPI wheel ${_ssc_wheel_version} at ${SSC_MUJOCO_WHEEL_DIR}")
 endif()
 

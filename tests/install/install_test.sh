@@ -26,4 +26,30 @@ grep -qx "resources $prefix/share/ssc" out.txt || { echo "FAIL: not the installe
 grep -q "phase approach\|phase move\|phase follow" out.txt || { echo "FAIL: no trial"; exit 1; }
 env -u SSC_SOURCE_DIR -u SSC_RESOURCE_DIR "$prefix/bin/ssc" trial --stop-at 0.3 --no-plot --out "$tmp/t"
 [ ! -e "$tmp/MUJOCO_LOG.TXT" ] || { echo "FAIL: MUJOCO_LOG.TXT written"; exit 1; }
+# The prefix moved elsewhere (the original removed): nothing in it points into the builder's
+# venv, build or source tree; `ssc` runs from the copy with the copy's libmujoco and scenes; a
+# project that needs only the control law configures without MuJoCo, NLopt, nlohmann-json, MPI.
+moved="$tmp/moved/elsewhere"
+mkdir -p "$(dirname "$moved")"
+cp -a "$prefix" "$moved"
+rm -rf "$prefix" "$tmp/build"
+venv="$(cd "$src" && pwd)/.venv"
+for f in "$moved"/bin/ssc "$moved"/lib/*.so*; do
+  rp="$(readelf -d "$f" | sed -n 's/.*R\(UN\)\?PATH.*\[\(.*\)\]/\2/p')"
+  for part in ${rp//:/ }; do
+    case "$part" in '$ORIGIN'*|'') ;; *) echo "FAIL: $f has the absolute rpath $part"; exit 1 ;; esac
+  done
+done
+if grep -rl -e "$venv" -e "$build" -e "$src" "$moved/lib/cmake/ssc"; then
+  echo "FAIL: the package config names the builder's tree"; exit 1
+fi
+ldd "$moved/bin/ssc" | grep -q "libmujoco.* => $moved/bin/../lib/" ||
+  { ldd "$moved/bin/ssc"; echo "FAIL: libmujoco not from the prefix"; exit 1; }
+env -u SSC_SOURCE_DIR -u SSC_RESOURCE_DIR "$moved/bin/ssc" trial --stop-at 0.3 --no-plot \
+  --out "$tmp/moved_trial" >/dev/null
+cmake -S "$src/tests/install/downstream_control" -B "$tmp/control" \
+  -DCMAKE_PREFIX_PATH="$moved" -DCMAKE_BUILD_TYPE=Release >"$tmp/control.log" 2>&1 ||
+  { cat "$tmp/control.log"; exit 1; }
+cmake --build "$tmp/control" >"$tmp/control_build.log" 2>&1 || { cat "$tmp/control_build.log"; exit 1; }
+"$tmp/control/control_law" | grep -q "^step " || { echo "FAIL: control law"; exit 1; }
 echo "install test passed"
