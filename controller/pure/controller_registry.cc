@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "common/strict_number.h"
+#include "controller/pure/example_controller.h"
 #include "controller/pure/fast_following.h"
 #include "controller/pure/published_controller.h"
 
@@ -12,8 +13,8 @@ namespace ssc {
 
 const std::vector<ControllerType>& ControllerTypes() {
   // A new controller: its ControllerType here (the published law stays first: the default).
-  static const std::vector<ControllerType> kTypes = {PublishedControllerType(),
-                                                     FastFollowingControllerType()};
+  static const std::vector<ControllerType> kTypes = {
+      PublishedControllerType(), FastFollowingControllerType(), ExampleControllerType()};
   return kTypes;
 }
 

@@ -26,6 +26,7 @@
 #include "compare/frames.h"
 #include "compare/twin_log.h"
 #include "controller/pure/contour_law.h"
+#include "controller/pure/controller_registry.h"
 #include "controller/pure/robot_effects.h"
 #include "geometry/dimensions.h"
 #include "objects/object_mjcf.h"
@@ -38,6 +39,7 @@
 #include "runtime/tool_servo.h"
 #include "runtime/trial.h"
 #include "studies/edge_probe.h"
+#include "studies/object_study.h"
 #include "studies/object_trials.h"
 #include "studies/sweep.h"
 #include "studies/tool_variants.h"
@@ -346,6 +348,147 @@ class PyProgress {
   int next_percent_ = 0;
   std::unique_ptr<nb::python_error> error_;
 };
+
+// A Python object kept alive by C++ that may be dropped on a thread without the GIL (a worker
+// of a sweep): the reference is released under the GIL.
+struct PyRef {
+  explicit PyRef(nb::object o) : object(std::move(o)) {}
+  ~PyRef() {
+    nb::gil_scoped_acquire gil;
+    object.reset();
+  }
+  PyRef(const PyRef&) = delete;
+  PyRef& operator=(const PyRef&) = delete;
+  nb::object object;
+};
+
+// "TypeError: message" of a Python exception (its traceback is Python's to print).
+std::string PythonErrorText(const nb::python_error& e) {
+  return "Python " + nb::cast<std::string>(nb::str(e.type().attr("__name__"))) + ": " +
+         nb::cast<std::string>(nb::str(e.value()));
+}
+
+nb::dict LawDict(const ContourLawParams& law) {
+  return Dict({{"pref_pa", nb::cast(law.p_ref_pa)},
+               {"beta", nb::cast(law.beta)},
+               {"step_mm", nb::cast(law.step_mm)},
+               {"p_noise_pa", nb::cast(law.p_noise_pa)},
+               {"p_grasp_pa", nb::cast(law.p_grasp_pa)},
+               {"object_on_left", nb::cast(law.side == FollowSide::kObjectOnLeft)},
+               {"dead_band", nb::cast(law.dead_band)}});
+}
+
+// A Python callable as a controller (controller/pure/controller.h): called with a dict of the
+// host's reading, it returns the planar step (dx, dy) in m, tool frame, or a dict with "step_m"
+// and optionally "height_offset_m" and "lifted". Each call takes the GIL, so trials on several
+// threads call it one at a time. An exception or a malformed answer ends the trial as
+// controller_fault with the reason.
+class PyController : public Controller {
+ public:
+  PyController(std::shared_ptr<PyRef> fn, const ControllerContext& context)
+      : fn_(std::move(fn)), law_(context.law), period_s_(context.control_period_s) {}
+  ~PyController() override {
+    nb::gil_scoped_acquire gil;
+    fn_.reset();
+  }
+
+  ControllerCommand Step(const ControllerInput& in) override {
+    nb::gil_scoped_acquire gil;
+    ControllerCommand bad;
+    std::string answer_type;
+    bad.step_m = {std::nan(""), std::nan("")};
+    try {
+      nb::dict d;
+      d["t_s"] = in.t_s;
+      d["follow_s"] = in.follow_s;
+      d["iteration"] = in.iteration;
+      d["p_pa"] = nb::cast(in.p_pa);
+      d["ft_normal_n"] = in.ft_normal_n;
+      d["tool_m"] = nb::cast(in.tool_m);
+      d["tool_rotation"] = nb::cast(in.tool_rotation);
+      d["hold_z_m"] = in.hold_z_m;
+      d["control_period_s"] = period_s_;
+      d["law"] = LawDict(law_);
+      nb::object r = fn_->object(d);
+      answer_type = nb::cast<std::string>(nb::str(r.type().attr("__name__")));
+      ControllerCommand c;
+      if (nb::isinstance<nb::dict>(r)) {
+        nb::dict rd = nb::borrow<nb::dict>(r);
+        if (!rd.contains("step_m")) {
+          fault_ = "the controller's dict has no 'step_m'";
+          return bad;
+        }
+        c.step_m = nb::cast<std::array<double, 2>>(rd["step_m"]);
+        if (rd.contains("height_offset_m"))
+          c.height_offset_m = nb::cast<double>(rd["height_offset_m"]);
+        if (rd.contains("lifted")) c.lifted = nb::cast<bool>(rd["lifted"]);
+      } else {
+        c.step_m = nb::cast<std::array<double, 2>>(r);
+      }
+      fault_.clear();
+      return c;
+    } catch (const nb::python_error& e) {
+      fault_ = PythonErrorText(e);
+    } catch (const std::exception&) {
+      fault_ = "the controller returned " +
+               (answer_type.empty() ? "something" : "a " + answer_type) +
+               ", not (dx, dy) in m or a dict with 'step_m' (and height_offset_m, lifted)";
+    }
+    return bad;
+  }
+  std::string FaultDetail() const override { return fault_; }
+
+ private:
+  std::shared_ptr<PyRef> fn_;
+  ContourLawParams law_;
+  double period_s_;
+  std::string fault_;
+};
+
+// `controller`: a registered name (with `params` as --controller-param), a callable, or a class
+// whose instance (one per trial, made with no arguments) is the callable.
+ControllerChoice ChoiceFrom(const nb::object& controller, const std::string& params) {
+  ControllerChoice choice;
+  if (nb::isinstance<nb::str>(controller)) {
+    std::string error;
+    if (!ParseControllerChoice(nb::cast<std::string>(controller), params, &choice, &error))
+      Invalid(error);
+    return choice;
+  }
+  if (!PyCallable_Check(controller.ptr()))
+    Invalid("controller must be a registered name (" + ControllerNames() + ") or a callable");
+  if (!params.empty())
+    Invalid("controller_params apply to a registered controller, not a callable");
+  const bool per_trial = PyType_Check(controller.ptr());
+  auto ref = std::make_shared<PyRef>(controller);
+  std::string label =
+      nb::cast<std::string>(nb::str(nb::getattr(controller, "__name__", nb::str("python"))));
+  choice.name = "python:" + label;
+  choice.custom =
+      std::make_shared<const std::function<std::unique_ptr<Controller>(const ControllerContext&)>>(
+          [ref, per_trial](const ControllerContext& context) -> std::unique_ptr<Controller> {
+            if (!per_trial) return std::make_unique<PyController>(ref, context);
+            nb::gil_scoped_acquire gil;
+            try {
+              return std::make_unique<PyController>(std::make_shared<PyRef>(ref->object()),
+                                                    context);
+            } catch (const nb::python_error& e) {
+              // Made inside the trial's setup: a failure there is reported by the first step.
+              struct Failed : Controller {
+                explicit Failed(std::string why) : why_(std::move(why)) {}
+                ControllerCommand Step(const ControllerInput&) override {
+                  ControllerCommand c;
+                  c.step_m = {std::nan(""), std::nan("")};
+                  return c;
+                }
+                std::string FaultDetail() const override { return why_; }
+                std::string why_;
+              };
+              return std::make_unique<Failed>(PythonErrorText(e));
+            }
+          });
+  return choice;
+}
 
 // A trial that Python steps one control iteration at a time (the Gymnasium environment), with
 // the law's step or one given per iteration.
@@ -663,6 +806,26 @@ NB_MODULE(_core, m) {
                                     PhaseName(TrialPhase::kMoveToStart),
                                     PhaseName(TrialPhase::kFollow), PhaseName(TrialPhase::kDone)};
   });
+  m.def(
+      "controllers",
+      [] {
+        nb::dict d;
+        for (const ControllerType& t : ControllerTypes()) {
+          nb::list keys;
+          for (const ControllerParamKey& k : t.keys) {
+            keys.append(Dict({{"key", nb::cast(k.key)},
+                              {"unit", nb::cast(k.unit)},
+                              {"default", nb::cast(k.default_value)},
+                              {"min", nb::cast(k.min)},
+                              {"max", nb::cast(k.max)},
+                              {"what", nb::cast(k.what)}}));
+          }
+          d[t.name.c_str()] = Dict({{"what", nb::cast(t.what)}, {"keys", keys}});
+        }
+        return d;
+      },
+      "The registered controllers: name -> what it is and its parameter keys (unit, default, "
+      "range).");
   m.def("object_names", [] {
     std::vector<std::string> names;
     for (const ObjectSpec& s : AllObjects()) names.push_back(s.name);
@@ -688,7 +851,8 @@ NB_MODULE(_core, m) {
       "run_trial",
       [](const std::string& scene, double pref, double beta, double step_mm, std::uint64_t seed,
          const std::string& object, bool keep_log, double stop_at_s, double timeout_s,
-         const std::string& effects) {
+         const std::string& effects, const nb::object& controller,
+         const std::string& controller_params) {
         std::string scene_path = scene;
         TrialConfig config = MakeConfig(pref, beta, step_mm, seed, object, effects, &scene_path);
         SetTimeout(timeout_s, &config);
@@ -696,6 +860,7 @@ NB_MODULE(_core, m) {
           Invalid("stop_at_s = " + FormatNumber(stop_at_s) +
                   " is out of range [0, 3600] s (0: run to the end)");
         }
+        config.controller = ChoiceFrom(controller, controller_params);
         ModelPtr model = Load(scene_path);
         std::string error;
         TrialResult r;
@@ -712,18 +877,24 @@ NB_MODULE(_core, m) {
       },
       "scene"_a = "disk_benchmark", "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 7.5,
       "seed"_a = 1, "object"_a = "", "keep_log"_a = true, "stop_at_s"_a = 0.0, "timeout_s"_a = 0.0,
-      "effects"_a = "default",
+      "effects"_a = "default", "controller"_a = "published", "controller_params"_a = "",
       "One contour-following trial, as `ssc trial` runs it. effects: 'default' (the fitted set), "
       "'off' or key=value,... as --effects. object: a test object by name "
-      "(its arm scene; 'gantry' in scene picks the gantry one).");
+      "(its arm scene; 'gantry' in scene picks the gantry one). controller: a registered name "
+      "(controller_params as --controller-param) or a callable: f(reading) -> (dx, dy) m in the "
+      "tool frame, or a dict with step_m, height_offset_m, lifted (docs/controllers.md); a class "
+      "is instantiated once per trial.");
 
   m.def(
       "sweep",
       [](const std::string& scene, std::vector<double> pref, std::vector<double> beta,
          std::vector<double> step_mm, int repeats, std::uint64_t seed, int threads,
-         const std::string& out_csv, nb::object progress) {
+         const std::string& out_csv, const std::string& effects, const nb::object& controller,
+         const std::string& controller_params, nb::object progress) {
         PyProgress reporter(std::move(progress), "ssc_twin.sweep");
         SweepSpec spec;
+        if (std::string e; !ParseRobotEffects(effects, &spec.base.effects, &e)) Fail(e);
+        spec.base.controller = ChoiceFrom(controller, controller_params);
         spec.scene_name = scene;
         spec.pref_pa = std::move(pref);
         spec.beta = std::move(beta);
@@ -751,18 +922,21 @@ NB_MODULE(_core, m) {
                      {"wall_s", nb::cast(summary.wall_s)}});
       },
       "scene"_a = "disk_benchmark_gantry", "pref"_a, "beta"_a, "step_mm"_a, "repeats"_a = 3,
-      "seed"_a = 1, "threads"_a = 1, "out_csv"_a, "progress"_a = nb::none(),
+      "seed"_a = 1, "threads"_a = 1, "out_csv"_a, "effects"_a = "default",
+      "controller"_a = "published", "controller_params"_a = "", "progress"_a = nb::none(),
       "A P_ref x beta x step x repeats grid of trials into a resumable CSV (ssc sweep). "
-      "progress: None (quiet), True (a line on stderr per 5 % of the trials) or a callable "
-      "progress(done, total, elapsed_s).");
+      "controller as in run_trial (a callable is called under the GIL: threads > 1 run the "
+      "physics in parallel, the callable one call at a time). progress: None (quiet), True (a "
+      "line on stderr per 5 % of the trials) or a callable progress(done, total, elapsed_s).");
 
   m.def(
       "validate",
       [](const std::string& map, const std::string& out_dir, const std::string& scene, int seeds,
          std::uint64_t seed, int threads, double timeout_s, const std::string& effects,
-         nb::object progress) {
+         const nb::object& controller, const std::string& controller_params, nb::object progress) {
         PyProgress reporter(std::move(progress), "ssc_twin.validate");
         ValidateSpec spec;
+        spec.base.controller = ChoiceFrom(controller, controller_params);
         spec.map_path = map.empty() ? ResourceDir() + "/data/published/success_map_dl5.csv" : map;
         spec.scene_name = scene;
         spec.seed = seed;
@@ -847,12 +1021,60 @@ NB_MODULE(_core, m) {
       },
       "map"_a = "", "out_dir"_a = "out/validate", "scene"_a = "disk_benchmark_gantry",
       "seeds"_a = 10, "seed"_a = 1, "threads"_a = 1, "timeout_s"_a = 0.0, "effects"_a = "default",
-      "progress"_a = nb::none(),
+      "controller"_a = "published", "controller_params"_a = "", "progress"_a = nb::none(),
       "The twin on every cell of a published success map, scored (ssc validate). map: CSV "
       "step_mm,beta,pref_pa,successes_of_3 ('' = the published dL 5 mm map). Writes "
       "out_dir/trials.csv (resumable), cells.csv and validate.json; returns the scores, the "
-      "per-cell results (NumPy arrays, cells.csv's columns) and the run summary. progress: as "
-      "sweep's.");
+      "per-cell results (NumPy arrays, cells.csv's columns) and the run summary. controller as "
+      "in run_trial; progress as sweep's.");
+
+  m.def(
+      "objects",
+      [](const std::string& names, const std::string& out_dir, int seeds, std::uint64_t seed,
+         const std::string& scene_kind, double pref, double beta, double step_mm, int threads,
+         const std::string& effects, const nb::object& controller,
+         const std::string& controller_params) {
+        ObjectStudySpec spec;
+        std::string error;
+        if (!ObjectsByNames(names, &spec.objects, &error)) Invalid("objects: " + error);
+        if (seeds < 1 || seeds > 1000)
+          Invalid("seeds = " + std::to_string(seeds) + " is out of range [1, 1000]");
+        if (threads < 1 || threads > 256)
+          Invalid("threads = " + std::to_string(threads) + " is out of range [1, 256]");
+        if (scene_kind != "gantry" && scene_kind != "arm")
+          Invalid("scene_kind = '" + scene_kind + "' must be 'gantry' or 'arm'");
+        spec.seeds = seeds;
+        spec.seed = seed;
+        spec.arm_scenes = scene_kind == "arm";
+        spec.law = Law(pref, beta, step_mm);
+        spec.threads = threads;
+        spec.out_dir = out_dir;
+        if (!ParseRobotEffects(effects, &spec.effects, &error)) Invalid(error);
+        spec.controller = ChoiceFrom(controller, controller_params);
+        if (const std::string e = spec.controller.Validate(); !e.empty()) Invalid(e);
+        std::error_code ec;
+        std::filesystem::create_directories(out_dir, ec);
+        if (ec || !std::filesystem::is_directory(out_dir)) {
+          Fail("cannot create the output directory '" + out_dir + "'" +
+               (ec ? ": " + ec.message() : std::string()));
+        }
+        ObjectStudySummary summary;
+        bool ok = false;
+        {
+          nb::gil_scoped_release release;
+          ok = RunObjectStudy(spec, nullptr, &summary, &error);
+        }
+        if (!ok) Fail(error);
+        return Dict({{"csv", nb::cast(summary.table_csv)},
+                     {"paths_dir", nb::cast(summary.paths_dir)},
+                     {"trials", nb::cast(summary.trials)}});
+      },
+      "objects"_a = "all", "out_dir"_a = "out/objects", "seeds"_a = 1, "seed"_a = 1,
+      "scene_kind"_a = "gantry", "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 0.5,
+      "threads"_a = 1, "effects"_a = "default", "controller"_a = "published",
+      "controller_params"_a = "",
+      "The test objects' trials (ssc objects): writes out_dir/objects.csv (read it with "
+      "read_sweep) and the cup paths; controller as in run_trial.");
 
   nb::class_<EdgeProbe3d>(m, "Probe",
                           "The cup on a mocap body placed over an edge; reads the sensor.")

@@ -123,6 +123,54 @@ class PackageTest(unittest.TestCase):
             ssc_twin.sweep(pref=[100], beta=[2], step_mm=[7.5], repeats=1,
                            out_csv=os.path.join(self.tmp, "progress_bad.csv"), progress="yes")
 
+    def test_a_python_controller_follows_the_disk_and_a_failing_one_is_an_outcome(self):
+        import math
+        import ssc_twin
+
+        def own(r):  # along the edge, toward the object below P_ref
+            p, law = r["p_pa"], r["law"]
+            gx, gy = -0.5 * (p[1] + p[2] - p[0] - p[3]), 0.5 * (p[2] + p[3] - p[0] - p[1])
+            g = math.hypot(gx, gy)
+            if g < law["p_noise_pa"]:
+                return (0.0, 0.0)
+            toward = 2.0 * math.log10(law["pref_pa"] / max(sum(p) / 4, 1.0))
+            fx, fy = -gy / g + toward * gx / g, gx / g + toward * gy / g
+            f = math.hypot(fx, fy) / (law["step_mm"] * 1e-3)
+            return (fx / f, fy / f)
+
+        r = ssc_twin.run_trial(scene="disk_benchmark_gantry", controller=own, keep_log=False)
+        self.assertEqual(r["outcome"], "success", r["detail"])
+
+        def raises(r):
+            if r["iteration"] == 2:
+                raise RuntimeError("lost the plot")
+            return (0.001, 0.0)
+        r = ssc_twin.run_trial(scene="disk_benchmark_gantry", controller=raises, keep_log=False)
+        self.assertEqual(r["outcome"], "controller_fault")
+        self.assertIn("RuntimeError: lost the plot", r["detail"])
+        self.assertEqual(r["metrics"]["iterations"], 3)
+        r = ssc_twin.run_trial(scene="disk_benchmark_gantry", controller=lambda r: "step",
+                               keep_log=False, timeout_s=2)
+        self.assertEqual(r["outcome"], "controller_fault")
+        self.assertIn("returned a str", r["detail"])
+        with self.assertRaisesRegex(ValueError, "unknown key 'nope'"):
+            ssc_twin.run_trial(controller="fast", controller_params="nope=1")
+        self.assertIn("fast", ssc_twin.controllers())
+
+        class Leave:  # one instance per trial, answering with a dict: steps off the edge
+            def __init__(self):
+                self.calls = 0
+
+            def __call__(self, r):
+                self.calls += 1
+                return {"step_m": (0.004, 0.0), "height_offset_m": 0.0, "lifted": False}
+        path = os.path.join(self.tmp, "python_controller_sweep.csv")
+        s = ssc_twin.sweep(pref=[100], beta=[2], step_mm=[7.5], repeats=2, seed=5, threads=2,
+                           out_csv=path, controller=Leave)
+        self.assertEqual(s["ran"], 2)
+        outcomes = set(ssc_twin.read_sweep(path)["outcome"])
+        self.assertTrue(outcomes <= {"failure_I", "failure_II", "lost_edge"}, outcomes)
+
     @unittest.skipUnless(SSC, "no ssc executable given")
     def test_validate_equals_the_cli(self):
         import ssc_twin
