@@ -7,6 +7,7 @@
 #include "common/strict_number.h"
 #include "controller/pure/example_controller.h"
 #include "controller/pure/fast_following.h"
+#include "controller/pure/force_height.h"
 #include "controller/pure/published_controller.h"
 
 namespace ssc {
@@ -14,7 +15,8 @@ namespace ssc {
 const std::vector<ControllerType>& ControllerTypes() {
   // A new controller: its ControllerType here (the published law stays first: the default).
   static const std::vector<ControllerType> kTypes = {
-      PublishedControllerType(), FastFollowingControllerType(), ExampleControllerType()};
+      PublishedControllerType(), FastFollowingControllerType(), ForceHeightControllerType(),
+      ExampleControllerType()};
   return kTypes;
 }
 
