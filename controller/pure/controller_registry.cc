@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "common/strict_number.h"
+#include "controller/pure/crimp_hop.h"
 #include "controller/pure/example_controller.h"
 #include "controller/pure/fast_following.h"
 #include "controller/pure/force_height.h"
@@ -16,7 +17,7 @@ const std::vector<ControllerType>& ControllerTypes() {
   // A new controller: its ControllerType here (the published law stays first: the default).
   static const std::vector<ControllerType> kTypes = {
       PublishedControllerType(), FastFollowingControllerType(), ForceHeightControllerType(),
-      ExampleControllerType()};
+      CrimpHopControllerType(), ExampleControllerType()};
   return kTypes;
 }
 
