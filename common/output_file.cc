@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <streambuf>
 #include <vector>
 
@@ -171,6 +172,29 @@ bool WriteWholeFile(const std::string& path, std::string_view text, std::string*
 }
 
 void RecordCreatedOutputDir(const std::string& dir) { TakeSlot(g_created_dirs, dir); }
+
+bool CreateRecordedDirectories(const std::string& dir, std::string* error) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  // The folders this creates, parent first.
+  std::vector<fs::path> missing;
+  fs::path start = fs::absolute(dir, ec).lexically_normal();
+  if (start.filename().empty()) start = start.parent_path();  // "out/" -> "out"
+  for (fs::path q = start; !q.empty() && !fs::exists(q, ec); q = q.parent_path()) {
+    missing.push_back(q);
+    if (q == q.parent_path()) break;
+  }
+  fs::create_directories(dir, ec);
+  for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+    if (fs::is_directory(*it)) RecordCreatedOutputDir(it->string());
+  }
+  if (ec || !fs::is_directory(dir)) {
+    *error = dir + ": cannot create the directory: " +
+             (ec ? ec.message() : std::string("not a directory"));
+    return false;
+  }
+  return true;
+}
 
 void RemoveStartedOutputs() {
   for (Slot& s : g_temp_files) {

@@ -50,6 +50,10 @@ bool WriteWholeFile(const std::string& path, std::string_view text, std::string*
 // parents.
 void RecordCreatedOutputDir(const std::string& dir);
 
+// Creates `dir` and its missing parents, recording each one created (RecordCreatedOutputDir).
+// False + *error ("DIR: cannot create: strerror") on failure.
+bool CreateRecordedDirectories(const std::string& dir, std::string* error);
+
 // Removes the temporary files of open OutputFiles and the recorded directories that are empty.
 // Async-signal-safe (unlink and rmdir on fixed tables).
 void RemoveStartedOutputs();

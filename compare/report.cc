@@ -76,8 +76,7 @@ bool WriteComparisonReport(const std::string& dir, const ComparisonSetup& setup,
                            const ReplayComparison& c, const HistoryComparison* history,
                            const ClosedLoopComparison* closed, std::string* error) {
   namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::create_directories(dir, ec);
+  if (!CreateRecordedDirectories(dir, error)) return false;
   json report;
   report["log"] = {{"path", setup.log_path},
                    {"format", setup.format},

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "common/output_file.h"
 #include "objects/object_mjcf.h"
 #include "runtime/mujoco_model.h"
 #include "studies/job_runner.h"
@@ -54,9 +55,12 @@ bool RunObjectStudy(const ObjectStudySpec& spec,
   summary->paths_dir = (out / "paths").string();
   fs::create_directories(summary->paths_dir);
   for (const ObjectSpec& s : spec.objects) {
-    std::ofstream c(fs::path(summary->paths_dir) / (s.name + "_contour.csv"));
-    c << "x_m,y_m,closed\n";
-    for (const Point2& q : s.outline) c << q[0] << ',' << q[1] << ',' << s.closed() << '\n';
+    OutputFile c((fs::path(summary->paths_dir) / (s.name + "_contour.csv")).string());
+    c.stream() << "x_m,y_m,closed\n";
+    for (const Point2& q : s.outline) {
+      c.stream() << q[0] << ',' << q[1] << ',' << s.closed() << '\n';
+    }
+    if (!c.Commit(error)) return false;
   }
   if (spec.write_only) return true;
 
@@ -95,14 +99,21 @@ bool RunObjectStudy(const ObjectStudySpec& spec,
       row = RunObjectTrial(model.get(), object, spec.law, spec.effects, jobs[j].seed, true,
                            spec.controller);
       // The cup-centre path (follow phase), for the plots; the log itself is not kept.
-      std::ofstream path(fs::path(summary->paths_dir) /
-                         (object.name + "_s" + std::to_string(jobs[j].seed) + ".csv"));
-      path << "x_m,y_m\n";
+      // Plot inputs, each written whole; a failure is reported and the trial's row kept.
+      OutputFile path((fs::path(summary->paths_dir) /
+                       (object.name + "_s" + std::to_string(jobs[j].seed) + ".csv"))
+                          .string());
+      path.stream() << "x_m,y_m\n";
       for (const TrialLogRow& l : row.result.log) {
-        if (l.phase == TrialPhase::kFollow) path << l.tool_m[0] << ',' << l.tool_m[1] << '\n';
+        if (l.phase == TrialPhase::kFollow) {
+          path.stream() << l.tool_m[0] << ',' << l.tool_m[1] << '\n';
+        }
       }
-      if (object.kind == ObjectKind::kFillet && jobs[j].seed == spec.seed) {
-        std::ofstream(fillet_profile) << FilletProfileCsv(row);
+      std::string write_error;
+      if (!path.Commit(&write_error) ||
+          (object.kind == ObjectKind::kFillet && jobs[j].seed == spec.seed &&
+           !WriteWholeFile(fillet_profile.string(), FilletProfileCsv(row), &write_error))) {
+        std::fprintf(stderr, "ssc objects: %s\n", write_error.c_str());
       }
     }
     char line[256];
@@ -136,14 +147,10 @@ bool RunObjectStudy(const ObjectStudySpec& spec,
   if (JobRunnerRank() != 0) return true;
   summary->trials = static_cast<int>(jobs.size());
   summary->table_csv = (out / "objects.csv").string();
-  std::ofstream table(summary->table_csv);
-  table << ObjectTableHeader() << '\n';
-  for (const std::string& r : table_rows) table << r << '\n';
-  if (!table) {
-    *error = summary->table_csv + ": write failed";
-    return false;
-  }
-  return true;
+  OutputFile table(summary->table_csv);
+  table.stream() << ObjectTableHeader() << '\n';
+  for (const std::string& r : table_rows) table.stream() << r << '\n';
+  return table.Commit(error);
 }
 
 }  // namespace ssc

@@ -6,6 +6,7 @@ right result; nothing is left behind."""
 import csv
 import glob
 import io
+import math
 import os
 import resource
 import shutil
@@ -164,6 +165,44 @@ class ReliabilityTest(unittest.TestCase):
         p.communicate(timeout=60)
         self.assertEqual(p.returncode, -signal.SIGTERM)
         self.assertFalse(os.path.exists(os.path.dirname(out)))
+
+    def test_a_full_disk_fails_compare_whole(self):
+        disk = os.path.join(self.tmp, "full")
+        os.makedirs(disk)
+        # A 64 KiB tmpfs where the machine allows mounting (root in a container often does).
+        if subprocess.run(["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", disk],
+                          capture_output=True).returncode != 0:
+            self.skipTest("cannot mount a small tmpfs here (ulimit -f cases cover EFBIG)")
+        try:
+            out = os.path.join(disk, "c", "d")
+            r = run(["compare", self.plain_log(0.0), "--no-plot", "--out", out])
+            self.assertEqual(r.returncode, 1, r.stderr)
+            self.assertIn("cannot write: No space left on device", r.stderr)
+            self.assertEqual(os.listdir(disk), [])  # no partial file, no empty folder
+        finally:
+            subprocess.run(["umount", disk])
+
+    def plain_log(self, t0_s, rows=4000):
+        """A plain CSV: the cup circling inside the disk edge at 1 kHz from t0_s."""
+        path = os.path.join(self.tmp, f"plain_{t0_s:+g}.csv")
+        with open(path, "w") as f:
+            f.write("t_s,x_m,y_m,z_m,qw,qx,qy,qz,p1_pa,p2_pa,p3_pa,p4_pa\n")
+            for i in range(rows):
+                a = 2 * math.pi * i / rows
+                p = [4000 + 300 * math.sin(a + k * math.pi / 2) for k in range(4)]
+                f.write("%.4f,%.6f,%.6f,0.009,0,0.70710678,-0.70710678,0,%.2f,%.2f,%.2f,%.2f\n"
+                        % (t0_s + i * 1e-3, 0.65 + 0.033 * math.cos(a), 0.033 * math.sin(a), *p))
+        return path
+
+    def test_compare_does_not_depend_on_where_the_clock_starts(self):
+        reports = []
+        for t0 in (0.0, -5.0, 1.7e9):
+            out = os.path.join(self.tmp, f"clock_{t0:+g}")
+            r = run(["compare", self.plain_log(t0), "--no-plot", "--out", out])
+            self.assertEqual(r.returncode, 0, r.stderr)
+            reports.append([l for l in r.stdout.splitlines() if l.startswith(("chamber", "mean"))])
+        self.assertEqual(reports[0], reports[1])
+        self.assertEqual(reports[0], reports[2])
 
     # Scenes.
 

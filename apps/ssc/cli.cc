@@ -86,25 +86,8 @@ bool CheckOutputDir(const std::string& dir, std::string* error) {
 
 bool CreateOutputDir(const std::string& dir, std::string* error) {
   if (!CheckOutputDir(dir, error)) return false;
-  std::error_code ec;
-  const fs::path p(dir);
-  // The folders this creates, parent first, for RemoveStartedOutputs() (common/output_file.h).
-  std::vector<fs::path> missing;
-  fs::path start = fs::absolute(p, ec).lexically_normal();
-  if (start.filename().empty()) start = start.parent_path();  // "out/" -> "out"
-  for (fs::path q = start; !q.empty() && !fs::exists(q, ec); q = q.parent_path()) {
-    missing.push_back(q);
-    if (q == q.parent_path()) break;
-  }
-  fs::create_directories(p, ec);
-  for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
-    if (fs::is_directory(*it)) RecordCreatedOutputDir(it->string());
-  }
-  if (ec || !fs::is_directory(p, ec)) {
-    *error = "cannot create directory " + Shown(dir) + ": " +
-             (ec ? ec.message() : std::string("not a directory"));
-    return false;
-  }
+  // Records the folders it creates, for RemoveStartedOutputs() (common/output_file.h).
+  if (!CreateRecordedDirectories(dir, error)) return false;
   if (access(dir.c_str(), W_OK | X_OK) != 0) {
     *error = "directory " + Shown(dir) + " is not writable";
     return false;
