@@ -9,6 +9,17 @@
 # Either way SSC_MUJOCO_PINNED holds the version pinned in requirements.txt, and the headers
 # must match it (a mismatch is a configure error, not a runtime surprise).
 
+# Copies the files of `src` into `dst`, writing only those whose content differs (their
+# timestamps stay otherwise): a stable path for files from a folder that moves between builds.
+function(ssc_mirror_dir src dst)
+  file(GLOB_RECURSE _files RELATIVE "${src}" "${src}/*")
+  foreach(f ${_files})
+    if(NOT f MATCHES "__pycache__")
+      configure_file("${src}/${f}" "${dst}/${f}" COPYONLY)
+    endif()
+  endforeach()
+endfunction()
+
 file(STRINGS "${PROJECT_SOURCE_DIR}/requirements.txt" _ssc_pin REGEX "^mujoco==")
 string(REGEX REPLACE "^mujoco==([0-9.]+).*" "\\1" SSC_MUJOCO_PINNED "${_ssc_pin}")
 if(NOT SSC_MUJOCO_PINNED)
@@ -57,6 +68,14 @@ if(NOT _ssc_found_mujoco)
     message(FATAL_ERROR "Wheel layout changed: ${SSC_MUJOCO_LIBRARY} does not exist")
   endif()
   set(SSC_MUJOCO_INCLUDE_DIR "${SSC_MUJOCO_WHEEL_DIR}/include")
+  if(SKBUILD)
+    # pip's build isolation installs the wheel into a new temporary folder for every build: with
+    # the headers included from there, each `pip install .` would change every compile command
+    # and rebuild everything. A copy in the build tree (rewritten only where a header changed)
+    # keeps unchanged objects up to date.
+    ssc_mirror_dir("${SSC_MUJOCO_INCLUDE_DIR}" "${PROJECT_BINARY_DIR}/_deps/mujoco_include")
+    set(SSC_MUJOCO_INCLUDE_DIR "${PROJECT_BINARY_DIR}/_deps/mujoco_include")
+  endif()
   set(SSC_MUJOCO_PLUGIN_DIR "${SSC_MUJOCO_WHEEL_DIR}/plugin")
   add_library(mujoco::mujoco SHARED IMPORTED GLOBAL)
   set_target_properties(mujoco::mujoco PROPERTIES
