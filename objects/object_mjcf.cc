@@ -238,7 +238,7 @@ bool MakeDir(const fs::path& dir, std::string* error) {
 
 ObjectFiles ObjectFileNames(const std::string& object_name) {
   return {object_name + ".xml", object_name + "_arm.xml", object_name + "_gantry.xml",
-          object_name + "_probe.xml"};
+          object_name + "_flex.xml", object_name + "_probe.xml"};
 }
 
 bool WriteObjectFiles(const ObjectSpec& spec, const std::string& out_dir,
@@ -250,6 +250,8 @@ bool WriteObjectFiles(const ObjectSpec& spec, const std::string& out_dir,
                                 files.arm_scene, "UR-10 scene", error) &&
          WriteSceneFromTemplate(spec, scenes / "disk_benchmark_gantry.xml", out, files.object,
                                 files.gantry_scene, "gantry scene", error) &&
+         WriteSceneFromTemplate(spec, scenes / "disk_benchmark_flex.xml", out, files.object,
+                                files.flex_scene, "flex lip scene", error) &&
          WriteProbeScene(spec, repo_dir, out, files, error);
 }
 

@@ -20,7 +20,9 @@
 namespace ssc {
 
 struct ObjectFiles {
-  std::string object, arm_scene, gantry_scene, probe_scene;  // file names, no directory
+  // File names, no directory: the object, its scenes (the UR-10, the gantry with the segment lip,
+  // the gantry with the flex skirt lip) and its probe scene.
+  std::string object, arm_scene, gantry_scene, flex_scene, probe_scene;
 };
 ObjectFiles ObjectFileNames(const std::string& object_name);
 

@@ -29,8 +29,10 @@ int RunObjectsCommand(int argc, char** argv) {
   cmd.Integer("seeds", &seeds, "trials per object (seeds base, base+1, ...)",
               NumberRange::Closed(1, 1000));
   cmd.Seed("seed", &seed, "base seed");
-  cmd.Choice("scene-kind", &kind, "'gantry' (light, for tables) or 'arm' (the UR-10 scenes)",
-             {"gantry", "arm"});
+  cmd.Choice("scene-kind", &kind,
+             "'gantry' (light, for tables), 'arm' (the UR-10 scenes) or 'flex' (the gantry with "
+             "the deformable skirt lip, docs/objects.md)",
+             {"gantry", "arm", "flex"});
   AddLawOptions(&cmd, &law);
   ObjectStudySpec spec;
   std::string effects_text = "default";
@@ -47,6 +49,7 @@ int RunObjectsCommand(int argc, char** argv) {
   spec.seeds = static_cast<int>(seeds);
   spec.seed = seed;
   spec.arm_scenes = kind == "arm";
+  spec.flex_scenes = kind == "flex";
   spec.law = law;
   spec.threads = static_cast<int>(threads);
   spec.out_dir = out_dir;
