@@ -35,7 +35,9 @@ struct ChamberPressureConfig {
   double ray_start_m = 0.01;
   std::array<unsigned char, kNumGeomGroups> ray_groups{1, 0, 1, 0, 0, 0};  // 1 = seen by rays
   int lip_geom_group = 4;
-  int lip_vacuum_load = 1;  // a flex skirt only; segment lips carry no vacuum load
+  // A flex skirt only (segment lips carry none). Off by default: the modelled skirt lacks the
+  // chamber walls that hold the real lip against a sealed cup's vacuum (docs/pneumatics.md).
+  int lip_vacuum_load = 0;
 };
 
 // One config key. Numeric keys use get/set (value in the key's unit); a key with parse_text

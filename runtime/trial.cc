@@ -127,6 +127,7 @@ std::unique_ptr<ContourTrial> ContourTrial::Create(const mjModel* m, mjData* d,
     return nullptr;
   }
   trial->ft_adr_ = m->sensor_adr[ft];
+  trial->ft_reader_.Bind(m, ft);
   trial->servo_ = MakeToolServo(m);
   if (!trial->servo_) {
     *error = "scene has neither a gantry (gantry_x/y/z) nor a UR-10 to move the tool";
@@ -160,6 +161,7 @@ void ContourTrial::Reset() {
   }
   SetChamberPressureRunSeed(m_, d_, pressure_instance_, config_.seed);
   mj_forward(m_, d_);
+  ft_reader_.Update(m_, d_);
   phase_ = TrialPhase::kApproach;
   ft_tare_n_ = 0;
   tare_samples_ = 0;
@@ -196,7 +198,7 @@ void ContourTrial::Reset() {
 double ContourTrial::FtNormalForce() const {
   // Force the transducer exerts on the cup, in the F/T site frame (z along the cup axis, down).
   // Pressing on a surface pushes the cup up: the reading along +z grows; tared in air.
-  return d_->sensordata[ft_adr_ + 2] - ft_tare_n_;
+  return ft_reader_.Axial(m_, d_) - ft_tare_n_;
 }
 
 std::array<double, 4> ContourTrial::Pressures() const {
@@ -323,7 +325,7 @@ bool ContourTrial::MoveSetPointToward(const Point2& point, double z) {
 void ContourTrial::TareAndApproach(double t, const Vec3& tool) {
   // Tare the F/T over the first 50 ms in air, then descend until the compression is read.
   if (t < 0.05) {
-    ft_tare_n_ = (ft_tare_n_ * tare_samples_ + d_->sensordata[ft_adr_ + 2]) / (tare_samples_ + 1);
+    ft_tare_n_ = (ft_tare_n_ * tare_samples_ + ft_reader_.Axial(m_, d_)) / (tare_samples_ + 1);
     ++tare_samples_;
     return;
   }
@@ -497,6 +499,7 @@ bool ContourTrial::Step() {
   } else {
     mj_step(m_, d_);
   }
+  ft_reader_.Update(m_, d_);
   // A numerically broken run is never a controller result.
   if (d_->warning[mjWARN_BADQACC].number > 0) {
     Finish(Outcome::kUnstable, "MuJoCo warning: bad qacc (simulation diverged)");

@@ -27,6 +27,7 @@
 #include "plugin/chamber_pressure_sensor.h"
 #include "runtime/control_dispatch.h"
 #include "runtime/mujoco_model.h"
+#include "runtime/tool_force.h"
 #include "runtime/tool_servo.h"
 
 namespace ssc {
@@ -224,6 +225,7 @@ class ContourTrial : public ControlCallback {
   bool active_ = false;         // the servo is bound; the callback may act
   bool transfer_done_ = false;  // over the landing point
   double ft_tare_n_ = 0;
+  ToolForceReader ft_reader_;  // the transducer's axial reading (runtime/tool_force.h)
   int tare_samples_ = 0;
   double hold_z_ = 0;
   double command_z_ = 0;        // the tool height the controller asks for (hold_z_ first)

@@ -17,15 +17,25 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 # name: (value, unit, range argued from the hardware)
 SKIRT = {
     "rim_radius_mm": (5.5, "mm", "published: the 11 mm opening"),
-    "top_radius_mm": (7.0, "mm", "6.5-8: the cup body's wall inside its 23 mm outer diameter"),
+    "top_radius_mm": (4.0, "mm", "3.5-5: the skirt flares out to its rim (one narrowing to its rim "
+                      "folds inward under its own press, and no real cup does); 4 mm gives about "
+                      "2 N at 1 mm of press, near the segment lip's 1.5 N"),
     "height_mm": (3.0, "mm", "2-4: the lip's free height below the rigid body"),
     "thickness_mm": (1.0, "mm", "0.6-1.5: a cast lip that holds its shape"),
     "young_mpa": (1.0, "MPa", "0.6-1.5: Shore 20A-30A silicone"),
+    # MuJoCo's 2-D shell bends this much more than a Kirchhoff plate of the same E, t and nu
+    # (a clamped strip under uniform load, mesh-converged; tests/flex_lip_test.py measures it):
+    # the MJCF modulus is the material's times this, so the skirt bends as the silicone would.
+    "shell_bending_correction": (1.70, "", "measured: MuJoCo 4.0.0 shell vs plate theory"),
     "poisson": (0.45, "", "0.45-0.49: nearly incompressible rubber (0.45 keeps shells unlocked)"),
     "damping_s": (0.002, "s", "Rayleigh damping: keeps the discrete step stable at 2 ms"),
     "mass_g": (2.0, "g", "numerical: heavier than the ~0.15 g of silicone so contacts stay stiff"),
     "contact_radius_mm": (0.5, "mm", "half the thickness"),
     "friction": (0.6, "", "0.5-1.0: silicone on acrylic or aluminium"),
+    # A soft contact's force scales with the mass behind it; a skirt vertex weighs milligrams, so
+    # the usual time-constant solref lets the rim sink through the object under a 1 N press. A
+    # direct stiffness (MuJoCo's negative solref, critically damped) holds it on the surface.
+    "contact_stiffness": (1e8, "1/s^2", "rim held within 0.01 mm of the surface under 1.4 N"),
     "rings": (3, "", "vertex rings from the pinned top to the rim (cost grows with rings x sectors)"),
     "sectors": (16, "", "vertices per ring: the rim has as many points as the segment lip"),
 }
@@ -61,11 +71,13 @@ def skirt_flexcomp():
           <flexcomp name="skirt" type="direct" dim="2" pos="0 0 {0.1206 - value("contact_radius_mm") * 1e-3:.6f}"
                     radius="{value('contact_radius_mm') * 1e-3:.6f}" mass="{value('mass_g') * 1e-3:.6f}"
                     rgba="0.15 0.35 0.85 1" group="4" point="{point}" element="{element}">
-            <elasticity young="{value('young_mpa') * 1e6:.6g}" poisson="{value('poisson')}"
+            <elasticity young="{value('young_mpa') * value('shell_bending_correction') * 1e6:.6g}"
+                        poisson="{value('poisson')}"
                         thickness="{value('thickness_mm') * 1e-3:.6f}" damping="{value('damping_s')}"
                         elastic2d="both"/>
             <contact condim="3" selfcollide="none" contype="1" conaffinity="0"
-                     friction="{value('friction')} 0.005 0.0001" solref="0.004 1"
+                     friction="{value('friction')} 0.005 0.0001"
+                     solref="{-value('contact_stiffness'):.6g} {-2 * math.sqrt(value('contact_stiffness')):.6g}"
                      solimp="0.95 0.99 0.0005"/>
             <pin id="{pin}"/>
           </flexcomp>

@@ -1,0 +1,59 @@
+#include "runtime/tool_force.h"
+
+namespace ssc {
+namespace {
+
+bool IsInSubtree(const mjModel* m, int body, int root) {
+  while (body > 0 && body != root) body = m->body_parentid[body];
+  return body == root;
+}
+
+}  // namespace
+
+void ToolForceReader::Bind(const mjModel* m, int force_sensor) {
+  sensor_adr_ = m->sensor_adr[force_sensor];
+  site_ = m->sensor_objid[force_sensor];
+  // The site sits on the body the transducer carries (the cup).
+  root_body_ = m->site_bodyid[site_];
+  flex_ = -1;
+  for (int f = 0; f < m->nflex && flex_ < 0; ++f) {
+    if (IsInSubtree(m, m->flex_vertbodyid[m->flex_vertadr[f]], root_body_)) flex_ = f;
+  }
+}
+
+double ToolForceReader::Axial(const mjModel* m, const mjData* d) const {
+  (void)m;
+  return flex_ < 0 ? d->sensordata[sensor_adr_ + 2] : balance_n_;
+}
+
+void ToolForceReader::Update(const mjModel* m, const mjData* d) {
+  if (flex_ < 0) return;
+  const mjtNum* site_mat = d->site_xmat + 9 * site_;
+  const mjtNum axis_z[3] = {site_mat[2], site_mat[5], site_mat[8]};
+  double axial = 0.0;
+  for (int i = 0; i < d->ncon; ++i) {
+    const mjContact& con = d->contact[i];
+    if (con.efc_address < 0) continue;
+    // Which side of the contact is the tool: +1 when side 1 (the normal points toward it).
+    int tool_side = -1;
+    for (int side = 0; side < 2; ++side) {
+      const bool on_tool =
+          con.flex[side] == flex_ ||
+          (con.geom[side] >= 0 && IsInSubtree(m, m->geom_bodyid[con.geom[side]], root_body_));
+      if (on_tool) tool_side = tool_side < 0 ? side : 2;  // 2: tool against itself
+    }
+    if (tool_side < 0 || tool_side == 2) continue;
+    mjtNum f_contact[6];
+    mj_contactForce(m, d, i, f_contact);
+    // World force on side 1 from side 0: the contact frame's rows times its components.
+    mjtNum f_world[3] = {0, 0, 0};
+    for (int r = 0; r < 3; ++r) {
+      for (int k = 0; k < 3; ++k) f_world[k] += con.frame[3 * r + k] * f_contact[r];
+    }
+    const double on_tool_along_z = (tool_side == 1 ? 1.0 : -1.0) * mju_dot3(f_world, axis_z);
+    axial -= on_tool_along_z;
+  }
+  balance_n_ = axial;
+}
+
+}  // namespace ssc

@@ -1,0 +1,154 @@
+"""The flex skirt lip (models/ssc_tool_flex.xml): MuJoCo's shell against plate theory, and the
+pressure plugin reading the deformed skirt: a seal on a plate, a leak into a groove, the same run
+twice. The cup hangs from a stiff x/y/z position servo (a flex cannot hang from a mocap body)."""
+import importlib.util
+import os
+import unittest
+
+import mujoco
+import numpy as np
+
+ROOT = os.environ.get("SSC_SOURCE_DIR", os.path.join(os.path.dirname(__file__), ".."))
+PLUGIN = os.environ["SSC_PLUGIN_LIB"]
+TOOL_Z_M = 0.146  # flange to lip plane (geometry/dimensions.h)
+SEALED_PA = 25644.0  # a sealed cup on a plate (tests/flow_network_test.cc)
+
+
+def skirt_parameters():
+    spec = importlib.util.spec_from_file_location(
+        "make_flex_tool", os.path.join(ROOT, "tools", "make_flex_tool.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return {k: v[0] for k, v in module.SKIRT.items()}
+
+
+def box(size, pos):
+    return ('<geom type="box" size="%g %g %g" pos="%g %g %g" group="2" contype="1" '
+            'conaffinity="1"/>' % (tuple(size) + tuple(pos)))
+
+
+PLATE = box((0.05, 0.05, 0.005), (0, 0, -0.005))
+
+
+def groove(width_m, depth_m):
+    """A plate (top z = 0) with a groove along y through x = 0."""
+    half = 0.025 - width_m / 4
+    return (box((0.05, 0.05, 0.005 - depth_m / 2), (0, 0, -0.005 - depth_m / 2)) +
+            box((half, 0.05, depth_m / 2), (-(width_m / 2 + half), 0, -depth_m / 2)) +
+            box((half, 0.05, depth_m / 2), (width_m / 2 + half, 0, -depth_m / 2)))
+
+
+class Rig:
+    """The tool on a stiff x/y/z servo over `objects` (MJCF geoms, top faces at z = 0)."""
+
+    def __init__(self, objects, tool="ssc_tool_flex.xml"):
+        integrator = "discrete" if "flex" in tool else "implicitfast"
+        servo = '<position joint="%s" kp="20000" kv="400"/>'
+        bodies = ""
+        for axis, vec, mass in (("x", "1 0 0", 2), ("y", "0 1 0", 2), ("z", "0 0 1", 1)):
+            bodies += ('<body name="g%s" gravcomp="1"><joint name="g%s" type="slide" axis="%s" '
+                       'damping="20" armature="1"/><inertial pos="0 0 0" mass="%d" '
+                       'diaginertia="0.01 0.01 0.01"/>' % (axis, axis, vec, mass))
+        xml = f"""<mujoco><compiler angle="radian" autolimits="true"/>
+<option timestep="0.002" integrator="{integrator}"/>
+<asset><model name="ssc_tool" file="{os.path.join(ROOT, 'models', tool)}"/></asset>
+<worldbody>{objects}{bodies}
+<body name="probe" quat="0 0.70710678 -0.70710678 0" gravcomp="1">
+<attach model="ssc_tool" body="tool" prefix="ssc_"/></body></body></body></body></worldbody>
+<actuator>{servo % 'gx'}{servo % 'gy'}{servo % 'gz'}</actuator></mujoco>"""
+        self.m = mujoco.MjModel.from_xml_string(xml)
+        self.d = mujoco.MjData(self.m)
+        sensor = mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_SENSOR, "ssc_chamber_pressure")
+        self.adr = self.m.sensor_adr[sensor]
+
+    def press(self, x_m, press_mm, seconds=0.4):
+        """Lowers the lip from 2 mm above the top face to press_mm into it, and holds."""
+        self.d.qpos[:3] = [x_m, 0.0, TOOL_Z_M + 0.002]
+        self.d.ctrl[:3] = self.d.qpos[:3]
+        mujoco.mj_step(self.m, self.d, 25)
+        self.d.ctrl[2] = TOOL_Z_M - press_mm * 1e-3
+        mujoco.mj_step(self.m, self.d, int(round(seconds / self.m.opt.timestep)))
+        return self
+
+    def pressures(self):
+        return self.d.sensordata[self.adr:self.adr + 4].copy()
+
+    def rim(self):
+        """World positions of the skirt's deepest ring of vertices (the rim)."""
+        adr, n = self.m.flex_vertadr[0], self.m.flex_vertnum[0]
+        verts = self.d.flexvert_xpos[adr:adr + n]
+        return verts[verts[:, 2] <= verts[:, 2].min() + 1.0e-3]
+
+
+class ShellTest(unittest.TestCase):
+    def test_a_strip_of_the_skirt_material_bends_as_plate_theory_predicts(self):
+        # A clamped strip of the skirt's silicone under a uniform load q: tip deflection
+        # q L^4 / (8 D), D = E t^3 / (12 (1 - nu^2)), with the tool's shell correction applied as
+        # in models/ssc_tool_flex.xml.
+        s = skirt_parameters()
+        young = s["young_mpa"] * 1e6
+        t, nu = s["thickness_mm"] * 1e-3, s["poisson"]
+        nx, ny, length, width, q = 12, 3, 0.010, 0.004, 50.0
+        pts = [(length * i / nx, width * j / ny, 0) for i in range(nx + 1) for j in range(ny + 1)]
+        vid = lambda i, j: i * (ny + 1) + j
+        tris = []
+        for i in range(nx):
+            for j in range(ny):
+                tris += [(vid(i, j), vid(i + 1, j), vid(i + 1, j + 1)),
+                         (vid(i, j), vid(i + 1, j + 1), vid(i, j + 1))]
+        pin = [vid(i, j) for i in (0, 1) for j in range(ny + 1)]
+        xml = f"""<mujoco><option timestep="0.001" integrator="discrete"/><worldbody>
+<body name="b"><flexcomp name="s" type="direct" dim="2" radius="0.0002"
+ mass="{q * length * width / 9.81}" point="{' '.join('%g %g %g' % p for p in pts)}"
+ element="{' '.join('%d %d %d' % e for e in tris)}">
+<elasticity young="{young * s['shell_bending_correction']}" poisson="{nu}" thickness="{t}"
+ damping="{s['damping_s']}" elastic2d="both"/><contact contype="0" conaffinity="0"/>
+<pin id="{' '.join(map(str, pin))}"/></flexcomp></body></worldbody></mujoco>"""
+        m = mujoco.MjModel.from_xml_string(xml)
+        d = mujoco.MjData(m)
+        mujoco.mj_step(m, d, 2000)
+        tip_m = -d.flexvert_xpos[[vid(nx, j) for j in range(ny + 1)], 2].mean()
+        free = length - length / nx
+        theory_m = q * free ** 4 / (8 * young * t ** 3 / (12 * (1 - nu ** 2)))
+        self.assertAlmostEqual(tip_m / theory_m, 1.0, delta=0.10)
+
+
+class SkirtSensorTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        try:
+            mujoco.mj_loadPluginLibrary(PLUGIN)
+        except Exception:  # already registered (the ssc_twin package loads it too)
+            pass
+
+    def test_pressed_on_a_plate_every_chamber_seals(self):
+        rig = Rig(PLATE).press(0.0, 1.0)
+        p = rig.pressures()
+        self.assertTrue(np.all(np.abs(p - SEALED_PA) < 0.02 * SEALED_PA), p)
+        rim = rig.rim()
+        # The rim rests on the plate (within 0.05 mm of one contact radius above it) ...
+        radius = skirt_parameters()["contact_radius_mm"] * 1e-3
+        self.assertTrue(np.all(np.abs(rim[:, 2] - radius) < 0.05e-3), rim[:, 2])
+        # ... and stays on its circle (the opening's 5.5 mm within 0.5 mm).
+        r = np.hypot(rim[:, 0], rim[:, 1])
+        self.assertTrue(np.all(np.abs(r - 5.5e-3) < 0.5e-3), r)
+
+    def test_over_a_groove_the_rim_drops_into_it_and_the_cup_leaks(self):
+        plate = Rig(PLATE).press(0.0, 1.0)
+        over = Rig(groove(0.006, 0.003)).press(0.0, 1.0)
+        rim = over.rim()
+        in_groove = np.abs(rim[:, 0]) < 2.9e-3  # the groove is 6 mm wide
+        self.assertTrue(in_groove.any() and (~in_groove).any())
+        # Unsupported rim sags into the groove; the rim on the plate rests on it.
+        self.assertLess(rim[in_groove, 2].min(), rim[~in_groove, 2].min() - 0.2e-3)
+        self.assertLess(over.pressures().mean(), 0.5 * plate.pressures().mean())
+
+    def test_the_same_run_twice_is_the_same(self):
+        a = Rig(groove(0.003, 0.003)).press(0.001, 1.0, seconds=0.2)
+        b = Rig(groove(0.003, 0.003)).press(0.001, 1.0, seconds=0.2)
+        np.testing.assert_array_equal(a.d.qpos, b.d.qpos)
+        np.testing.assert_array_equal(a.pressures(), b.pressures())
+
+
+if __name__ == "__main__":
+    unittest.main()
