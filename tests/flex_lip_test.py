@@ -81,6 +81,13 @@ class Rig:
 
 
 class ShellTest(unittest.TestCase):
+    def test_the_model_and_its_doc_table_are_generated_from_the_skirt_parameters(self):
+        import subprocess
+        import sys
+        run = subprocess.run([sys.executable, os.path.join(ROOT, "tools", "make_flex_tool.py"),
+                              "--check"], capture_output=True, text=True)
+        self.assertEqual(run.returncode, 0, run.stderr)
+
     def test_a_strip_of_the_skirt_material_bends_as_plate_theory_predicts(self):
         # A clamped strip of the skirt's silicone under a uniform load q: tip deflection
         # q L^4 / (8 D), D = E t^3 / (12 (1 - nu^2)), with the tool's shell correction applied as

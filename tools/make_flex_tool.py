@@ -84,6 +84,21 @@ def skirt_flexcomp():
 """
 
 
+DOC = ROOT / "docs" / "pneumatics.md"
+BEGIN, END = "<!-- skirt table: tools/make_flex_tool.py -->", "<!-- end skirt table -->"
+
+
+def markdown_table():
+    rows = ["| parameter | value | unit | range and why |", "| --- | --- | --- | --- |"]
+    rows += ["| `%s` | %g | %s | %s |" % (k, v[0], v[1], v[2]) for k, v in SKIRT.items()]
+    return "\n".join(rows)
+
+
+def doc_with_table(doc):
+    start, end = doc.index(BEGIN) + len(BEGIN), doc.index(END)
+    return doc[:start] + "\n" + markdown_table() + "\n" + doc[end:]
+
+
 def main():
     text = (ROOT / "models" / "ssc_tool.xml").read_text()
     # The segment lip and its carrier body go; the skirt takes their place.
@@ -97,11 +112,15 @@ def main():
                   "  Scenes using it must set integrator=\"discrete\" (MuJoCo integrates 2-D flex\n"
                   "  elasticity only there).\n\n  Smart Suction Cup tool:", text, count=1)
     out = ROOT / "models" / "ssc_tool_flex.xml"
+    doc = DOC.read_text()
     if "--check" in sys.argv:
         if out.read_text() != text:
             sys.exit(f"{out} is stale: run tools/make_flex_tool.py")
+        if doc_with_table(doc) != doc:
+            sys.exit(f"{DOC}'s skirt table is stale: run tools/make_flex_tool.py")
         return
     out.write_text(text)
+    DOC.write_text(doc_with_table(doc))
 
 
 if __name__ == "__main__":
