@@ -79,9 +79,12 @@ class PythonBindingsTest(unittest.TestCase):
             self.assertEqual([str(w.message) for w in caught], [], path)
             for kind, name in ((mujoco.mjtObj.mjOBJ_SITE, "ssc_tool_site"),
                                (mujoco.mjtObj.mjOBJ_SENSOR, "ssc_ft_force"),
-                               (mujoco.mjtObj.mjOBJ_SENSOR, "ssc_chamber_pressure"),
-                               (mujoco.mjtObj.mjOBJ_JOINT, "ssc_lip_0")):
+                               (mujoco.mjtObj.mjOBJ_SENSOR, "ssc_chamber_pressure")):
                 self.assertGreaterEqual(mujoco.mj_name2id(m, kind, name), 0, (path, name))
+            # The lip: the segment tier's first slide, or the flex tier's skirt.
+            lip = max(mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_JOINT, "ssc_lip_0"),
+                      mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_FLEX, "ssc_skirt"))
+            self.assertGreaterEqual(lip, 0, (path, "ssc_lip_0 or ssc_skirt"))
             again = mujoco.MjModel.from_xml_string(spec.to_xml())
             self.assertEqual((again.nbody, again.njnt, again.nsensor, again.nplugin),
                              (m.nbody, m.njnt, m.nsensor, m.nplugin), path)
