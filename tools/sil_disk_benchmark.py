@@ -8,7 +8,9 @@ virtual time with its knob d_lat set to the step (--set d_lat=...; its P_ref 100
 are the script's own), reads the .mat it saves (success, edgeFollowing_history) and reports the
 outcome, dr = mean distance of the history's TCP from the disk centre minus 35 mm, the CPU time
 (user + sys of the run) and the wall time; then `ssc trial --scene SCENE` with the same P_ref,
-beta, step and seed. Needs scipy (the lab's saver writes the .mat with it).
+beta, step and seed, once with the twin's own protocol (start 32 mm, approach 1.5 N) and once with
+the script's (start_offset 31 mm, F_normalThres 1.1-1.2 N: --start-offset 31 --approach-force
+1.15). Needs scipy (the lab's saver writes the .mat with it).
 """
 import argparse
 import json
@@ -64,10 +66,10 @@ def sil_run(ssc, script, seed, step_m, scene, out):
     return row
 
 
-def trial_run(ssc, seed, step_mm, scene, out):
+def trial_run(ssc, seed, step_mm, scene, out, extra=()):
     p = subprocess.run([ssc, "trial", "--scene", scene, "--pref", "100", "--beta", "2",
-                        "--step", str(step_mm), "--seed", str(seed), "--no-plot", "--out", out],
-                       capture_output=True, text=True)
+                        "--step", str(step_mm), "--seed", str(seed), "--no-plot", "--out", out]
+                       + list(extra), capture_output=True, text=True)
     outcome = re.search(r"outcome: (\S+)", p.stdout)
     dr = re.search(r"dr = (-?[\d.]+) mm", p.stdout)
     return {"outcome": outcome.group(1) if outcome else "?",
@@ -84,25 +86,34 @@ def main():
     a = ap.parse_args()
     script = os.path.join(os.path.abspath(a.lab_repo), SCRIPT)
     print("| seed | ssc sil: outcome | iterations | dr (mm) | simulated (s) | CPU (s) | wall (s) "
-          "| ssc trial: outcome | dr (mm) |")
-    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+          "| ssc trial (twin protocol): outcome | dr (mm) | ssc trial (script's protocol): "
+          "outcome | dr (mm) |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     rows = []
     for seed in a.seeds:
         with tempfile.TemporaryDirectory(prefix="sil_bench_") as out:
             s = sil_run(os.path.abspath(a.ssc), script, seed, a.step_mm * 1e-3, a.scene, out)
-            t = trial_run(os.path.abspath(a.ssc), seed, a.step_mm, a.scene, os.path.join(out, "trial"))
-        rows.append((s, t))
-        print("| %d | %s | %s | %.2f | %.1f | %.1f | %.1f | %s | %.2f |" % (
+            t = trial_run(os.path.abspath(a.ssc), seed, a.step_mm, a.scene, os.path.join(out, "t1"))
+            u = trial_run(os.path.abspath(a.ssc), seed, a.step_mm, a.scene, os.path.join(out, "t2"),
+                          ["--start-offset", "31", "--approach-force", "1.15"])
+        rows.append((s, t, u))
+        print("| %d | %s | %s | %.2f | %.1f | %.1f | %.1f | %s | %.2f | %s | %.2f |" % (
             seed, s["outcome"] if s["status"] == 0 else "error: " + s["problem"],
             s.get("iterations", "-"), s.get("dr_mm", float("nan")), s["sim_s"], s["cpu_s"],
-            s["wall_s"], t["outcome"], t["dr_mm"]), flush=True)
-    sil_dr = [s["dr_mm"] for s, _ in rows if "dr_mm" in s]
-    trial_dr = [t["dr_mm"] for _, t in rows]
-    print("\nssc sil dr %.2f +- %.2f mm (mean +- SD, %d runs); ssc trial dr %.2f +- %.2f mm; "
-          "CPU per run %.1f-%.1f s" % (np.mean(sil_dr), np.std(sil_dr, ddof=1) if len(sil_dr) > 1 else 0,
-                                      len(sil_dr), np.mean(trial_dr),
-                                      np.std(trial_dr, ddof=1) if len(trial_dr) > 1 else 0,
-                                      min(s["cpu_s"] for s, _ in rows), max(s["cpu_s"] for s, _ in rows)))
+            s["wall_s"], t["outcome"], t["dr_mm"], u["outcome"], u["dr_mm"]), flush=True)
+
+    def stat(values):
+        values = [v for v in values if np.isfinite(v)]
+        if not values:
+            return "-"
+        sd = np.std(values, ddof=1) if len(values) > 1 else 0.0
+        return "%.2f +- %.2f mm (%d)" % (np.mean(values), sd, len(values))
+    print("\ndr over successful runs (mean +- SD, n): ssc sil %s; ssc trial twin protocol %s; "
+          "script's protocol %s; ssc sil CPU per run %.1f-%.1f s" % (
+              stat([s.get("dr_mm", np.nan) for s, _, _ in rows if s["outcome"] == "success"]),
+              stat([t["dr_mm"] for _, t, _ in rows if t["outcome"] == "success"]),
+              stat([u["dr_mm"] for _, _, u in rows if u["outcome"] == "success"]),
+              min(s["cpu_s"] for s, _, _ in rows), max(s["cpu_s"] for s, _, _ in rows)))
     return 0
 
 

@@ -102,6 +102,32 @@ class SilContracts(unittest.TestCase):
         enable(False)
         self.assertEqual(len(os.listdir(self.tmp)), 8)
 
+    def test_recording_saves_as_the_labs_mat(self):
+        import rospy
+        from suction_cup.msg import cmdPacket
+        from suction_cup.srv import Enable
+        from ssc_twin.sil import save_data_params
+        rospy.Publisher("cmdPacket", cmdPacket, queue_size=1).publish(cmdPacket(cmdInput=2))
+        enable = rospy.ServiceProxy("data_logging", Enable)
+        enable(True)
+        rospy.sleep(1.0)
+        history = [[0.1, -0.63, 0.097, np.array([1.0, 0.0]), np.array([0.0, 1.0]),
+                    np.array([1.0, 0.0]), -1.1, -90.0, -95.0, -100.0, -105.0]]
+        path = save_data_params({"Pref": 100, "beta": 2.0, "d_lat": 7.5e-3,
+                                 "edgeFollowing_history": history}, "sil_test",
+                                mat_dir=self.tmp)
+        enable(False)
+        self.assertRegex(os.path.basename(path), r"^DataLog_\d{4}_\d{4}_\d{6}_sil_test\.mat$")
+        from scipy.io import loadmat
+        m = loadmat(path)
+        self.assertEqual(m["SensorPacket_data"].shape[1], 6)
+        self.assertAlmostEqual(m["SensorPacket_data"].shape[0], self.world.plant.sample_rate_hz,
+                               delta=2)
+        self.assertEqual(m["endEffectorPose_data"].shape[1], 8)
+        self.assertEqual(int(np.ravel(m["Pref"])[0]), 100)
+        self.assertAlmostEqual(float(np.ravel(m["d_lat"])[0]), 7.5e-3)
+        self.assertEqual(m["edgeFollowing_history"].shape, (1, 11))
+
     def test_moveL_reaches_its_target(self):
         import rospy
         import rtde_control

@@ -140,6 +140,12 @@ class World:
         self._schedule(self._pressure_packet, 1.0 / self.plant.sample_rate_hz)
         self._schedule(self._ft_packet, 1.0 / FT_RATE_HZ)
         self._schedule(self._pose_packet, 1.0 / POSE_RATE_HZ)
+        # The lab's graph runs before the script: the board, F/T and pose nodes advertise their
+        # topics (the logger finds their types); /pwm exists once the script advertises it.
+        from geometry_msgs.msg import PoseStamped, WrenchStamped
+        from suction_cup.msg import SensorPacket
+        self.published_types.update({"/SensorPacket": SensorPacket, "/netft_data": WrenchStamped,
+                                     "/endEffectorPose": PoseStamped})
         from .logger import DataLogger
         self.logger = DataLogger(self)
         self.viewer = None
