@@ -167,7 +167,11 @@ def run(opts):
                                           verbose=opts.verbose))
     if opts.viewer:
         from .viewer import Viewer
-        w.viewer = Viewer(w)
+        try:
+            w.viewer = Viewer(w)
+        except Exception as e:  # no display, no OpenGL
+            print("ssc sil: --viewer: cannot open the viewer (%s)" % e, file=sys.stderr)
+            return EXIT_ERROR
     # The node shuts down at the simulated time limit (a script waiting forever ends).
     w._push(opts.max_sim, lambda: setattr(w, "shutdown", True), 0)
 
@@ -193,6 +197,7 @@ def run(opts):
     status, problem = EXIT_OK, ""
     wall0 = _time.perf_counter()
     redirect.install()
+    w.wall_start = _time.perf_counter() - w.sim_time  # real time is paced from the script's start
     try:
         exec(code, {"__name__": "__main__", "__file__": script, "__builtins__": builtins})
     except SystemExit as e:

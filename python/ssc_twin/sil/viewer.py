@@ -6,6 +6,9 @@ import time
 
 class Viewer:
     def __init__(self, world):
+        import os
+        if not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")):
+            raise RuntimeError("no display (DISPLAY is not set; run under xvfb-run for none)")
         import mujoco
         import mujoco.viewer
         from .. import _core
@@ -29,3 +32,6 @@ class Viewer:
 
     def close(self):
         self.handle.close()
+        # The viewer's thread releases its window after close returns; the interpreter must not
+        # tear down the model under it.
+        time.sleep(0.5)
