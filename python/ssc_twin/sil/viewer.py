@@ -34,4 +34,4 @@ class Viewer:
         self.handle.close()
         # The viewer's thread releases its window after close returns; the interpreter must not
         # tear down the model under it.
-        time.sleep(0.5)
+        time.sleep(0.3)
