@@ -55,6 +55,11 @@ install(TARGETS ssc_all ssc_warnings ${SSC_EXPORTED_LIBRARIES} EXPORT sscTargets
         LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}"
         ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}")
 install(TARGETS ssc RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
+# `ssc bench` runs the benchmark binary that sits next to `ssc`.
+if(TARGET ssc_bench)
+  set_target_properties(ssc_bench PROPERTIES INSTALL_RPATH "$ORIGIN/../${CMAKE_INSTALL_LIBDIR};${CMAKE_INSTALL_RPATH}")
+  install(TARGETS ssc_bench RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
+endif()
 install(EXPORT sscTargets NAMESPACE ssc:: DESTINATION "${SSC_INSTALL_CMAKEDIR}")
 
 # Headers of every library folder, keeping the paths the sources include them by.

@@ -66,6 +66,8 @@ json SetupJson(const ComparisonSetup& s) {
 std::string Fmt(const char* format, double a, double b = 0, double c = 0, double d = 0,
                 double e = 0) {
   char buf[512];
+  // The format uses as many of a..e as it names; the rest are passed and ignored.
+  // cppcheck-suppress wrongPrintfScanfArgNum
   std::snprintf(buf, sizeof(buf), format, a, b, c, d, e);
   return buf;
 }

@@ -434,7 +434,8 @@ std::vector<std::string> ColumnNames(const LabTopic& t, LoggerVersion version) {
       const size_t bracket = field.find('[');
       if (bracket != std::string::npos) {
         const int k = std::atoi(field.c_str() + bracket + 1);
-        field = field.substr(0, bracket) + (k > 0 ? "." + std::to_string(k) : "");
+        field.resize(bracket);
+        if (k > 0) field += "." + std::to_string(k);
       }
     }
     names.push_back(t.topic + "." + field);

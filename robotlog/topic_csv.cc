@@ -180,7 +180,7 @@ bool WriteTopicFile(const fs::path& path, const LabTopic& topic, LoggerVersion v
   for (const std::string& field : topic.fields) {
     if (pressure && older && field == "ch") continue;  // the older message had no ch
     std::string name = field;
-    if (older && name.back() == ']') name = name.substr(0, name.find('['));
+    if (older && name.back() == ']') name.resize(name.find('['));
     f << ',' << topic.topic << '.' << name;
   }
   f << '\n';

@@ -42,9 +42,4 @@ void UnregisterControl(const mjData* d) {
   Registry().erase(d);
 }
 
-int RegisteredControlCount() {
-  std::shared_lock<std::shared_mutex> lock(Mutex());
-  return static_cast<int>(Registry().size());
-}
-
 }  // namespace ssc

@@ -23,7 +23,6 @@ class ControlCallback {
 // if some other code already owns mjcb_control.
 bool RegisterControl(const mjData* d, ControlCallback* callback);
 void UnregisterControl(const mjData* d);
-int RegisteredControlCount();
 
 // RAII registration.
 class ScopedControl {

@@ -120,7 +120,7 @@ bool ScoreMap(const std::vector<MapCell>& cells, const std::vector<CellTrials>& 
     score->opposite += c.opposite ? 1 : 0;
     score->cells.push_back(c);
   }
-  const double n = std::max<std::size_t>(1, cells.size());
+  const double n = static_cast<double>(std::max<std::size_t>(1, cells.size()));
   score->cells_scored = static_cast<int>(cells.size());
   score->class_match = match / n;
   score->expected_agreement = agreement / n;

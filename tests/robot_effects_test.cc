@@ -159,13 +159,14 @@ TEST(ChamberSpreadTest, SlowNoiseHasItsStationarySpreadAndCorrelationTime) {
     ApplyChamberSpread(params, 3, i * 0.05, &s, &p);  // 50 ms apart: a quarter of tau
     x.push_back(p[0]);
   }
+  const double n = static_cast<double>(x.size());
   double m = 0, v = 0, c = 0;
   for (double a : x) m += a;
-  m /= x.size();
+  m /= n;
   for (double a : x) v += (a - m) * (a - m);
-  v /= x.size();
+  v /= n;
   for (std::size_t i = 4; i < x.size(); ++i) c += (x[i] - m) * (x[i - 4] - m);
-  c /= (x.size() - 4) * v;
+  c /= (n - 4) * v;
   EXPECT_NEAR(std::sqrt(v), 8.0, 0.4);
   EXPECT_NEAR(c, std::exp(-1.0), 0.05);  // lag 4 x 50 ms = tau
 }

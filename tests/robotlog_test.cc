@@ -975,7 +975,9 @@ TEST(RobotLogTest, ProcessingRefusesLogsItCannotAlign) {
     if (!log.tool_pose.lines.empty()) log.tool_pose.lines.resize(n);
     const bool ok = ProcessRobotLog(log, ProcessOptions(), &p, &e);
     EXPECT_EQ(ok, keep > 0.5) << keep << ": " << e.ToString();
-    if (!ok) EXPECT_NE(e.message.find("less than half"), std::string::npos) << e.ToString();
+    if (!ok) {
+      EXPECT_NE(e.message.find("less than half"), std::string::npos) << e.ToString();
+    }
   }
   ProcessOptions o;
   o.trial_start_s = 50;

@@ -174,7 +174,9 @@ TEST(TrialGoalTest, LeavingTheBandLosesTheGoal) {
     const double a = 2 * M_PI * 356 / 360 * static_cast<double>(i) / 712;
     const double rr = (i > 340 && i < 360) ? r - 0.0125 : r - 0.003;
     cut.Add({c[0] + rr * std::cos(a), c[1] + rr * std::sin(a)});
-    if (i == 345) EXPECT_EQ(cut.status(), GoalStatus::kLost);
+    if (i == 345) {
+      EXPECT_EQ(cut.status(), GoalStatus::kLost);
+    }
   }
   EXPECT_EQ(cut.status(), GoalStatus::kLost) << "swept " << cut.swept_deg();
   EXPECT_NE(cut.Detail().find("left the 11.5 mm band"), std::string::npos) << cut.Detail();

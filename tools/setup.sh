@@ -4,7 +4,10 @@
 #     off-screen screenshots), matio (robot .mat logs), nlohmann-json (reports), CLI11 (command line), python3-venv, Open MPI (studies under
 #     mpirun; optional at build time).
 #   - .venv/ with the MuJoCo wheel pinned in requirements.txt (plus matplotlib for plots).
+#   - The code checks' tools (tools/check_code.sh): clang-format and cppcheck (Debian), lizard
+#     (PyPI, requirements.txt).
 #   - CMake configure + build into build/ (executables in build/bin/).
+#   tools/setup.sh --deps-only    the packages and .venv only, no build
 # Safe to re-run: each step is skipped when already done.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -14,7 +17,7 @@ APT_PACKAGES=(build-essential cmake pkg-config python3 python3-venv python3-pip
   nlohmann-json3-dev libnlopt-dev libnlopt-cxx-dev
   libeigen3-dev libglfw3-dev libtinyxml2-dev libgtest-dev libgmock-dev libmatio-dev
   libstb-dev libcli11-dev nlohmann-json3-dev xvfb xauth libgl1-mesa-dri libglx-mesa0 libgl1-mesa-dev
-  libopenmpi-dev openmpi-bin)
+  libopenmpi-dev openmpi-bin clang-format cppcheck)
 
 missing=()
 for p in "${APT_PACKAGES[@]}"; do
@@ -41,9 +44,13 @@ if ! .venv/bin/python -m pip install -q --disable-pip-version-check -r requireme
   exit 1
 fi
 
+if [ "${1:-}" = "--deps-only" ]; then exit 0; fi
+
 BUILD_DIR="${SSC_BUILD_DIR:-build}"
 JOBS="${SSC_JOBS:-$(nproc)}"
+# SSC_WERROR=ON (set by .ci/run): the project's compiler warnings become errors.
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DSSC_PYTHON="$ROOT/.venv/bin/python" \
-  -DSSC_BUILD_PYTHON=ON -DPython_EXECUTABLE="$ROOT/.venv/bin/python" >/dev/null
+  -DSSC_BUILD_PYTHON=ON -DPython_EXECUTABLE="$ROOT/.venv/bin/python" \
+  -DSSC_WERROR="${SSC_WERROR:-OFF}" >/dev/null
 cmake --build "$BUILD_DIR" -j "$JOBS"
 echo "[setup] built into $BUILD_DIR/bin"

@@ -130,7 +130,7 @@ bool CreateOutputFileDir(const std::string& file, std::string* error) {
   return CreateOutputDir(parent.empty() ? "." : parent.string(), error);
 }
 
-Command::Command(std::string name, std::string summary)
+Command::Command(std::string name, const std::string& summary)
     : name_(std::move(name)), app_(std::make_unique<CLI::App>(summary, "ssc " + name_)) {
   app_->set_version_flag("--version", VersionText());
   app_->option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::Throw);
@@ -261,18 +261,17 @@ void Command::Flag(const std::string& name, bool* target, const std::string& hel
 }
 
 void Command::OutputDir(const std::string& name, std::string* target, const std::string& help) {
-  AddValue(name, help, "DIR", *target);
-  outputs_.push_back({name, target, false});
-  std::string* text = &texts_.back();
-  converters_.push_back([this, name, text, target](std::string*) {
-    if (Given(name)) *target = *text;
-    return true;
-  });
+  AddOutput(name, target, help, false);
 }
 
 void Command::OutputFile(const std::string& name, std::string* target, const std::string& help) {
-  AddValue(name, help, "FILE", *target);
-  outputs_.push_back({name, target, true});
+  AddOutput(name, target, help, true);
+}
+
+void Command::AddOutput(const std::string& name, std::string* target, const std::string& help,
+                        bool is_file) {
+  AddValue(name, help, is_file ? "FILE" : "DIR", *target);
+  outputs_.push_back({name, target, is_file});
   std::string* text = &texts_.back();
   converters_.push_back([this, name, text, target](std::string*) {
     if (Given(name)) *target = *text;

@@ -39,7 +39,7 @@ bool CreateOutputFileDir(const std::string& file, std::string* error);
 
 class Command {
  public:
-  Command(std::string name, std::string summary);
+  Command(std::string name, const std::string& summary);
   ~Command();
   Command(const Command&) = delete;
   Command& operator=(const Command&) = delete;
@@ -87,6 +87,8 @@ class Command {
  private:
   CLI::Option* AddValue(const std::string& name, const std::string& help, const std::string& type,
                         const std::string& default_text);
+  void AddOutput(const std::string& name, std::string* target, const std::string& help,
+                 bool is_file);
 
   std::string name_;
   std::unique_ptr<CLI::App> app_;

@@ -1,5 +1,4 @@
 // ssc sweep: a grid of trials on all cores, resumable, one CSV row per trial.
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -71,15 +70,8 @@ int RunSweepCommand(int argc, char** argv) {
   spec.out_csv = (out / "sweep.csv").string();
 
   const std::string scene = ResolveScenePath(spec.scene_name);
-  ModelPtr model = LoadModel(scene, &error);
-  if (!model) {
-    std::fprintf(stderr, "ssc sweep: %s\n", error.c_str());
-    return 1;
-  }
-  if (std::string e; !CheckTrialSetup(model.get(), spec.base, &e)) {
-    std::fprintf(stderr, "ssc sweep: %s: %s\n", scene.c_str(), e.c_str());
-    return 1;
-  }
+  ModelPtr model = LoadTrialScene(cmd, scene, spec.base);
+  if (!model) return 1;
   if (int rc = cmd.CreateOutputs(); rc != 0) return rc;
   const bool rank0 = JobRunnerRank() == 0;
   TrialProgress progress("ssc sweep", rank0 && !no_progress);

@@ -39,15 +39,8 @@ int RunTrialCommand(int argc, char** argv) {
   if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
   std::string error;
   const std::string scene = ResolveScenePath(scene_name);
-  ModelPtr model = LoadModel(scene, &error);
-  if (!model) {
-    std::fprintf(stderr, "ssc trial: %s\n", error.c_str());
-    return 1;
-  }
-  if (std::string e; !CheckTrialSetup(model.get(), config, &e)) {
-    std::fprintf(stderr, "ssc trial: %s: %s\n", scene.c_str(), e.c_str());
-    return 1;
-  }
+  ModelPtr model = LoadTrialScene(cmd, scene, config);
+  if (!model) return 1;
   if (cmd.Given("stop-at")) {
     // A partial run, for comparing with `ssc view --screenshot --time T` (same steps).
     DataPtr data = MakeData(model.get(), &error);

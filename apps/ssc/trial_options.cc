@@ -46,7 +46,8 @@ void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* c, TrialSettings* s)
             "take a step even when both differentials are below P_n");
   AddEffectsOption(cmd, "robot effects (docs/fidelity.md)", &s->effects, &c->effects);
   cmd->Check([c, s]() {
-    c->target = TrialTarget::Disk(kWorkspaceX, kWorkspaceY, 0.035, s->start_offset_mm * 1e-3);
+    c->target = TrialTarget::Disk(kWorkspaceX, kWorkspaceY, kBenchmarkDiskRadiusM,
+                                  s->start_offset_mm * 1e-3);
     c->target.goal.sweep_deg = s->sweep_deg;
     c->law.side = s->object_on == "right" ? FollowSide::kObjectOnRight : FollowSide::kObjectOnLeft;
     c->law.dead_band = !s->no_dead_band;
@@ -78,6 +79,21 @@ void AddControllerOptions(cli::Command* cmd, std::string* name, std::string* par
     return ParseControllerChoice(*name, *params, choice, &error) ? std::string()
                                                                  : "--controller: " + error;
   });
+}
+
+ModelPtr LoadTrialScene(const cli::Command& cmd, const std::string& scene_path,
+                        const TrialConfig& config) {
+  std::string error;
+  ModelPtr model = LoadModel(scene_path, &error);
+  if (!model) {
+    std::fprintf(stderr, "ssc %s: %s\n", cmd.name().c_str(), error.c_str());
+    return nullptr;
+  }
+  if (!CheckTrialSetup(model.get(), config, &error)) {
+    std::fprintf(stderr, "ssc %s: %s: %s\n", cmd.name().c_str(), scene_path.c_str(), error.c_str());
+    return nullptr;
+  }
+  return model;
 }
 
 void PrintApproachSharing(bool on, const SweepSummary& summary) {

@@ -6,6 +6,8 @@
 #include <string>
 
 #include "apps/ssc/cli.h"
+#include "geometry/dimensions.h"
+#include "runtime/mujoco_model.h"
 #include "runtime/trial.h"
 #include "studies/sweep.h"
 
@@ -18,7 +20,7 @@ void AddLawOptions(cli::Command* cmd, ContourLawParams* law);
 // the follow side and the dead band are set by a check that also runs config->Validate()).
 // `settings` must outlive the parse.
 struct TrialSettings {
-  double start_offset_mm = 32;
+  double start_offset_mm = kBenchmarkStartOffsetM * 1e3;
   double sweep_deg = 0;
   std::string object_on = "left";
   bool no_dead_band = false;
@@ -36,6 +38,11 @@ void AddEffectsOption(cli::Command* cmd, const std::string& what, std::string* t
 // its range). `name` and `params` hold the texts and must outlive the parse.
 void AddControllerOptions(cli::Command* cmd, std::string* name, std::string* params,
                           ControllerChoice* choice);
+
+// Loads the scene at `scene_path` and checks that `config` can run on it; on failure prints
+// "ssc COMMAND: ..." to stderr and returns null.
+ModelPtr LoadTrialScene(const cli::Command& cmd, const std::string& scene_path,
+                        const TrialConfig& config);
 
 // One summary line on the shared approach (runtime/approach_cache.h) of this rank's trials.
 void PrintApproachSharing(bool on, const SweepSummary& summary);

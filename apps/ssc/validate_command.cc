@@ -1,5 +1,4 @@
 // ssc validate: the twin on every cell of a published success map, scored.
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -64,19 +63,12 @@ int RunValidateCommand(int argc, char** argv) {
     return 1;
   }
   const std::string scene = ResolveScenePath(spec.scene_name);
-  ModelPtr model = LoadModel(scene, &error);
-  if (!model) {
-    std::fprintf(stderr, "ssc validate: %s\n", error.c_str());
-    return 1;
-  }
   TrialConfig first = sweep.base;
   first.law.p_ref_pa = cells.front().pref_pa;
   first.law.beta = cells.front().beta;
   first.law.step_mm = cells.front().step_mm;
-  if (std::string e; !CheckTrialSetup(model.get(), first, &e)) {
-    std::fprintf(stderr, "ssc validate: %s: %s\n", scene.c_str(), e.c_str());
-    return 1;
-  }
+  ModelPtr model = LoadTrialScene(cmd, scene, first);
+  if (!model) return 1;
   if (int rc = cmd.CreateOutputs(); rc != 0) return rc;
   const bool rank0 = JobRunnerRank() == 0;
   TrialProgress progress("ssc validate", rank0 && !no_progress);

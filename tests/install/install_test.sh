@@ -9,7 +9,7 @@ tmp="$(mktemp -d /tmp/ssc_install_XXXXXX)"
 trap 'rm -rf "$tmp"' EXIT
 prefix="$tmp/prefix"
 cmake --install "$build" --prefix "$prefix" >/dev/null
-for f in bin/ssc lib/libssc_plugin.so include/ssc/plugin/chamber_pressure_sensor.h \
+for f in bin/ssc bin/ssc_bench lib/libssc_plugin.so include/ssc/plugin/chamber_pressure_sensor.h \
          share/ssc/models/ssc_tool.xml share/ssc/scenes/disk_benchmark.xml \
          share/ssc/data/published/success_map_dl5.csv \
          lib/cmake/ssc/sscConfig.cmake; do
@@ -26,6 +26,9 @@ grep -qx "resources $prefix/share/ssc" out.txt || { echo "FAIL: not the installe
 grep -q "phase approach\|phase move\|phase follow" out.txt || { echo "FAIL: no trial"; exit 1; }
 env -u SSC_SOURCE_DIR -u SSC_RESOURCE_DIR "$prefix/bin/ssc" trial --stop-at 0.3 --no-plot --out "$tmp/t"
 [ ! -e "$tmp/MUJOCO_LOG.TXT" ] || { echo "FAIL: MUJOCO_LOG.TXT written"; exit 1; }
+# Everything `ssc` runs is installed: `ssc bench` finds its binary next to the installed `ssc`.
+env -u SSC_SOURCE_DIR -u SSC_RESOURCE_DIR "$prefix/bin/ssc" bench --help >/dev/null ||
+  { echo "FAIL: the installed ssc bench does not run"; exit 1; }
 # The prefix moved elsewhere (the original removed): nothing in it points into the builder's
 # venv, build or source tree; `ssc` runs from the copy with the copy's libmujoco and scenes; a
 # project that needs only the control law configures without MuJoCo, NLopt, nlohmann-json, MPI.
