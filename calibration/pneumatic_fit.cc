@@ -55,14 +55,24 @@ double StaticMeanVacuum(const PneumaticModel& model, double offset_m) {
   return Mean(Taps(model, offset_m));
 }
 
+PneumaticModel ScaledFitStart(double scale) {
+  PneumaticModel start;
+  start.pneumatics.pump_free_flow_m3_s *= scale;
+  start.pneumatics.port_area_m2 *= scale;
+  start.pneumatics.jet_area_m2 *= scale;
+  start.geometry.lip_roughness_gap_m *= scale;
+  return start;
+}
+
 std::vector<FitTarget> EvaluatePublishedTargets(const PneumaticModel& m,
                                                 const StaticDepthPressures& depth_pa) {
-  std::vector<FitTarget> t = {{"offset_at_40pa_mm", "mm", kDepthTargetOffsetMm[0], 0.1},
-                              {"offset_at_100pa_mm", "mm", kDepthTargetOffsetMm[1], 0.1},
-                              {"offset_at_200pa_mm", "mm", kDepthTargetOffsetMm[2], 0.1},
-                              {"differential_at_100pa_pa", "Pa", 200, 20},
-                              {"air_mean_pa", "Pa", 4, 1},
-                              {"plate_min_pa", "Pa", 20000, 1000}};
+  std::vector<FitTarget> t = {
+      {"offset_at_40pa_mm", "mm", kDepthTargetOffsetMm[0], 0.1},
+      {"offset_at_100pa_mm", "mm", kDepthTargetOffsetMm[1], 0.1},
+      {"offset_at_200pa_mm", "mm", kDepthTargetOffsetMm[2], 0.1},
+      {"differential_at_100pa_pa", "Pa", kPublishedDifferentialAt100PaPa, 20},
+      {"air_mean_pa", "Pa", 4, 1},
+      {"plate_min_pa", "Pa", 20000, 1000}};
   const double d100 = OffsetFor(m, depth_pa[1]);
   t[0].model = OffsetFor(m, depth_pa[0]) * 1e3;
   t[1].model = d100 * 1e3;

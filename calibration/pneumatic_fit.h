@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "calibration/published_targets.h"
 #include "plugin/pneumatics/cup_geometry.h"
 #include "plugin/pneumatics/flow_network.h"
 
@@ -42,9 +43,9 @@ struct PneumaticFit {
 };
 
 // The published P_ref of the three depth targets, and where the cup rode at each (mm inside the
-// disk edge, the published -dr at beta 1.5).
-inline constexpr std::array<double, 3> kDepthTargetPrefPa = {40, 100, 200};
-inline constexpr std::array<double, 3> kDepthTargetOffsetMm = {0.7, 2.5, 3.2};
+// disk edge, the published -dr at beta 1.5): calibration/published_targets.h.
+inline constexpr std::array<double, 3> kDepthTargetPrefPa = kPublishedDepthPrefPa;
+inline constexpr std::array<double, 3> kDepthTargetOffsetMm = kPublishedDepthMm;
 
 // The static mean vacuum the depth targets ask for at those offsets. The published depths are
 // closed-loop results: P_ref is where the loop aims, not necessarily what the static probe reads
@@ -52,6 +53,10 @@ inline constexpr std::array<double, 3> kDepthTargetOffsetMm = {0.7, 2.5, 3.2};
 // calibration (studies/loop_calibration.h) moves them to what the twin's loop actually settles on.
 using StaticDepthPressures = std::array<double, 3>;
 inline constexpr StaticDepthPressures kOpenLoopDepthPressures = kDepthTargetPrefPa;
+
+// The fit's starting model: the defaults with the four fitted parameters multiplied by `scale`
+// (ssc calibrate --start-scale: a fit that finds its way back tests the fit).
+PneumaticModel ScaledFitStart(double scale);
 
 // Evaluates the targets for a model (fills FitTarget::model): the offsets where the static mean
 // vacuum is `depth_pa`, the differential at the middle one.

@@ -18,6 +18,12 @@ inline constexpr double kToolCentreOffsetM = 0.146;
 inline constexpr double kCupBodyDiameterMm = 23.0;
 inline constexpr double kCupOpeningDiameterMm = 11.0;
 
+// The disk benchmark of the published disk trials: a disk of this radius centred at W, m, and
+// the cup's start this far east of its centre, m (3 mm inside the edge). The scene files write
+// the disk in MJCF; a test (ur10_model_test) checks them against these.
+inline constexpr double kBenchmarkDiskRadiusM = 0.035;
+inline constexpr double kBenchmarkStartOffsetM = 0.032;
+
 }  // namespace ssc
 
 #endif  // SSC_GEOMETRY_DIMENSIONS_H_

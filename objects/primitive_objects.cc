@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "geometry/dimensions.h"
 #include "objects/object_spec.h"
 #include "objects/spec_helpers.h"
 
@@ -61,7 +62,7 @@ ObjectSpec MakeDisk(double diameter_mm) {
   return Disk(ValueName("disk_d", diameter_mm, 2), diameter_mm);
 }
 
-ObjectSpec MakeBenchmarkDisk() { return Disk("disk_r35", 70); }
+ObjectSpec MakeBenchmarkDisk() { return Disk("disk_r35", 2 * kBenchmarkDiskRadiusM * 1e3); }
 
 ObjectSpec MakeHole(double diameter_mm) {
   ObjectSpec s;

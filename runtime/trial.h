@@ -24,6 +24,7 @@
 #include "controller/pure/trial_goal.h"
 #include "controller/pure/trial_metrics.h"
 #include "controller/pure/trial_outcome.h"
+#include "geometry/dimensions.h"
 #include "plugin/chamber_pressure_sensor.h"
 #include "runtime/control_dispatch.h"
 #include "runtime/mujoco_model.h"
@@ -36,20 +37,20 @@ enum class TrialPhase { kApproach, kMoveToStart, kFollow, kDone };
 const char* PhaseName(TrialPhase phase);
 
 // What the trial follows: the landing and start points, the goal that completes it, and the
-// true contour for the metrics. The default is the disk benchmark (35 mm disk at W, start 32 mm
-// east of its centre, one counter-clockwise loop).
+// true contour for the metrics. The default is the disk benchmark (geometry/dimensions.h: the
+// disk at W, the start east of its centre, one counter-clockwise loop).
 struct TrialTarget {
-  Point2 approach{kWorkspaceX, kWorkspaceY};       // the cup descends here (world x/y, m)
-  Point2 start{kWorkspaceX + 0.032, kWorkspaceY};  // cup centre when following starts
-  TrialGoal goal = TrialGoal::AroundDisk({kWorkspaceX, kWorkspaceY}, 0.035);
-  double disk_radius_m = 0.035;    // > 0: r_mean / dr / sigma_r about the goal's centre
+  Point2 approach{kWorkspaceX, kWorkspaceY};  // the cup descends here (world x/y, m)
+  Point2 start{kWorkspaceX + kBenchmarkStartOffsetM, kWorkspaceY};  // cup centre at following
+  TrialGoal goal = TrialGoal::AroundDisk({kWorkspaceX, kWorkspaceY}, kBenchmarkDiskRadiusM);
+  double disk_radius_m = kBenchmarkDiskRadiusM;  // > 0: r_mean / dr / sigma_r about the centre
   double surface_top_z_m = 0.010;  // the approach never takes the lip plane deeper than
                                    // max_compression_m below this
   double max_compression_m = 0.002;
   // The true contour: the contour distance, the tracked arc position, goal points, the band of
   // following (the default: the benchmark disk's circle).
-  std::shared_ptr<const ContourPath> edge =
-      std::make_shared<const ContourPath>(ContourPath::Circle({kWorkspaceX, kWorkspaceY}, 0.035));
+  std::shared_ptr<const ContourPath> edge = std::make_shared<const ContourPath>(
+      ContourPath::Circle({kWorkspaceX, kWorkspaceY}, kBenchmarkDiskRadiusM));
 
   // The disk benchmark with its start point `start_offset_m` east of the centre.
   static TrialTarget Disk(double centre_x_m, double centre_y_m, double radius_m,

@@ -9,6 +9,7 @@
 #include "common/output_file.h"
 #include "common/strict_number.h"
 #include "controller/pure/contour_law.h"
+#include "geometry/dimensions.h"
 
 namespace ssc {
 
@@ -151,11 +152,11 @@ bool RunProbeStudy(EdgeProbe3d* probe, const ProbeStudySpec& spec,
     WriteRow(edge, off, 0.0, r);
     if (edge_row) edge_row(off, r);
   }
-  // Around the disk (centre (0.15, 0), radius 35 mm) at a fixed inset.
+  // Around the benchmark disk (scenes/probe_edge.xml puts it at (0.15, 0)) at a fixed inset.
   OutputFile disk_file(result->disk_csv);
   std::ostream& disk = disk_file.stream();
   WriteHeader(disk);
-  const double cx = 0.15, radius = 0.035;
+  const double cx = 0.15, radius = kBenchmarkDiskRadiusM;
   for (double a = 0; a < 360 - 1e-9; a += spec.disk_step_deg) {
     const double th = a * M_PI / 180;
     const double r_m = radius - spec.disk_inset_mm * 1e-3;

@@ -7,52 +7,51 @@
 #include <nlopt.hpp>
 #include <sstream>
 
+#include "calibration/published_targets.h"
 #include "studies/validation.h"
 
 namespace ssc {
 
 const std::vector<DynamicParameter>& DynamicParameters() {
-  static const std::vector<DynamicParameter> kParams = {
-      {"period_s", "s", 0.20, 0.30, [](TrialConfig* c) { return &c->control_period_s; }},
-      {"smoothing_s", "s", 0.03, 0.25, [](TrialConfig* c) { return &c->servo.smoothing_s; }},
-      {"servo_damping", "1", 0.2, 1.0, [](TrialConfig* c) { return &c->servo.damping; }},
-      {"jitter_s", "s", 0.0, 0.08, [](TrialConfig* c) { return &c->effects.loop.jitter_s; }},
-      {"pose_delay_s", "s", 0.0, 0.15,
-       [](TrialConfig* c) { return &c->effects.loop.pose_delay_s; }},
-      {"step_error_relative", "1", 0.0, 1.0,
-       [](TrialConfig* c) { return &c->effects.loop.step_error_relative; }},
-      {"step_error_max_mm", "mm", 0.3, 3.0,
-       [](TrialConfig* c) { return &c->effects.loop.step_error_max_mm; }},
-      {"step_error_corr", "1", 0.0, 0.95,
-       [](TrialConfig* c) { return &c->effects.loop.step_error_corr; }},
-      {"slip_mm", "mm", 0.2, 2.0, [](TrialConfig* c) { return &c->effects.lip.slip_mm; }},
-      {"tilt_decades", "decades", 0.0, 0.4,
-       [](TrialConfig* c) { return &c->effects.lip.tilt_decades; }},
-      {"peel_decades", "decades", 0.0, 1.0,
-       [](TrialConfig* c) { return &c->effects.lip.peel_decades; }},
-      {"gain_spread", "1", 0.0, 0.2,
-       [](TrialConfig* c) { return &c->effects.chambers.gain_spread; }},
-      {"offset_spread_pa", "Pa", 0.0, 20.0,
-       [](TrialConfig* c) { return &c->effects.chambers.offset_spread_pa; }},
-      {"drift_pa", "Pa", 0.0, 20.0, [](TrialConfig* c) { return &c->effects.chambers.drift_pa; }},
-      {"drift_relative", "1", 0.0, 0.3,
-       [](TrialConfig* c) { return &c->effects.chambers.drift_relative; }},
-  };
+  static const std::vector<DynamicParameter> kParams = [] {
+    std::vector<DynamicParameter> params = {
+        {"period_s", "s", 0.20, 0.30, [](TrialConfig* c) { return &c->control_period_s; }, nullptr},
+        {"smoothing_s", "s", 0.03, 0.25, [](TrialConfig* c) { return &c->servo.smoothing_s; },
+         nullptr},
+        {"servo_damping", "1", 0.2, 1.0, [](TrialConfig* c) { return &c->servo.damping; }, nullptr},
+    };
+    for (const EffectKey& k : EffectKeys()) {
+      if (k.fit_max > k.fit_min)
+        params.push_back({k.key, k.unit, k.fit_min, k.fit_max, nullptr, &k});
+    }
+    return params;
+  }();
   return kParams;
 }
 
 std::vector<MetricTarget> PublishedMetricTargets() {
-  // smart-suction-cup.md, calibration targets (published means of three trials).
-  return {
-      {"dr_mm beta 1.5 P_ref 40", 1.5, 40, MetricTarget::kDr, -0.7, 0.3},
-      {"dr_mm beta 1.5 P_ref 100", 1.5, 100, MetricTarget::kDr, -2.5, 0.3},
-      {"dr_mm beta 1.5 P_ref 200", 1.5, 200, MetricTarget::kDr, -3.2, 0.3},
-      {"sigma_r_mm beta 1.5 P_ref 100", 1.5, 100, MetricTarget::kSigmaR, 1.36, 0.3},
-      {"sigma_r_mm beta 3.5 P_ref 100", 3.5, 100, MetricTarget::kSigmaR, 1.89, 0.3},
-      {"s_c beta 1.5 P_ref 100", 1.5, 100, MetricTarget::kSc, 0.11, 0.05},
-      {"s_c beta 2.5 P_ref 100", 2.5, 100, MetricTarget::kSc, 0.21, 0.05},
-      {"s_c beta 3.5 P_ref 100", 3.5, 100, MetricTarget::kSc, 0.31, 0.05},
+  // calibration/published_targets.h; tolerances 0.3 mm and 5 points of s_c.
+  auto name = [](const char* metric, double beta, double pref) {
+    std::ostringstream os;
+    os << metric << " beta " << beta << " P_ref " << pref;
+    return os.str();
   };
+  std::vector<MetricTarget> targets;
+  for (std::size_t i = 0; i < kPublishedDepthMm.size(); ++i) {
+    targets.push_back({name("dr_mm", kPublishedDepthBeta, kPublishedDepthPrefPa[i]),
+                       kPublishedDepthBeta, kPublishedDepthPrefPa[i], MetricTarget::kDr,
+                       -kPublishedDepthMm[i], 0.3});
+  }
+  for (const PublishedWander& w : kPublishedWander) {
+    if (w.sigma_r_mm < 0) continue;
+    targets.push_back({name("sigma_r_mm", w.beta, kPublishedWanderPrefPa), w.beta,
+                       kPublishedWanderPrefPa, MetricTarget::kSigmaR, w.sigma_r_mm, 0.3});
+  }
+  for (const PublishedWander& w : kPublishedWander) {
+    targets.push_back({name("s_c", w.beta, kPublishedWanderPrefPa), w.beta, kPublishedWanderPrefPa,
+                       MetricTarget::kSc, w.s_c, 0.05});
+  }
+  return targets;
 }
 
 std::vector<MapCell> PublishedOutcomeCells() {
@@ -233,6 +232,28 @@ bool FitDynamic(const mjModel* m, const DynamicFitSpec& spec,
     return false;
   result->wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return true;
+}
+
+bool ReadDynamicFitCells(const std::string& map_path, std::vector<MapCell>* cells,
+                         std::string* error) {
+  if (!ReadPublishedMap(map_path, cells, error)) return false;
+  for (const MapCell& c : PublishedOutcomeCells()) {
+    bool in_map = false;
+    for (const MapCell& m : *cells)
+      in_map |= m.step_mm == c.step_mm && m.beta == c.beta && m.pref_pa == c.pref_pa;
+    if (!in_map) cells->push_back(c);
+  }
+  return true;
+}
+
+bool ScoreOnHeldOutSeeds(const mjModel* m, const DynamicFitSpec& spec, const TrialConfig& best,
+                         std::uint64_t holdout_seed, HeldOutScores* scores, std::string* error) {
+  DynamicFitSpec held = spec;
+  held.seed = holdout_seed == spec.seed ? holdout_seed + 1 : holdout_seed;
+  scores->seed = held.seed;
+  std::vector<MetricTarget> unused;
+  return EvaluateDynamic(m, held, spec.base, &scores->start_cost, &scores->start, &unused, error) &&
+         EvaluateDynamic(m, held, best, &scores->best_cost, &scores->best, &unused, error);
 }
 
 }  // namespace ssc

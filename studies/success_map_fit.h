@@ -19,14 +19,19 @@
 
 namespace ssc {
 
-// A fitted parameter: where it lives in the trial config, its unit and its range.
+// A fitted parameter: where it lives in the trial config, its unit and the range the fit searches.
 struct DynamicParameter {
   const char* key;
   const char* unit;
   double min, max;
-  double* (*field)(TrialConfig*);
+  double* (*trial_field)(TrialConfig*);  // the loop's own parameters
+  const EffectKey* effect;               // or a robot effect's key (its table holds the range)
+  double* field(TrialConfig* c) const {
+    return effect ? effect->field(&c->effects) : trial_field(c);
+  }
 };
-// Every parameter the dynamic fit may move (period, servo smoothing and the effects' keys).
+// Every parameter the dynamic fit may move: period, servo smoothing and damping, then each
+// effect key with a fit range (EffectKeys()).
 const std::vector<DynamicParameter>& DynamicParameters();
 // "" when `keys` name at least one parameter, each a DynamicParameters() key, none twice; else
 // the problem, listing the valid keys.
@@ -71,6 +76,11 @@ struct DynamicFitSpec {
   std::string algorithm = "bobyqa";  // or "sbplx"
 };
 
+// The fit's cells: the map at `map_path` (ReadPublishedMap) and the published outcomes beside it
+// (PublishedOutcomeCells) that the map does not hold.
+bool ReadDynamicFitCells(const std::string& map_path, std::vector<MapCell>* cells,
+                         std::string* error);
+
 struct DynamicFitResult {
   TrialConfig best;
   std::vector<double> values;  // fitted values of spec.keys
@@ -90,6 +100,16 @@ bool EvaluateDynamic(const mjModel* m, const DynamicFitSpec& spec, const TrialCo
 bool FitDynamic(const mjModel* m, const DynamicFitSpec& spec,
                 const std::function<void(const std::string&)>& log, DynamicFitResult* result,
                 std::string* error);
+
+// A fit's start and best point scored again on seeds the fit never saw (a fit on common seeds
+// also fits their noise): base seed `holdout_seed`, or the next one when it is the fit's own.
+struct HeldOutScores {
+  std::uint64_t seed = 0;
+  double start_cost = 0, best_cost = 0;
+  MapScore start, best;
+};
+bool ScoreOnHeldOutSeeds(const mjModel* m, const DynamicFitSpec& spec, const TrialConfig& best,
+                         std::uint64_t holdout_seed, HeldOutScores* scores, std::string* error);
 
 }  // namespace ssc
 

@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """Plot `ssc probe` output: the calibration view of the chamber-pressure sensor.
 
-usage: plot_probe.py edge.csv disk.csv out.png
+usage: plot_probe.py edge.csv disk.csv out.png [DEPTHS]
+
+DEPTHS: the published depths to mark, "mm:Pa,mm:Pa,..." (`ssc probe` passes them from
+calibration/published_targets.h); none marked when absent.
 """
 import csv
 import math
@@ -27,7 +30,7 @@ def same_curve(a, b, rel=1e-3):
 
 
 def main():
-    if len(sys.argv) != 4:
+    if len(sys.argv) not in (4, 5):
         sys.exit(__doc__)
     edge, disk, out = read(sys.argv[1]), read(sys.argv[2]), sys.argv[3]
     fig, ax = plt.subplots(1, 3, figsize=(15, 4.5))
@@ -54,7 +57,8 @@ def main():
         label = ("chamber " if len(group) == 1 else "chambers ") + " = ".join(map(str, group))
         a.semilogy(off, [max(v, floor) for v in edge[f"static_p{group[0]}_pa"]], "-", color=col,
                    lw=1, label=label)
-    targets = [(0.7, 40), (2.5, 100), (3.2, 200)]
+    targets = [tuple(float(v) for v in item.split(":"))
+               for item in (sys.argv[4].split(",") if len(sys.argv) == 5 else [])]
     a.errorbar([t[0] for t in targets], [t[1] for t in targets], xerr=0.3, fmt="rs",
                label="published disk results (+-0.3 mm)")
     a.axhline(10000, color="r", ls=":", lw=1)

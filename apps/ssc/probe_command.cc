@@ -7,6 +7,7 @@
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
+#include "calibration/published_targets.h"
 #include "studies/edge_probe.h"
 
 namespace ssc {
@@ -83,7 +84,15 @@ int RunProbe(int argc, char** argv) {
   std::printf("wrote %s and %s\n", result.edge_csv.c_str(), result.disk_csv.c_str());
   if (!no_plot) {
     const std::string png = (std::filesystem::path(out_dir) / "probe.png").string();
-    if (RunPlotScript("plot_probe.py", {result.edge_csv, result.disk_csv, png})) {
+    // The published depths the plot marks, from their one home: "mm:Pa,mm:Pa,...".
+    std::string targets;
+    for (std::size_t i = 0; i < kPublishedDepthMm.size(); ++i) {
+      char item[64];
+      std::snprintf(item, sizeof(item), "%s%g:%g", i ? "," : "", kPublishedDepthMm[i],
+                    kPublishedDepthPrefPa[i]);
+      targets += item;
+    }
+    if (RunPlotScript("plot_probe.py", {result.edge_csv, result.disk_csv, png, targets})) {
       std::printf("wrote %s\n", png.c_str());
     }
   }

@@ -1,7 +1,7 @@
 // What makes the real cup on the real robot differ from an ideal one, as plain C++ (no MuJoCo).
 //
 // Each mechanism is a physical parameter set with units, a range argued from the hardware
-// (docs/fidelity.md) and an off state (all zero = the ideal loop of round one). The trial applies
+// (docs/fidelity.md) and an off state (all zero = the ideal loop). The trial applies
 // them between the plugin's filtered pressures and the control law ("what the host reads") and
 // in the loop's timing; the viewer runs the same trial code, so it sees the same thing.
 //
@@ -96,18 +96,19 @@ struct RobotEffectsParams {
 
 // The twin's default effects, fitted globally (`ssc calibrate --dynamic`, BOBYQA, common seeds)
 // to the published dL 5 mm map, the Fig. 6 targets and the published outcomes beside the map
-// (docs/fidelity.md, rounds five and six): the landing error of each step (share 0.38 of the
-// step, capped at 1.43 mm, 1 sigma per axis, successive misses correlated 0.29; the peel fitted
-// with it in round five went to 0.02 decades: off) and a residual tare offset per chamber
-// (1 sigma 7.9 Pa, drawn per trial). Every other effect is off. `--effects off` gives the ideal
-// loop of round one.
+// (docs/fidelity.md): the landing error of each step (a share of the step, capped, successive
+// misses correlated) and a residual tare offset per chamber, drawn per trial. Every other effect
+// is off. `--effects off` gives the ideal loop. The values: docs/defaults.md.
 RobotEffectsParams FittedRobotEffects();
 
-// The keys of the effects, one table: name, unit, range, what it is (parsing, --help, docs).
+// The keys of the effects, one table: name, unit, valid range, the range `ssc calibrate
+// --dynamic` searches (fit_min == fit_max: never fitted), what it is. Parsing, validation,
+// --help, the fit and docs/defaults.md all read it.
 struct EffectKey {
   const char* key;
   const char* unit;
   double min, max;
+  double fit_min, fit_max;
   const char* what;
   double* (*field)(RobotEffectsParams*);
 };

@@ -784,6 +784,15 @@ std::string WriteLabMat(const std::string& recording, const std::string& mat_dir
 NB_MODULE(_core, m) {
   using namespace ssc;
   m.doc() = "Smart Suction Cup twin: trials, sweeps, validation, probe and log comparison (C++).";
+  const ContourLawParams law;  // the law's defaults have one home: ContourLawParams{}
+  m.def(
+      "law_defaults",
+      [law] {
+        return Dict({{"pref", nb::cast(law.p_ref_pa)},
+                     {"beta", nb::cast(law.beta)},
+                     {"step_mm", nb::cast(law.step_mm)}});
+      },
+      "The contour law's default P_ref (Pa), beta and step (mm): ContourLawParams{} in C++.");
 
   m.def("resource_dir", &ResourceDir, "The folder holding models/ and scenes/.");
   m.def("set_resource_dir", &SetResourceDir, "dir"_a);
@@ -844,7 +853,7 @@ NB_MODULE(_core, m) {
         }
         return StepDict(ComputeContourStep(p_pa, Law(pref, beta, step_mm)));
       },
-      "p_pa"_a, "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 7.5,
+      "p_pa"_a, "pref"_a = law.p_ref_pa, "beta"_a = law.beta, "step_mm"_a = law.step_mm,
       "The published contour law on four chamber pressures (tool frame step, m).");
 
   m.def(
@@ -875,9 +884,10 @@ NB_MODULE(_core, m) {
         if (!error.empty()) Fail(error);
         return ResultDict(ResolveScenePath(scene_path), config, r);
       },
-      "scene"_a = "disk_benchmark", "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 7.5,
-      "seed"_a = 1, "object"_a = "", "keep_log"_a = true, "stop_at_s"_a = 0.0, "timeout_s"_a = 0.0,
-      "effects"_a = "default", "controller"_a = "published", "controller_params"_a = "",
+      "scene"_a = "disk_benchmark", "pref"_a = law.p_ref_pa, "beta"_a = law.beta,
+      "step_mm"_a = law.step_mm, "seed"_a = 1, "object"_a = "", "keep_log"_a = true,
+      "stop_at_s"_a = 0.0, "timeout_s"_a = 0.0, "effects"_a = "default",
+      "controller"_a = "published", "controller_params"_a = "",
       "One contour-following trial, as `ssc trial` runs it. effects: 'default' (the fitted set), "
       "'off' or key=value,... as --effects. object: a test object by name "
       "(its arm scene; 'gantry' in scene picks the gantry one). controller: a registered name "
@@ -1178,16 +1188,17 @@ NB_MODULE(_core, m) {
         }
         return std::string(OutcomeName(r.outcome));
       },
-      "dir"_a, "scene"_a = "disk_benchmark", "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 7.5,
-      "seed"_a = 1, "effects"_a = "default",
+      "dir"_a, "scene"_a = "disk_benchmark", "pref"_a = law.p_ref_pa, "beta"_a = law.beta,
+      "step_mm"_a = law.step_mm, "seed"_a = 1, "effects"_a = "default",
       "Runs a trial and writes it as a lab recording (ssc trial --robot-log).");
 
   nb::class_<SteppedTrial>(m, "SteppedTrial",
                            "A trial stepped one control iteration at a time from Python.")
       .def(nb::init<const std::string&, double, double, double, std::uint64_t, const std::string&,
                     double, const std::string&>(),
-           "scene"_a = "disk_benchmark_gantry", "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 7.5,
-           "seed"_a = 1, "object"_a = "", "timeout_s"_a = 0.0, "effects"_a = "default")
+           "scene"_a = "disk_benchmark_gantry", "pref"_a = law.p_ref_pa, "beta"_a = law.beta,
+           "step_mm"_a = law.step_mm, "seed"_a = 1, "object"_a = "", "timeout_s"_a = 0.0,
+           "effects"_a = "default")
       .def("reset", &SteppedTrial::Reset, "seed"_a)
       .def("set_external_policy", &SteppedTrial::SetExternalPolicy, "on"_a,
            "On: each following iteration waits for apply_step instead of taking the law's step.")

@@ -25,6 +25,8 @@ from gymnasium import spaces
 
 from . import _core
 
+_LAW = _core.law_defaults()  # the C++ law's defaults (ContourLawParams{}), one home
+
 ENV_ID = "ssc_twin/EdgeFollowing-v0"
 # Filtered gauge vacuum per chamber: about -noise (in air) up to ambient (a full grasp), Pa.
 PRESSURE_LOW_PA, PRESSURE_HIGH_PA = -1.0e4, 1.2e5
@@ -53,9 +55,10 @@ class EdgeFollowingEnv(gym.Env):
     # video at this rate plays in real time.
     metadata = {"render_modes": ["rgb_array", "human"], "render_fps": 1.0 / CONTROL_PERIOD_S}
 
-    def __init__(self, objects=None, include_ft=False, max_step_mm=10.0, pref=100.0, beta=2.0,
-                 failure_penalty=10.0, terminal_reward=10.0, timeout_s=None, effects="default",
-                 scene=DEFAULT_SCENE, render_mode=None, width=640, height=480, camera="cup"):
+    def __init__(self, objects=None, include_ft=False, max_step_mm=10.0, pref=_LAW["pref"],
+                 beta=_LAW["beta"], failure_penalty=10.0, terminal_reward=10.0, timeout_s=None,
+                 effects="default", scene=DEFAULT_SCENE, render_mode=None, width=640, height=480,
+                 camera="cup"):
         super().__init__()
         # The scene: a name under scenes/ ("disk_benchmark_gantry", the cup on a gantry;
         # "disk_benchmark", the UR-10 arm; "disk_benchmark_light") or an MJCF path. With test
@@ -108,8 +111,8 @@ class EdgeFollowingEnv(gym.Env):
     def _trial_for(self, name):
         if name not in self._trials:
             t = _core.SteppedTrial(scene=self.scene, pref=self.pref, beta=self.beta,
-                                   step_mm=7.5, seed=1, object=name or "", timeout_s=self.timeout_s,
-                                   effects=self.effects)
+                                   step_mm=_LAW["step_mm"], seed=1, object=name or "",
+                                   timeout_s=self.timeout_s, effects=self.effects)
             t.set_external_policy(True)
             self._trials[name] = t
         return self._trials[name]
@@ -351,7 +354,7 @@ def _parametric(name):
 class PublishedLawPolicy:
     """The published contour law as a policy on the environment's observation (the baseline)."""
 
-    def __init__(self, env, pref=100.0, beta=2.0, step_mm=7.5):
+    def __init__(self, env, pref=_LAW["pref"], beta=_LAW["beta"], step_mm=_LAW["step_mm"]):
         self.max_step_mm = env.unwrapped.max_step_mm
         if step_mm > self.max_step_mm:
             raise ValueError("step_mm larger than the environment's max_step_mm")
