@@ -72,7 +72,6 @@ void InitJobRunnerMpi(int* argc, char*** argv);
 void FinalizeJobRunnerMpi(bool abort);
 int JobRunnerRank();       // 0 without MPI
 int JobRunnerRankCount();  // 1 without MPI
-bool JobRunnerHasMpi();    // built with MPI
 
 }  // namespace ssc
 

@@ -1,4 +1,4 @@
-// Variants of the tool model, in memory, for calibration and fidelity studies: the pressure
+// Variants of the tool model, in memory, for calibration and simulator-cost studies: the pressure
 // plugin's config keys set to given values, and the same cup with a different number of lip
 // segments (same total lip stiffness, same ring radius).
 //

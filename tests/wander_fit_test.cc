@@ -1,6 +1,8 @@
 // The wander calibration's machinery on a tiny budget: trials run with the candidate sensor
 // chain, the reported cost is the objective of the reported model, and Nelder-Mead improves on
 // its initial simplex.
+#include "studies/wander_fit.h"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -8,7 +10,6 @@
 #include <filesystem>
 
 #include "runtime/mujoco_model.h"
-#include "studies/dynamic_calibration.h"
 
 namespace ssc {
 namespace {

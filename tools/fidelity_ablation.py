@@ -19,8 +19,8 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-# The default robot effects (controller/pure/robot_effects.cc, FittedRobotEffects; docs/fidelity.md
-# round six) split into mechanisms; "off" is the ideal loop's value. The loop's timing is the
+# The default robot effects (controller/pure/robot_effects.cc, FittedRobotEffects; docs/defaults.md)
+# split into mechanisms; "off" is the ideal loop's value. The loop's timing is the
 # default's (0.15 s period, 0.15 s smoothing) in every configuration.
 MECHANISMS = {
     "step_error": {"on": {"step_error_relative": 0.38, "step_error_max_mm": 1.43},

@@ -172,7 +172,7 @@ MUTATIONS = [
       "return done.count(MakeKey(k.p_ref_pa, k.beta, k.step_mm, jobs[i].repeat)) > 0;",
       "return false;",
       "a resumed sweep runs finished rows again", ("trial_test",)),
-    M("wander-cost-scale", "studies", "studies/dynamic_calibration.cc",
+    M("wander-cost-scale", "studies", "studies/wander_fit.cc",
       "if (t.sigma_r_mm >= 0) cost += std::pow((sigma - t.sigma_r_mm) / 0.2, 2);",
       "if (t.sigma_r_mm >= 0) cost += std::pow((sigma - t.sigma_r_mm) / 0.25, 2);",
       "wander objective scales sigma_r misses by 0.25 mm, not 0.2", ("wander_fit_test",)),

@@ -59,8 +59,9 @@ def main():
                    lw=1, label=label)
     targets = [tuple(float(v) for v in item.split(":"))
                for item in (sys.argv[4].split(",") if len(sys.argv) == 5 else [])]
-    a.errorbar([t[0] for t in targets], [t[1] for t in targets], xerr=0.3, fmt="rs",
-               label="published disk results (+-0.3 mm)")
+    if targets:
+        a.errorbar([t[0] for t in targets], [t[1] for t in targets], xerr=0.3, fmt="rs",
+                   label="published disk results (+-0.3 mm)")
     a.axhline(10000, color="r", ls=":", lw=1)
     a.text(off[0], 11000, "grasp 10 kPa", color="r", fontsize=8, va="bottom")
     a.set_xlabel("cup centre inside the edge (mm)")

@@ -107,7 +107,7 @@ def main():
     a.set_yscale("log")
     a.set_xlabel("wall time per simulated second (s)")
     a.set_ylabel("pressure error vs reference (RMS log10)")
-    a.set_title("simulator: cost vs fidelity (red: default)")
+    a.set_title("simulator: cost vs pressure error (red: default)")
     a.grid(True, which="both", alpha=0.3)
     fig.tight_layout(rect=(0, 0.04, 0.83, 1))
     fig.savefig(sys.argv[3], dpi=100, bbox_inches="tight")

@@ -4,7 +4,7 @@
 //        contour error vs speed, and the Pareto front of speed vs tracking error;
 //   simulator: one logged path replayed with cheaper and dearer settings (rays per chamber,
 //        sensor rate, time step, integrator, lip segments) -> wall time per simulated second vs
-//        pressure error against a high-fidelity reference replay (16 rays per chamber, 32 lip
+//        pressure error against the finest replay as reference (16 rays per chamber, 32 lip
 //        segments, 0.25 ms, RK4).
 #include <cmath>
 #include <cstdio>
@@ -17,7 +17,7 @@
 #include "apps/ssc/plotting.h"
 #include "common/output_file.h"
 #include "runtime/mujoco_model.h"
-#include "studies/fidelity_table.h"
+#include "studies/sim_cost_table.h"
 #include "studies/sweep.h"
 
 namespace ssc {
@@ -69,10 +69,10 @@ int RunChartsCommand(int argc, char** argv) {
   TrialConfig c;
   c.law.step_mm = 5;
   const TrialResult trial = RunTrial(gantry.get(), c, true, &error);
-  std::vector<FidelityRow> rows;
-  const bool ok = RunFidelityTable(
+  std::vector<SimCostRow> rows;
+  const bool ok = RunSimCostTable(
       c, trial, SourceDir() + "/scenes/disk_replay.xml", SourceDir() + "/scenes/disk_benchmark.xml",
-      [](const FidelityRow& r) {
+      [](const SimCostRow& r) {
         std::printf("  %-44s wall/sim %.4f  error %.4f log10, %.1f Pa\n", r.setting.c_str(),
                     r.wall_per_sim_s, r.rms_log10, r.rms_pa);
       },
@@ -81,7 +81,7 @@ int RunChartsCommand(int argc, char** argv) {
     std::fprintf(stderr, "ssc charts: %s\n", error.c_str());
     return 1;
   }
-  if (!WriteWholeFile((out / "simulator.csv").string(), FidelityCsv(rows), &error)) {
+  if (!WriteWholeFile((out / "simulator.csv").string(), SimCostCsv(rows), &error)) {
     std::fprintf(stderr, "ssc charts: %s\n", error.c_str());
     return 1;
   }

@@ -41,7 +41,7 @@ const Command kCommands[] = {
     {"calibrate", ssc::RunCalibrateCommand,
      "fit the pneumatic model to the published disk results; residuals + parameter file"},
     {"charts", ssc::RunChartsCommand,
-     "speed-accuracy charts: the cup (sweep over dL) and the simulator (fidelity vs cost)"},
+     "speed-accuracy charts: the cup (sweep over dL) and the simulator (pressure error vs cost)"},
     {"sil", ssc::RunSilCommand,
      "run a lab script (ROS 1 + ur_rtde) against the twin, unchanged (python -m ssc_twin.sil)"},
     {"bench", ssc::RunBench, "step cost with/without the pressure sensor (runs ssc_bench)"},

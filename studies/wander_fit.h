@@ -1,14 +1,15 @@
 // Calibrating the sensor chain to the published wander of the cup: sigma_r and s_c against beta
 // (P_ref 100 Pa). Each evaluation runs disk trials with fixed seeds (a deterministic objective)
 // in a scene whose tool carries the candidate noise and lag; Nelder-Mead on log scales.
-#ifndef SSC_STUDIES_DYNAMIC_CALIBRATION_H_
-#define SSC_STUDIES_DYNAMIC_CALIBRATION_H_
+#ifndef SSC_STUDIES_WANDER_FIT_H_
+#define SSC_STUDIES_WANDER_FIT_H_
 
 #include <string>
 #include <vector>
 
 #include "calibration/pneumatic_fit.h"
 #include "controller/pure/robot_effects.h"
+#include "studies/tool_variants.h"
 
 namespace ssc {
 
@@ -18,8 +19,7 @@ struct WanderTarget {
   double s_c;         // < -1: not a target
 };
 
-// The published means (reference table): beta 1.5: sigma_r 1.36 mm, s_c 0.11; beta 2.5: s_c
-// 0.21; beta 3.5: sigma_r 1.89 mm, s_c 0.31.
+// The published means at P_ref 100 Pa (calibration/published_targets.h).
 std::vector<WanderTarget> PublishedWanderTargets();
 
 struct WanderFit {
@@ -41,6 +41,11 @@ bool FitWander(const std::string& scene, const std::vector<WanderTarget>& target
 // and, when given, the wander fit (noise_pa, lag_ms, cost). One JSON object.
 std::string CalibrationParamsJson(const PneumaticFit& fit, const WanderFit* wander);
 
+// ssc_tool_calibrated.xml of ssc calibrate: `tool` with the static fit's config keys and, when
+// given, the wander fit's noise_pa and lag_ms. Empty + *error when the tool cannot take them.
+std::string CalibratedToolXml(const ToolModelVariants& tool, const PneumaticFit& fit,
+                              const WanderFit* wander, std::string* error);
+
 }  // namespace ssc
 
-#endif  // SSC_STUDIES_DYNAMIC_CALIBRATION_H_
+#endif  // SSC_STUDIES_WANDER_FIT_H_

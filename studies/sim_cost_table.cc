@@ -1,4 +1,4 @@
-#include "studies/fidelity_table.h"
+#include "studies/sim_cost_table.h"
 
 #include <chrono>
 #include <cmath>
@@ -12,25 +12,25 @@
 
 namespace ssc {
 
-std::vector<FidelitySetting> FidelitySettings() {
+std::vector<SimCostSetting> SimCostSettings() {
   const PluginConfig quiet = {{"noise_pa", "0"}};  // compare the physics, not the noise
   auto with = [&](const char* key, const std::string& value) {
     PluginConfig c = quiet;
     c[key] = value;
     return c;
   };
-  std::vector<FidelitySetting> s = {{"reference: 16 rays, 32 lip segments, 0.25 ms, RK4",
-                                     {with("rays_per_chamber", "16"), 32},
-                                     0.00025,
-                                     mjINT_RK4,
-                                     true,
-                                     false},
-                                    {"default: 4 rays, 160 Hz, 2 ms, implicitfast",
-                                     {quiet, 0},
-                                     0.002,
-                                     mjINT_IMPLICITFAST,
-                                     false,
-                                     true}};
+  std::vector<SimCostSetting> s = {{"reference: 16 rays, 32 lip segments, 0.25 ms, RK4",
+                                    {with("rays_per_chamber", "16"), 32},
+                                    0.00025,
+                                    mjINT_RK4,
+                                    true,
+                                    false},
+                                   {"default: 4 rays, 160 Hz, 2 ms, implicitfast",
+                                    {quiet, 0},
+                                    0.002,
+                                    mjINT_IMPLICITFAST,
+                                    false,
+                                    true}};
   for (int rays : {1, 2, 8, 16}) {
     s.push_back(
         {std::to_string(rays) + " rays", {with("rays_per_chamber", std::to_string(rays)), 0}});
@@ -64,11 +64,11 @@ std::array<double, 2> PressureRmsError(const std::vector<std::array<double, 4>>&
   return {std::sqrt(e_log / count), std::sqrt(e_pa / count)};
 }
 
-bool RunFidelityTable(const TrialConfig& trial_config, const TrialResult& trial,
-                      const std::string& replay_scene, const std::string& arm_scene,
-                      const std::function<void(const FidelityRow&)>& row_done,
-                      std::vector<FidelityRow>* rows, std::string* error) {
-  auto add = [&](const FidelityRow& row) {
+bool RunSimCostTable(const TrialConfig& trial_config, const TrialResult& trial,
+                     const std::string& replay_scene, const std::string& arm_scene,
+                     const std::function<void(const SimCostRow&)>& row_done,
+                     std::vector<SimCostRow>* rows, std::string* error) {
+  auto add = [&](const SimCostRow& row) {
     rows->push_back(row);
     if (row_done) row_done(row);
   };
@@ -86,7 +86,7 @@ bool RunFidelityTable(const TrialConfig& trial_config, const TrialResult& trial,
   const auto variants = ToolModelVariants::Read(replay_scene, error);
   if (!variants) return false;
   std::vector<std::array<double, 4>> reference;
-  for (const FidelitySetting& s : FidelitySettings()) {
+  for (const SimCostSetting& s : SimCostSettings()) {
     ModelPtr m = variants->Compile(s.tool, error);
     if (!m) return false;
     m->opt.timestep = s.timestep_s;
@@ -122,11 +122,11 @@ bool RunFidelityTable(const TrialConfig& trial_config, const TrialResult& trial,
   return true;
 }
 
-std::string FidelityCsv(const std::vector<FidelityRow>& rows) {
+std::string SimCostCsv(const std::vector<SimCostRow>& rows) {
   std::ostringstream os;
   os << "setting,timestep_ms,wall_per_sim_s,rms_log10_vs_reference,rms_pa_vs_reference,"
         "is_default\n";
-  for (const FidelityRow& r : rows) {
+  for (const SimCostRow& r : rows) {
     os << '"' << r.setting << "\"," << r.timestep_ms << ',' << r.wall_per_sim_s << ','
        << r.rms_log10 << ',' << r.rms_pa << ',' << (r.is_default ? 1 : 0) << '\n';
   }

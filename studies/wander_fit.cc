@@ -1,18 +1,23 @@
-#include "studies/dynamic_calibration.h"
+#include "studies/wander_fit.h"
 
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "calibration/nelder_mead.h"
+#include "calibration/published_targets.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/trial.h"
+#include "studies/loop_calibration.h"
 #include "studies/tool_variants.h"
 
 namespace ssc {
 
 std::vector<WanderTarget> PublishedWanderTargets() {
-  return {{1.5, 1.36, 0.11}, {2.5, -1, 0.21}, {3.5, 1.89, 0.31}};
+  std::vector<WanderTarget> targets;
+  for (const PublishedWander& w : kPublishedWander)
+    targets.push_back({w.beta, w.sigma_r_mm, w.s_c});
+  return targets;
 }
 
 bool FitWander(const std::string& scene, const std::vector<WanderTarget>& targets, double step_mm,
@@ -81,6 +86,19 @@ std::string CalibrationParamsJson(const PneumaticFit& fit, const WanderFit* wand
         {"noise_pa", wander->noise_pa}, {"lag_ms", wander->lag_ms}, {"cost", wander->cost}};
   }
   return j.dump(2) + "\n";
+}
+
+std::string CalibratedToolXml(const ToolModelVariants& tool, const PneumaticFit& fit,
+                              const WanderFit* wander, std::string* error) {
+  PluginConfig config = FittedPluginConfig(fit);
+  if (wander) {
+    char value[32];
+    std::snprintf(value, sizeof(value), "%.4g", wander->noise_pa);
+    config["noise_pa"] = value;
+    std::snprintf(value, sizeof(value), "%.4g", wander->lag_ms);
+    config["lag_ms"] = value;
+  }
+  return tool.ToolXml({config, 0}, error);
 }
 
 }  // namespace ssc

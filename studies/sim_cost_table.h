@@ -1,11 +1,11 @@
-// The simulator's cost-fidelity table: one path from a twin trial replayed with cheaper and
+// The simulator's cost table: one path from a twin trial replayed with cheaper and
 // dearer settings (rays per chamber, sensor rate, time step, integrator, lip segments), each
-// compared with a high-fidelity reference replay (16 rays per chamber, 32 lip segments, 0.25 ms,
+// compared with the finest replay as reference (16 rays per chamber, 32 lip segments, 0.25 ms,
 // RK4); and the full UR-10 arm against the light gantry on the same trial. Cost is wall time
 // per simulated second; error is the RMS over chambers and samples of log10 pressure (and Pa).
 // Tool variants are compiled in memory (studies/tool_variants.h).
-#ifndef SSC_STUDIES_FIDELITY_TABLE_H_
-#define SSC_STUDIES_FIDELITY_TABLE_H_
+#ifndef SSC_STUDIES_SIM_COST_TABLE_H_
+#define SSC_STUDIES_SIM_COST_TABLE_H_
 
 #include <array>
 #include <functional>
@@ -17,7 +17,7 @@
 
 namespace ssc {
 
-struct FidelitySetting {
+struct SimCostSetting {
   std::string name;
   ToolVariant tool;  // plugin config keys and lip segments
   double timestep_s = 0.002;
@@ -25,7 +25,7 @@ struct FidelitySetting {
   bool reference = false, is_default = false;
 };
 
-struct FidelityRow {
+struct SimCostRow {
   std::string setting;
   double timestep_ms = 0;
   double wall_per_sim_s = 0;
@@ -35,7 +35,7 @@ struct FidelityRow {
 };
 
 // The settings of the published chart; the first is the reference.
-std::vector<FidelitySetting> FidelitySettings();
+std::vector<SimCostSetting> SimCostSettings();
 
 // RMS over every chamber and sample of log10(max(1, p)) differences, and of Pa differences, of
 // two equally long pressure series ({0, 0} when empty).
@@ -46,15 +46,15 @@ std::array<double, 2> PressureRmsError(const std::vector<std::array<double, 4>>&
 // the replayed path; replays run in `replay_scene` (disk_replay.xml); the arm row runs the same
 // trial config in `arm_scene`. `row_done` (optional) sees each row as it is made. False +
 // *error on a load or replay failure.
-bool RunFidelityTable(const TrialConfig& trial_config, const TrialResult& trial,
-                      const std::string& replay_scene, const std::string& arm_scene,
-                      const std::function<void(const FidelityRow&)>& row_done,
-                      std::vector<FidelityRow>* rows, std::string* error);
+bool RunSimCostTable(const TrialConfig& trial_config, const TrialResult& trial,
+                     const std::string& replay_scene, const std::string& arm_scene,
+                     const std::function<void(const SimCostRow&)>& row_done,
+                     std::vector<SimCostRow>* rows, std::string* error);
 
 // The table as CSV: setting, timestep_ms, wall_per_sim_s, rms_log10_vs_reference,
 // rms_pa_vs_reference, is_default.
-std::string FidelityCsv(const std::vector<FidelityRow>& rows);
+std::string SimCostCsv(const std::vector<SimCostRow>& rows);
 
 }  // namespace ssc
 
-#endif  // SSC_STUDIES_FIDELITY_TABLE_H_
+#endif  // SSC_STUDIES_SIM_COST_TABLE_H_
