@@ -180,7 +180,10 @@ bool WriteTopicFile(const fs::path& path, const LabTopic& topic, LoggerVersion v
   for (const std::string& field : topic.fields) {
     if (pressure && older && field == "ch") continue;  // the older message had no ch
     std::string name = field;
-    if (older && name.back() == ']') name.resize(name.find('['));
+    if (const size_t bracket = name.find('[');
+        older && name.back() == ']' && bracket != std::string::npos) {
+      name.resize(bracket);
+    }
     f << ',' << topic.topic << '.' << name;
   }
   f << '\n';

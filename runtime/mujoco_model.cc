@@ -39,7 +39,9 @@ std::string ReadableXmlError(const std::string& message) {
   std::string element;
   if (const size_t e = message.find("XMLElement name="); e != std::string::npos) {
     element = message.substr(e + 16);
-    element = element.substr(0, element.find_first_of(" \n"));
+    if (const size_t cut = element.find_first_of(" \n"); cut != std::string::npos) {
+      element.resize(cut);
+    }
   }
   static const std::pair<const char*, const char*> kPlain[] = {
       {"MISMATCHED_ELEMENT", "a closing tag does not match the open element"},
@@ -235,7 +237,7 @@ std::string FindNonFiniteModelValue(const mjModel* m) {
 #undef XVEC
 #undef X
       (void)
-      nuser_body;
+  nuser_body;
   return found;
 }
 
