@@ -19,14 +19,14 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-# The default robot effects (controller/pure/robot_effects.cc, FittedRobotEffects; docs/defaults.md)
-# split into mechanisms; "off" is the ideal loop's value. The loop's timing is the
-# default's (0.15 s period, 0.15 s smoothing) in every configuration.
+# The default robot effects (FittedRobotEffects; their values: docs/defaults.md) split into
+# mechanisms by their keys. A mechanism "on" keeps the default's values (--effects sets keys over
+# the defaults); "off" sets its keys to 0, the ideal loop's value. The loop's timing is the
+# default's in every configuration.
 MECHANISMS = {
-    "step_error": {"on": {"step_error_relative": 0.38, "step_error_max_mm": 1.43},
-                   "off": {"step_error_relative": 0, "step_error_max_mm": 0}},
-    "step_corr": {"on": {"step_error_corr": 0.29}, "off": {"step_error_corr": 0}},
-    "tare_offset": {"on": {"offset_spread_pa": 7.9}, "off": {"offset_spread_pa": 0}},
+    "step_error": ["step_error_relative", "step_error_max_mm"],
+    "step_corr": ["step_error_corr"],
+    "tare_offset": ["offset_spread_pa"],
 }
 # The published outcomes beside the map (PublishedOutcomeCells in studies/success_map_fit.cc).
 OUTCOME_CELLS = [(2.5, 1.0, 70, "3"), (2.5, 2.0, 100, "3"), (7.5, 2.0, 100, "3"),
@@ -44,10 +44,8 @@ def configurations():
 
 
 def command(ssc, map_path, out, seeds, on, threads):
-    values = {}
-    for name, mech in MECHANISMS.items():
-        values.update(mech["on"] if name in on else mech["off"])
-    effects = ",".join(f"{k}={v}" for k, v in values.items())
+    off = [key for name, keys in MECHANISMS.items() if name not in on for key in keys]
+    effects = ",".join(f"{key}=0" for key in off) or "default"
     return [ssc, "validate", "--map", map_path, "--seeds", str(seeds), "--threads", str(threads),
             "--effects", effects, "--out", out, "--no-plot", "--no-progress"]
 
