@@ -1080,7 +1080,7 @@ NB_MODULE(_core, m) {
                      {"trials", nb::cast(summary.trials)}});
       },
       "objects"_a = "all", "out_dir"_a = "out/objects", "seeds"_a = 1, "seed"_a = 1,
-      "scene_kind"_a = "gantry", "pref"_a = 100.0, "beta"_a = 2.0, "step_mm"_a = 0.5,
+      "scene_kind"_a = "gantry", "pref"_a = law.p_ref_pa, "beta"_a = law.beta, "step_mm"_a = 0.5,
       "threads"_a = 1, "effects"_a = "default", "controller"_a = "published",
       "controller_params"_a = "",
       "The test objects' trials (ssc objects): writes out_dir/objects.csv (read it with "
