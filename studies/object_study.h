@@ -23,7 +23,7 @@ struct ObjectStudySpec {
   std::uint64_t seed = 1;
   bool arm_scenes = false;   // the UR-10 scenes instead of the light gantry ones
   bool flex_scenes = false;  // the gantry with the flex skirt lip (models/ssc_tool_flex.xml)
-  ContourLawParams law;     // the published primitive-geometry controller: dL 0.5 mm
+  ContourLawParams law;      // the published primitive-geometry controller: dL 0.5 mm
   RobotEffectsParams effects = FittedRobotEffects();  // the robot effects (docs/fidelity.md)
   ControllerChoice controller;  // what decides while following (the published law by default)
   int threads = 1;
