@@ -25,17 +25,19 @@ TEST(CrimpDetectorTest, OneChamberLeakingWhileThreeAreSealedIsTheSignature) {
 TEST(CrimpDetectorTest, FiresOnlyWhenTheSignatureHoldsWhileTheCupStalls) {
   CrimpHopParams p;
   p.stall_iterations = 4;
-  p.stall_mm = 2;
-  CrimpDetector stalled(p);
-  for (int i = 0; i < 3; ++i) EXPECT_FALSE(stalled.Update(kCrimped, 100, {0.3e-3 * i, 0}));
-  EXPECT_TRUE(stalled.Update(kCrimped, 100, {0.9e-3, 0}));
-  CrimpDetector moving(p);  // the same signature while the cup slides on: no crimp
-  for (int i = 0; i < 6; ++i) EXPECT_FALSE(moving.Update(kCrimped, 100, {3e-3 * i, 0}));
+  p.stall_share = 0.25;
+  const double step = 0.5e-3;  // the law's dL on the test objects
+  CrimpDetector stalled(p);    // 0.3 mm over three steps of 0.5 mm: stalled
+  for (int i = 0; i < 3; ++i) EXPECT_FALSE(stalled.Update(kCrimped, 100, {0.1e-3 * i, 0}, step));
+  EXPECT_TRUE(stalled.Update(kCrimped, 100, {0.3e-3, 0}, step));
+  // The same signature while the cup passes a concave corner at half the law's pace: no crimp.
+  CrimpDetector moving(p);
+  for (int i = 0; i < 8; ++i) EXPECT_FALSE(moving.Update(kCrimped, 100, {0.25e-3 * i, 0}, step));
   CrimpDetector interrupted(p);  // a sample without it starts the count again
-  for (int i = 0; i < 3; ++i) interrupted.Update(kCrimped, 100, {0, 0});
-  EXPECT_FALSE(interrupted.Update(kStraddling, 100, {0, 0}));
-  for (int i = 0; i < 3; ++i) EXPECT_FALSE(interrupted.Update(kCrimped, 100, {0, 0}));
-  EXPECT_TRUE(interrupted.Update(kCrimped, 100, {0, 0}));
+  for (int i = 0; i < 3; ++i) interrupted.Update(kCrimped, 100, {0, 0}, step);
+  EXPECT_FALSE(interrupted.Update(kStraddling, 100, {0, 0}, step));
+  for (int i = 0; i < 3; ++i) EXPECT_FALSE(interrupted.Update(kCrimped, 100, {0, 0}, step));
+  EXPECT_TRUE(interrupted.Update(kCrimped, 100, {0, 0}, step));
 }
 
 TEST(CrimpHopTest, AHopLiftsMovesPastComesDownToTheForceAndResumes) {

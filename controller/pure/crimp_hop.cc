@@ -20,7 +20,7 @@ bool CrimpSignature(const CrimpHopParams& p, const std::array<double, 4>& p_pa, 
 }
 
 bool CrimpDetector::Update(const std::array<double, 4>& p_pa, double p_ref_pa,
-                           const std::array<double, 2>& xy) {
+                           const std::array<double, 2>& xy, double step_m) {
   if (!CrimpSignature(p_, p_pa, p_ref_pa)) {
     window_.clear();
     return false;
@@ -31,7 +31,7 @@ bool CrimpDetector::Update(const std::array<double, 4>& p_pa, double p_ref_pa,
   if (window_.size() < n) return false;
   const double moved =
       std::hypot(window_.back()[0] - window_.front()[0], window_.back()[1] - window_.front()[1]);
-  return moved < p_.stall_mm * 1e-3;
+  return moved < p_.stall_share * static_cast<double>(n - 1) * step_m;
 }
 
 ControllerCommand CrimpHopController::Step(const ControllerInput& in) {
@@ -46,7 +46,8 @@ ControllerCommand CrimpHopController::Step(const ControllerInput& in) {
       const ContourStep law = ComputeContourStep(in.p_pa, law_);
       // The edge as followed before the crimp: the fold's own differential points elsewhere.
       if (law.moving && !CrimpSignature(p_, in.p_pa, law_.p_ref_pa)) along_ = law.along_edge;
-      if (detector_.Update(in.p_pa, law_.p_ref_pa, {in.tool_m[0], in.tool_m[1]})) {
+      if (detector_.Update(in.p_pa, law_.p_ref_pa, {in.tool_m[0], in.tool_m[1]},
+                           law_.step_mm * 1e-3)) {
         ++hops_;
         detector_.Reset();
         enter(Phase::kLift);
@@ -93,7 +94,8 @@ ControllerType CrimpHopControllerType() {
         &P::leak_ratio},
        {"stall_iterations", "1", 1, 50, "iterations in a row with the signature",
         &P::stall_iterations},
-       {"stall_mm", "mm", 0, 20, "the cup moved less than this over them", &P::stall_mm},
+       {"stall_share", "1", 0, 1, "... while it moved less than this share of its steps",
+        &P::stall_share},
        {"lift_mm", "mm", 0.5, 20, "hop height above the hold height", &P::lift_mm},
        {"hop_mm", "mm", 0, 50, "move along the edge while lifted", &P::hop_mm},
        {"descend_mm", "mm", 0.1, 10, "height change per iteration coming down", &P::descend_mm},

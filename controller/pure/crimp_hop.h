@@ -4,9 +4,11 @@
 // pressed it, and the chamber behind the fold leaked while the others stayed sealed. The
 // detector reads that signature: for `stall_iterations` iterations in a row, one chamber below
 // `leak_ratio` times the least of the other three, those three above P_ref, and the cup moved
-// less than `stall_mm` over the window. The hop then lifts the cup by lift_mm (lifted: the
-// failure checks wait), moves it hop_mm along the edge as last followed, comes down in steps of
-// descend_mm until the F/T reads force_n again (the approach's force band), and resumes.
+// less than `stall_share` of what its steps (the law's dL) would have taken it over the window
+// (a concave corner passed at the law's pace shows the same chambers, but moves). The hop then
+// lifts the cup by lift_mm (lifted: the failure checks wait), moves it hop_mm along the edge as
+// last followed, comes down in steps of descend_mm until the F/T reads force_n again (the
+// approach's force band), and resumes.
 #ifndef SSC_CONTROLLER_PURE_CRIMP_HOP_H_
 #define SSC_CONTROLLER_PURE_CRIMP_HOP_H_
 
@@ -21,7 +23,7 @@ namespace ssc {
 struct CrimpHopParams {
   double leak_ratio = 0.2;      // a crimped chamber reads below this x the least other one
   double stall_iterations = 4;  // iterations in a row with the signature
-  double stall_mm = 2.0;        // the cup moved less than this over them
+  double stall_share = 0.25;    // ... while it moved less than this share of its steps
   double lift_mm = 4.0;         // hop height above the hold height
   double hop_mm = 10.0;         // move along the edge while lifted
   double descend_mm = 1.0;      // height change per iteration coming down
@@ -35,8 +37,10 @@ bool CrimpSignature(const CrimpHopParams& p, const std::array<double, 4>& p_pa, 
 class CrimpDetector {
  public:
   explicit CrimpDetector(const CrimpHopParams& p) : p_(p) {}
-  // One iteration's pressures and tool position (world, m); true when a crimp is detected.
-  bool Update(const std::array<double, 4>& p_pa, double p_ref_pa, const std::array<double, 2>& xy);
+  // One iteration's pressures, tool position (world, m) and step length (m); true when a crimp
+  // is detected.
+  bool Update(const std::array<double, 4>& p_pa, double p_ref_pa, const std::array<double, 2>& xy,
+              double step_m);
   void Reset() { window_.clear(); }
 
  private:
