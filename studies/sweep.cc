@@ -39,6 +39,7 @@ SweepManifest MakeManifest(const mjModel* m, const SweepSpec& spec) {
   SweepManifest manifest = {
       {"csv_columns", SweepCsvHeader()},
       {"scene", spec.scene_name},
+      {"default_scene", kDefaultScene},
       {"model_hash", hash},
       {"seed", std::to_string(spec.seed)},
       {"timeout_s", num(c.timeout_s)},

@@ -383,7 +383,13 @@ bool ParseSweepManifest(std::string_view json, SweepManifest* manifest, std::str
 std::string CompareSweepManifests(const SweepManifest& recorded, const SweepManifest& now) {
   std::string diff;
   auto add = [&diff](const std::string& s) { diff += (diff.empty() ? "" : "; ") + s; };
+  auto information = [](const std::string& k) {
+    for (const char* key : kSweepManifestInformationKeys)
+      if (k == key) return true;
+    return false;
+  };
   for (const auto& [k, v] : now) {
+    if (information(k)) continue;
     auto it = recorded.find(k);
     if (it == recorded.end()) {
       add(k + ": not recorded, " + v + " now");
@@ -392,7 +398,7 @@ std::string CompareSweepManifests(const SweepManifest& recorded, const SweepMani
     }
   }
   for (const auto& [k, v] : recorded) {
-    if (!now.count(k)) add(k + ": " + v + " in the file, not set now");
+    if (!information(k) && !now.count(k)) add(k + ": " + v + " in the file, not set now");
   }
   return diff;
 }

@@ -125,7 +125,12 @@ std::string SweepManifestPath(const std::string& csv_path);
 std::string SweepManifestJson(const SweepManifest& manifest);
 // False + *error on malformed JSON or a value that is not a string, number or boolean.
 bool ParseSweepManifest(std::string_view json, SweepManifest* manifest, std::string* error);
-// "" when equal; else one line naming each difference ("seed: 1 in the file, 2 now").
+// Keys a manifest records for the reader that do not define the rows: the project's default
+// scene when the sweep ran (the rows are defined by "scene"). Comparisons skip them.
+inline constexpr const char* kSweepManifestInformationKeys[] = {"default_scene"};
+
+// "" when equal; else one line naming each difference ("seed: 1 in the file, 2 now"); the
+// information keys are not compared.
 std::string CompareSweepManifests(const SweepManifest& recorded, const SweepManifest& now);
 
 // Checks `now` against the manifest beside `csv_path`, or writes it when there is none and the

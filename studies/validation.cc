@@ -268,6 +268,7 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
   nlohmann::json j;
   j["map"] = spec.map_path;
   j["scene"] = spec.scene_name;
+  j["default_scene"] = kDefaultScene;
   j["seeds_per_cell"] = spec.seeds;
   j["base_seed"] = spec.seed;
   j["effects"] = FormatRobotEffects(spec.base.effects);

@@ -263,5 +263,21 @@ TEST_F(SweepIoTest, AnOutputFileIsWholeOrAbsent) {
       << error;
 }
 
+// The default scene is recorded for the reader but does not define the rows (the "scene" key
+// does): a sweep started before the default changed resumes.
+TEST_F(SweepIoTest, TheDefaultSceneIsRecordedButNotCompared) {
+  const SweepManifest first = {{"scene", "gantry"}, {"default_scene", "gantry"}};
+  std::string error;
+  ASSERT_TRUE(CheckOrWriteSweepManifest(csv_, false, first, &error)) << error;
+  SweepManifest later = first;
+  later["default_scene"] = "light";
+  EXPECT_TRUE(CheckOrWriteSweepManifest(csv_, true, later, &error)) << error;
+  later.erase("default_scene");
+  EXPECT_TRUE(CheckOrWriteSweepManifest(csv_, true, later, &error)) << error;
+  later["scene"] = "light";
+  EXPECT_FALSE(CheckOrWriteSweepManifest(csv_, true, later, &error));
+  EXPECT_NE(error.find("scene: gantry in the file, light now"), std::string::npos) << error;
+}
+
 }  // namespace
 }  // namespace ssc

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -19,6 +20,7 @@
 #include "runtime/deferred_sensor_step.h"
 #include "runtime/mujoco_model.h"
 #include "studies/sweep.h"
+#include "studies/sweep_io.h"
 #include "studies/trial_io.h"
 
 namespace ssc {
@@ -427,6 +429,14 @@ TEST(SweepTest, ParallelSweepGivesTheSameRowsAsSerialAndResumes) {
   const auto serial = SortedRows((dir / "serial.csv").string());
   EXPECT_EQ(serial.size(), 5u);  // header + 4
   EXPECT_EQ(serial, SortedRows((dir / "parallel.csv").string()));
+  // The manifest names the scene and the project's default scene (chosen by ssc equivalence).
+  SweepManifest manifest;
+  std::ifstream json_file((dir / "parallel.json").string());
+  const std::string json((std::istreambuf_iterator<char>(json_file)),
+                         std::istreambuf_iterator<char>());
+  ASSERT_TRUE(ParseSweepManifest(json, &manifest, &error)) << error;
+  EXPECT_EQ(manifest["scene"], "disk_benchmark_gantry");
+  EXPECT_EQ(manifest["default_scene"], kDefaultScene);
   // Re-running resumes: nothing left to run, no duplicate rows.
   ASSERT_TRUE(RunSweep(Scene(), spec, nullptr, &summary, &error)) << error;
   EXPECT_EQ(summary.ran, 0);

@@ -193,6 +193,11 @@ TEST(ValidationStudyTest, ATinyMapGetsTheKnownScores) {
   std::ifstream json(dir + "/validate.json");
   const std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("\"rerun_agreement\""), std::string::npos) << text;
+  // The scene run and the project's default scene (chosen by ssc equivalence), both named.
+  EXPECT_NE(text.find("\"scene\": \"disk_benchmark_gantry\""), std::string::npos) << text;
+  EXPECT_NE(text.find(std::string("\"default_scene\": \"") + kDefaultScene + "\""),
+            std::string::npos)
+      << text;
   // Resuming runs nothing new and scores the same.
   MapScore again;
   ASSERT_TRUE(RunValidation(model.get(), spec, nullptr, &again, &summary, &error)) << error;

@@ -931,9 +931,9 @@ NB_MODULE(_core, m) {
                      {"skipped", nb::cast(summary.skipped)},
                      {"wall_s", nb::cast(summary.wall_s)}});
       },
-      "scene"_a = "disk_benchmark_gantry", "pref"_a, "beta"_a, "step_mm"_a, "repeats"_a = 3,
-      "seed"_a = 1, "threads"_a = 1, "out_csv"_a, "effects"_a = "default",
-      "controller"_a = "published", "controller_params"_a = "", "progress"_a = nb::none(),
+      "scene"_a = kDefaultScene, "pref"_a, "beta"_a, "step_mm"_a, "repeats"_a = 3, "seed"_a = 1,
+      "threads"_a = 1, "out_csv"_a, "effects"_a = "default", "controller"_a = "published",
+      "controller_params"_a = "", "progress"_a = nb::none(),
       "A P_ref x beta x step x repeats grid of trials into a resumable CSV (ssc sweep). "
       "controller as in run_trial (a callable is called under the GIL: threads > 1 run the "
       "physics in parallel, the callable one call at a time). progress: None (quiet), True (a "
@@ -1029,8 +1029,8 @@ NB_MODULE(_core, m) {
         d["out_dir"] = out_dir;
         return d;
       },
-      "map"_a = "", "out_dir"_a = "out/validate", "scene"_a = "disk_benchmark_gantry",
-      "seeds"_a = 10, "seed"_a = 1, "threads"_a = 1, "timeout_s"_a = 0.0, "effects"_a = "default",
+      "map"_a = "", "out_dir"_a = "out/validate", "scene"_a = kDefaultScene, "seeds"_a = 10,
+      "seed"_a = 1, "threads"_a = 1, "timeout_s"_a = 0.0, "effects"_a = "default",
       "controller"_a = "published", "controller_params"_a = "", "progress"_a = nb::none(),
       "The twin on every cell of a published success map, scored (ssc validate). map: CSV "
       "step_mm,beta,pref_pa,successes_of_3 ('' = the published dL 5 mm map). Writes "
