@@ -146,6 +146,11 @@ int RunEquivalenceCommand(int argc, char** argv) {
       c.alpha, c.differing, c.cells, c.expected_by_chance, c.nominal_by_chance, c.differing,
       c.p_at_least);
   std::printf(
+      "successes over all cells: reference %d of %d, candidate %d of %d; a common shift "
+      "(Cochran-Mantel-Haenszel) p = %.3g\n",
+      e.shift.successes_a, e.shift.trials_a, e.shift.successes_b, e.shift.trials_b,
+      e.shift.p_value);
+  std::printf(
       "map score (expected agreement) candidate - reference: %+.3f (95 %% interval %+.3f to "
       "%+.3f)\n",
       e.score.difference, e.score.interval[0], e.score.interval[1]);
