@@ -204,6 +204,12 @@ bool CompareArms(const std::vector<MapCell>& cells, const std::vector<ArmCounts>
       return diff[static_cast<std::size_t>(std::lround(q * (options.draws - 1)))];
     };
     s.interval = {at(0.025), at(0.975)};
+    const double draws = static_cast<double>(options.draws);
+    const double below =
+        static_cast<double>(std::upper_bound(diff.begin(), diff.end(), 0.0) - diff.begin());
+    const double above =
+        static_cast<double>(diff.end() - std::lower_bound(diff.begin(), diff.end(), 0.0));
+    s.p_value = std::min(1.0, 2 * std::min(below, above) / draws);
   }
 
   // The Fig. 6 targets, matched by name.
@@ -236,10 +242,12 @@ bool CompareArms(const std::vector<MapCell>& cells, const std::vector<ArmCounts>
   result->targets_p_at_least =
       BinomialAtLeast(result->targets_tested, alpha, result->targets_differing);
 
-  result->cells_beyond_chance = d.p_at_least < alpha;
-  result->shift_differs = result->shift.p_value <= alpha;
-  result->score_differs = s.interval[0] > 0 || s.interval[1] < 0;
-  result->targets_beyond_chance = result->targets_p_at_least < alpha;
+  result->views = result->targets_tested > 0 ? 4 : 3;
+  const double level = alpha / result->views;
+  result->cells_beyond_chance = d.p_at_least <= level;
+  result->shift_differs = result->shift.p_value <= level;
+  result->score_differs = s.p_value <= level;
+  result->targets_beyond_chance = result->targets_tested > 0 && result->targets_p_at_least <= level;
   result->same = !result->cells_beyond_chance && !result->shift_differs && !result->score_differs &&
                  !result->targets_beyond_chance;
   return true;

@@ -81,6 +81,8 @@ struct ScoreDifference {
   double a = 0, b = 0;               // mean expected agreement of each arm
   double difference = 0;             // b - a
   std::array<double, 2> interval{};  // 95 %, b - a (each cell's rate from its Jeffreys posterior)
+  // Two-sided posterior tail: 2 min(P(b - a <= 0), P(b - a >= 0)) over the draws.
+  double p_value = 1;
 };
 
 // A Fig. 6 target as one arm measured it (MetricTarget's numbers, without MuJoCo types).
@@ -118,8 +120,10 @@ struct Equivalence {
   std::vector<TargetDifference> targets;
   int targets_tested = 0, targets_differing = 0;
   double targets_p_at_least = 1;  // binomial tail of targets_differing at alpha
-  // The verdict: no view finds a difference beyond chance (cells' tail, the common shift, the
-  // score interval, the targets' tail; each at alpha, the interval at 95 %).
+  // The verdict is one test of "the two models differ", of size alpha: each view's p-value
+  // (the cells' tail, the common shift, the score's posterior tail, the targets' tail when any
+  // target was tested) against alpha / views (Bonferroni). Each flag is that view's part.
+  int views = 0;
   bool cells_beyond_chance = false, shift_differs = false, score_differs = false,
        targets_beyond_chance = false;
   bool same = true;

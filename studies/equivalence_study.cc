@@ -103,7 +103,8 @@ bool WriteFiles(const EquivalenceSpec& spec, const EquivalenceRun& run, std::str
   j["score"] = {{"reference", e.score.a},
                 {"candidate", e.score.b},
                 {"difference", e.score.difference},
-                {"difference_interval", e.score.interval}};
+                {"difference_interval", e.score.interval},
+                {"posterior_p", e.score.p_value}};
   j["fig6_targets"] = nlohmann::json::array();
   for (const TargetDifference& t : e.targets) {
     j["fig6_targets"].push_back({{"name", t.name},
@@ -123,7 +124,9 @@ bool WriteFiles(const EquivalenceSpec& spec, const EquivalenceRun& run, std::str
   j["targets"] = {{"tested", e.targets_tested},
                   {"differing", e.targets_differing},
                   {"p_at_least", e.targets_p_at_least}};
-  j["verdict"] = {{"cells_beyond_chance", e.cells_beyond_chance},
+  j["verdict"] = {{"views", e.views},
+                  {"level_per_view", e.differing.alpha / e.views},
+                  {"cells_beyond_chance", e.cells_beyond_chance},
                   {"shift_differs", e.shift_differs},
                   {"score_differs", e.score_differs},
                   {"targets_beyond_chance", e.targets_beyond_chance},

@@ -152,8 +152,8 @@ int RunEquivalenceCommand(int argc, char** argv) {
       e.shift.p_value);
   std::printf(
       "map score (expected agreement) candidate - reference: %+.3f (95 %% interval %+.3f to "
-      "%+.3f)\n",
-      e.score.difference, e.score.interval[0], e.score.interval[1]);
+      "%+.3f, posterior p %.3g)\n",
+      e.score.difference, e.score.interval[0], e.score.interval[1], e.score.p_value);
   std::printf(
       "published Fig. 6 targets (mean over the successful trials +- standard error, "
       "successes):\n");
@@ -177,11 +177,13 @@ int RunEquivalenceCommand(int argc, char** argv) {
   }
   std::printf("targets differing at %g: %d of %d tested, P(>= %d by chance) = %.3f\n", c.alpha,
               e.targets_differing, e.targets_tested, e.targets_differing, e.targets_p_at_least);
+  const double level = e.differing.alpha / e.views;
   std::printf(
-      "verdict: %s (cells %s chance, common shift %s, score interval %s 0, targets %s chance)\n",
-      e.same ? "no difference beyond chance" : "DIFFERENT",
-      e.cells_beyond_chance ? "beyond" : "within", e.shift_differs ? "found" : "not found",
-      e.score_differs ? "excludes" : "includes", e.targets_beyond_chance ? "beyond" : "within");
+      "verdict: %s (Bonferroni over %d views, each p against %.4f: cells %.3g, common shift "
+      "%.3g, score %.3g%s)\n",
+      e.same ? "no difference beyond chance" : "DIFFERENT", e.views, level, c.p_at_least,
+      e.shift.p_value, e.score.p_value,
+      e.targets_tested > 0 ? (", targets " + std::to_string(e.targets_p_at_least)).c_str() : "");
   PrintApproachSharing(spec.share_approach, run.candidate_summary);
   std::printf("wrote %s/equivalence.csv, %s/equivalence.json\n", out_dir.c_str(), out_dir.c_str());
   return 0;
