@@ -98,7 +98,10 @@ mjModel* CompileVariant(const std::string& path, bool lip_joints, std::string* e
 void CopyStateByName(const mjModel* fm, const mjData* from, const mjModel* tm, mjData* to) {
   to->time = from->time;
   for (int j = 0; j < tm->njnt; ++j) {
-    const int k = mj_name2id(fm, mjOBJ_JOINT, mj_id2name(tm, mjOBJ_JOINT, j));
+    // A flex's vertex joints have no names: matched by index when both models hold them.
+    const char* name = mj_id2name(tm, mjOBJ_JOINT, j);
+    const int k = name != nullptr ? mj_name2id(fm, mjOBJ_JOINT, name)
+                                  : (fm->njnt == tm->njnt ? j : -1);
     if (k < 0) continue;
     const int nq = tm->jnt_type[j] == mjJNT_FREE ? 7 : tm->jnt_type[j] == mjJNT_BALL ? 4 : 1;
     const int nv = tm->jnt_type[j] == mjJNT_FREE ? 6 : tm->jnt_type[j] == mjJNT_BALL ? 3 : 1;
