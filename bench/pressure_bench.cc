@@ -100,8 +100,8 @@ void CopyStateByName(const mjModel* fm, const mjData* from, const mjModel* tm, m
   for (int j = 0; j < tm->njnt; ++j) {
     // A flex's vertex joints have no names: matched by index when both models hold them.
     const char* name = mj_id2name(tm, mjOBJ_JOINT, j);
-    const int k = name != nullptr ? mj_name2id(fm, mjOBJ_JOINT, name)
-                                  : (fm->njnt == tm->njnt ? j : -1);
+    const int k =
+        name != nullptr ? mj_name2id(fm, mjOBJ_JOINT, name) : (fm->njnt == tm->njnt ? j : -1);
     if (k < 0) continue;
     const int nq = tm->jnt_type[j] == mjJNT_FREE ? 7 : tm->jnt_type[j] == mjJNT_BALL ? 4 : 1;
     const int nv = tm->jnt_type[j] == mjJNT_FREE ? 6 : tm->jnt_type[j] == mjJNT_BALL ? 3 : 1;

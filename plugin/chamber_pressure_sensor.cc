@@ -473,8 +473,8 @@ void RegisterChamberPressurePlugin() {
       mju_warning("%s", error.c_str());
       return -1;
     }
-    d->plugin_data[instance] = reinterpret_cast<uintptr_t>(sensor.release());
     sensor->Reset(d->plugin_state + m->plugin_stateadr[instance]);
+    d->plugin_data[instance] = reinterpret_cast<uintptr_t>(sensor.release());
     return 0;
   };
   plugin.destroy = +[](mjData* d, int instance) {
