@@ -275,7 +275,7 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
   // The lip's rim: contacts first, rays for the rest. Gaps are from each rim point's tip.
   const int n_rim = lip_.num_rim_points();
   std::fill(lip_touching_.begin(), lip_touching_.end(), 0);
-  lip_.MarkContacts(m, d, reinterpret_cast<bool*>(lip_touching_.data()));
+  lip_.MarkContacts(m, d, lip_touching_.data());
   double tip_sum = 0.0;
   for (int i = 0; i < n_rim; ++i) {
     LipSegmentState& s = sample->lip[i];

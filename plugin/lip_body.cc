@@ -255,7 +255,7 @@ const mjtNum* LipBody::RimPos(const mjData* d, int i) const {
                                   : d->flexvert_xpos + 3 * rim_vertex_[i];
 }
 
-void LipBody::MarkContacts(const mjModel* m, const mjData* d, bool* touching) const {
+void LipBody::MarkContacts(const mjModel* m, const mjData* d, unsigned char* touching) const {
   for (int i = 0; i < d->ncon; ++i) {
     const mjContact& con = d->contact[i];
     if (con.dist > 0) continue;
@@ -264,7 +264,7 @@ void LipBody::MarkContacts(const mjModel* m, const mjData* d, bool* touching) co
       const int seg0 = segment_of_geom_[con.geom[0]];
       const int seg1 = segment_of_geom_[con.geom[1]];
       if ((seg0 >= 0) == (seg1 >= 0)) continue;  // lip against lip, or no lip at all
-      touching[seg0 >= 0 ? seg0 : seg1] = true;
+      touching[seg0 >= 0 ? seg0 : seg1] = 1;
       continue;
     }
     for (int side = 0; side < 2; ++side) {
@@ -272,7 +272,7 @@ void LipBody::MarkContacts(const mjModel* m, const mjData* d, bool* touching) co
       const int adr = m->flex_vertadr[flex_];
       if (con.vert[side] >= 0) {
         const int r = rim_of_vertex_[con.vert[side]];
-        if (r >= 0) touching[r] = true;
+        if (r >= 0) touching[r] = 1;
       } else if (con.elem[side] >= 0) {
         // An element touches: its rim vertex nearest the contact point carries the contact.
         const int* elem = m->flex_elem + m->flex_elemdataadr[flex_] + 3 * con.elem[side];
@@ -290,7 +290,7 @@ void LipBody::MarkContacts(const mjModel* m, const mjData* d, bool* touching) co
             best_d2 = d2;
           }
         }
-        if (best >= 0) touching[best] = true;
+        if (best >= 0) touching[best] = 1;
       }
     }
   }

@@ -44,8 +44,8 @@ class LipBody {
   // World position of rim point i now, and how far its surface reaches beyond that point.
   const mjtNum* RimPos(const mjData* d, int i) const;
   double rim_tip_radius_m(int i) const { return rim_tip_radius_m_[i]; }
-  // Sets touching[i] for each rim point that MuJoCo reports in contact with a non-lip geom.
-  void MarkContacts(const mjModel* m, const mjData* d, bool* touching) const;
+  // Sets touching[i] to 1 for each rim point that MuJoCo reports in contact with a non-lip geom.
+  void MarkContacts(const mjModel* m, const mjData* d, unsigned char* touching) const;
   // Whether the skirt's fold can move the rim across the opening (the sensor then follows the
   // rim's radius per wedge); segments stay on their circle by construction.
   bool rim_moves_radially() const { return kind_ == Kind::kSkirt; }
