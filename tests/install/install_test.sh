@@ -46,8 +46,10 @@ done
 if grep -rl -e "$venv" -e "$build" -e "$src" "$moved/lib/cmake/ssc"; then
   echo "FAIL: the package config names the builder's tree"; exit 1
 fi
-ldd "$moved/bin/ssc" | grep -q "libmujoco.* => $moved/bin/../lib/" ||
-  { ldd "$moved/bin/ssc"; echo "FAIL: libmujoco not from the prefix"; exit 1; }
+# ldd's whole output first: grep -q closing the pipe early fails the pipeline under pipefail.
+libs=$(ldd "$moved/bin/ssc")
+grep -q "libmujoco.* => $moved/bin/../lib/" <<<"$libs" ||
+  { echo "$libs"; echo "FAIL: libmujoco not from the prefix"; exit 1; }
 env -u SSC_SOURCE_DIR -u SSC_RESOURCE_DIR "$moved/bin/ssc" trial --stop-at 0.3 --no-plot \
   --out "$tmp/moved_trial" >/dev/null
 cmake -S "$src/tests/install/downstream_control" -B "$tmp/control" \
