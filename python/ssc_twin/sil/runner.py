@@ -14,11 +14,13 @@ modules), then everything installed. Around it:
 import argparse
 import ast
 import builtins
+import inspect
 import json
 import os
 import sys
 import time as _time
 import traceback
+import types
 
 from . import noop, world as world_mod
 
@@ -138,6 +140,30 @@ class TmpRedirect:
             setattr(mod, name, fn)
 
 
+def lab_code_inconsistency(e, script_dir):
+    """The message for an AttributeError raised on an object of the script's own code (a class or
+    module under the script's folder, e.g. the lab's helperFunction), else None: a method the
+    script calls but its own helper no longer defines is the checkout's bug, not a missing
+    stand-in."""
+    obj, name = getattr(e, "obj", None), getattr(e, "name", None)
+    if obj is None or not name:
+        return None
+    owner = obj if isinstance(obj, (type, types.ModuleType)) else type(obj)
+    try:
+        path = os.path.abspath(inspect.getfile(owner))
+    except (TypeError, OSError):
+        return None
+    root = os.path.abspath(script_dir) + os.sep
+    if not path.startswith(root):
+        return None
+    where = traceback.extract_tb(e.__traceback__)[-1]
+    kind = "module" if isinstance(owner, types.ModuleType) else "class"
+    return ("the lab's own code, not the twin: %s:%d uses %s.%s, which %s %s (%s) does not "
+            "define; this checkout's script and helper disagree (docs/sil.md names a commit that "
+            "runs)" % (os.path.basename(where.filename), where.lineno, owner.__name__, name, kind,
+                       owner.__name__, os.path.relpath(path, root)))
+
+
 def _virtual_time(w):
     saved = (_time.time, _time.sleep)
     _time.time = w.ros_time_s
@@ -206,10 +232,14 @@ def run(opts):
     except ModuleNotFoundError as e:
         status, problem = EXIT_MISSING, "module %s (no stand-in, not installed)" % e.name
     except (AttributeError, NotImplementedError) as e:
-        where = traceback.extract_tb(e.__traceback__)[-1]
-        status, problem = EXIT_MISSING, "%s at %s:%d: %s" % (
-            type(e).__name__, os.path.basename(where.filename), where.lineno, e)
         traceback.print_exc()
+        lab = lab_code_inconsistency(e, os.path.dirname(script))
+        if lab:
+            status, problem = EXIT_ERROR, lab
+        else:
+            where = traceback.extract_tb(e.__traceback__)[-1]
+            status, problem = EXIT_MISSING, "%s at %s:%d: %s" % (
+                type(e).__name__, os.path.basename(where.filename), where.lineno, e)
     except BaseException as e:  # the script's own failure: report it, as python would
         status, problem = EXIT_ERROR, "%s: %s" % (type(e).__name__, e)
         traceback.print_exc()
