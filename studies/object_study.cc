@@ -84,10 +84,8 @@ bool RunObjectStudy(const ObjectStudySpec& spec,
   set.run = [&](size_t j) {
     const ObjectSpec& object = spec.objects[jobs[j].object];
     const ObjectFiles files = ObjectFileNames(object.name);
-    const std::string scene = (fs::path(scene_dir) / (spec.arm_scenes    ? files.arm_scene
-                                                      : spec.flex_scenes ? files.flex_scene
-                                                                         : files.gantry_scene))
-                                  .string();
+    const std::string scene =
+        (fs::path(scene_dir) / ObjectSceneFile(files, spec.scene_kind)).string();
     std::string load_error;
     ModelPtr model = LoadModel(scene, &load_error);
     ObjectTrialRow row;

@@ -14,6 +14,7 @@
 #include "controller/pure/controller_registry.h"
 #include "controller/pure/robot_effects.h"
 #include "objects/object_spec.h"
+#include "studies/object_trials.h"
 
 namespace ssc {
 
@@ -21,9 +22,8 @@ struct ObjectStudySpec {
   std::vector<ObjectSpec> objects;
   int seeds = 1;  // trials per object: seeds seed, seed + 1, ...
   std::uint64_t seed = 1;
-  bool arm_scenes = false;   // the UR-10 scenes instead of the light gantry ones
-  bool flex_scenes = false;  // the gantry with the flex skirt lip (models/ssc_tool_flex.xml)
-  ContourLawParams law;      // the published primitive-geometry controller: dL 0.5 mm
+  ObjectSceneKind scene_kind = ObjectSceneKind::kGantry;  // which of each object's scenes
+  ContourLawParams law;  // the published primitive-geometry controller: dL 0.5 mm
   RobotEffectsParams effects = FittedRobotEffects();  // the robot effects (docs/fidelity.md)
   ControllerChoice controller;  // what decides while following (the published law by default)
   int threads = 1;

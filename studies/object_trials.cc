@@ -2,10 +2,56 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 #include <utility>
 
 namespace ssc {
+
+bool ObjectSceneKindByName(const std::string& name, ObjectSceneKind* kind, std::string* error) {
+  for (ObjectSceneKind k :
+       {ObjectSceneKind::kGantry, ObjectSceneKind::kArm, ObjectSceneKind::kFlex}) {
+    if (name == ObjectSceneKindName(k)) {
+      *kind = k;
+      return true;
+    }
+  }
+  *error = "unknown scene kind '" + name + "' (valid: " + kObjectSceneKindNames + ")";
+  return false;
+}
+
+const char* ObjectSceneKindName(ObjectSceneKind kind) {
+  switch (kind) {
+    case ObjectSceneKind::kArm:
+      return "arm";
+    case ObjectSceneKind::kFlex:
+      return "flex";
+    case ObjectSceneKind::kGantry:
+      break;
+  }
+  return "gantry";
+}
+
+std::string ObjectSceneFile(const ObjectFiles& files, ObjectSceneKind kind) {
+  switch (kind) {
+    case ObjectSceneKind::kArm:
+      return files.arm_scene;
+    case ObjectSceneKind::kFlex:
+      return files.flex_scene;
+    case ObjectSceneKind::kGantry:
+      break;
+  }
+  return files.gantry_scene;
+}
+
+ObjectSceneKind ObjectSceneKindOfScene(const std::string& scene) {
+  const std::string stem = std::filesystem::path(scene).filename().string();
+  if (stem.find("flex") != std::string::npos) return ObjectSceneKind::kFlex;
+  for (const char* gantry : {"gantry", "light", "fast"}) {
+    if (stem.find(gantry) != std::string::npos) return ObjectSceneKind::kGantry;
+  }
+  return ObjectSceneKind::kArm;
+}
 
 TrialConfig ObjectTrialConfig(const ObjectSpec& spec, TrialConfig base) {
   TrialConfig c = std::move(base);

@@ -6,10 +6,25 @@
 #include <string>
 #include <vector>
 
+#include "objects/object_mjcf.h"
 #include "objects/object_spec.h"
 #include "runtime/trial.h"
 
 namespace ssc {
+
+// The scene an object's trial runs in, picked by name in every command that runs objects
+// (ssc objects/view --scene-kind, Python's scene): the light gantry with the 16-segment lip, the
+// UR-10 with it, or the gantry with the flex skirt lip (docs/pneumatics.md).
+enum class ObjectSceneKind { kGantry, kArm, kFlex };
+inline constexpr const char* kObjectSceneKindNames = "gantry, arm, flex";
+// False + *error naming the valid names for an unknown one.
+bool ObjectSceneKindByName(const std::string& name, ObjectSceneKind* kind, std::string* error);
+const char* ObjectSceneKindName(ObjectSceneKind kind);
+// The object's scene file (no directory) of that kind.
+std::string ObjectSceneFile(const ObjectFiles& files, ObjectSceneKind kind);
+// The kind matching a disk scene's name or path: the flex tier for a scene named *flex*, the
+// gantry for *gantry*, *light* and *fast*, else the arm.
+ObjectSceneKind ObjectSceneKindOfScene(const std::string& scene);
 
 // Trial settings for an object: `base` (its law, seed, effects, loop and servo) with the target
 // from the object's ObjectTrialSetup (landing and start points, goal) and exact edge (metrics,

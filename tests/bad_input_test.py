@@ -198,6 +198,8 @@ CASES = [
     (["view", "--width", "10"], 2, "--width"),
     (["view", "--speed", "0"], 2, "--speed"),
     (["view", "no_such_object"], 2, "no_such_object"),
+    (["view", "fillet", "--scene-kind", "robot"], 2, "gantry, arm, flex"),
+    (["view", "disk_benchmark", "--scene-kind", "flex"], 2, "disk_benchmark_flex"),
     (["nosuchcommand"], 2, "unknown command"),
     # Second round (docs/reliability.md): inputs found bad only after the output was made, and
     # the kinds that hung, crashed or ran silently.

@@ -48,8 +48,7 @@ int RunObjectsCommand(int argc, char** argv) {
   if (std::string e; !ObjectsByNames(names, &spec.objects, &e)) return cmd.Fail("--objects: " + e);
   spec.seeds = static_cast<int>(seeds);
   spec.seed = seed;
-  spec.arm_scenes = kind == "arm";
-  spec.flex_scenes = kind == "flex";
+  if (std::string e; !ObjectSceneKindByName(kind, &spec.scene_kind, &e)) return cmd.Fail(e);
   spec.law = law;
   spec.threads = static_cast<int>(threads);
   spec.out_dir = out_dir;

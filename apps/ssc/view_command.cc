@@ -26,6 +26,10 @@ int RunViewCommand(int argc, char** argv) {
   long width = 1280, height = 720;
   cmd.Positional("SCENE", &scene, "scene name, path or test object", false);
   cmd.Text("scene", &scene_option, "the same as SCENE (as in ssc trial --scene)");
+  std::string kind_name;
+  cmd.Text("scene-kind", &kind_name,
+           std::string("a test object's scene: ") + kObjectSceneKindNames +
+               " (as in ssc objects; default arm); only with a test object");
   std::string camera = "overview";
   cmd.Choice("camera", &camera,
              "camera at start: overview (the arm and the cup), cup (a close-up that follows the "
@@ -50,6 +54,10 @@ int RunViewCommand(int argc, char** argv) {
                     "' name different scenes: give one");
   }
   if (scene.empty()) scene = scene_option.empty() ? "disk_benchmark" : scene_option;
+  ObjectSceneKind kind = ObjectSceneKind::kArm;
+  if (std::string e; !kind_name.empty() && !ObjectSceneKindByName(kind_name, &kind, &e)) {
+    return cmd.Fail("--scene-kind: " + e);
+  }
   v.camera = camera == "cup"    ? ViewerCamera::kCup
              : camera == "free" ? ViewerCamera::kFree
                                 : ViewerCamera::kOverview;
@@ -57,7 +65,12 @@ int RunViewCommand(int argc, char** argv) {
   v.width = static_cast<int>(width);
   v.height = static_cast<int>(height);
   v.scene_path = ResolveScenePath(scene);
-  if (!std::filesystem::exists(v.scene_path)) {
+  const bool is_file = std::filesystem::exists(v.scene_path);
+  if (is_file && !kind_name.empty()) {
+    return cmd.Fail("--scene-kind '" + kind_name + "' picks a test object's scene; '" + scene +
+                    "' is a scene file (for the flex tier name disk_benchmark_flex)");
+  }
+  if (!is_file) {
     // A test object by name: write its scenes (out/objects/scenes) and open the arm scene, with
     // the trial set up for that object.
     const ObjectSpec spec = ObjectByName(scene);
@@ -73,9 +86,9 @@ int RunViewCommand(int argc, char** argv) {
       std::fprintf(stderr, "ssc view: %s\n", error.c_str());
       return 1;
     }
-    v.scene_path =
-        std::filesystem::absolute(std::filesystem::path(dir) / ObjectFileNames(spec.name).arm_scene)
-            .string();
+    v.scene_path = std::filesystem::absolute(std::filesystem::path(dir) /
+                                             ObjectSceneFile(ObjectFileNames(spec.name), kind))
+                       .string();
     v.config = ObjectTrialConfig(spec, v.config);  // the options hold on objects too
   }
   v.create_outputs = [&cmd]() { return cmd.CreateOutputs(); };

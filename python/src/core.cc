@@ -132,9 +132,9 @@ TrialConfig MakeConfig(double pref, double beta, double step_mm, std::uint64_t s
     std::string error;
     if (!WriteObjectFiles(spec, dir.string(), ResourceDir(), &error)) Fail(error);
     const ObjectFiles files = ObjectFileNames(spec.name);
-    *scene =
-        (dir / (scene->find("gantry") != std::string::npos ? files.gantry_scene : files.arm_scene))
-            .string();
+    // The object's scene of the scene's tier: flex for *flex*, the gantry for *gantry*,
+    // *light* and *fast*, else the arm.
+    *scene = (dir / ObjectSceneFile(files, ObjectSceneKindOfScene(*scene))).string();
     config = ObjectTrialConfig(spec, config);
   }
   if (std::string e; !ParseRobotEffects(effects, &config.effects, &e)) Invalid(e);
@@ -1051,11 +1051,10 @@ NB_MODULE(_core, m) {
           Invalid("seeds = " + std::to_string(seeds) + " is out of range [1, 1000]");
         if (threads < 1 || threads > 256)
           Invalid("threads = " + std::to_string(threads) + " is out of range [1, 256]");
-        if (scene_kind != "gantry" && scene_kind != "arm")
-          Invalid("scene_kind = '" + scene_kind + "' must be 'gantry' or 'arm'");
+        if (!ObjectSceneKindByName(scene_kind, &spec.scene_kind, &error))
+          Invalid("scene_kind: " + error);
         spec.seeds = seeds;
         spec.seed = seed;
-        spec.arm_scenes = scene_kind == "arm";
         spec.law = Law(pref, beta, step_mm);
         spec.threads = threads;
         spec.out_dir = out_dir;

@@ -37,7 +37,8 @@ FAILURES = ("failure_I", "failure_II", "lost_edge")
 CONTROL_PERIOD_S = _core.default_control_period_s  # one step: one control iteration
 DEFAULT_SCENE = "disk_benchmark_gantry"
 # The bundled scenes a contour-following trial runs in (the others hold a probe, no robot).
-TRIAL_SCENES = ("disk_benchmark", "disk_benchmark_gantry", "disk_benchmark_light")
+TRIAL_SCENES = ("disk_benchmark", "disk_benchmark_gantry", "disk_benchmark_light",
+                "disk_benchmark_fast", "disk_benchmark_flex")
 CUP_VIEW_DISTANCE_M = 0.15  # the "cup" camera: the cup and the edge under it fill the frame
 LIP_GEOM_GROUP = 4  # models/ssc_tool.xml: the lip segments
 
@@ -61,8 +62,10 @@ class EdgeFollowingEnv(gym.Env):
                  camera="cup"):
         super().__init__()
         # The scene: a name under scenes/ ("disk_benchmark_gantry", the cup on a gantry;
-        # "disk_benchmark", the UR-10 arm; "disk_benchmark_light") or an MJCF path. With test
-        # objects, a scene name containing "gantry" runs their gantry scenes, else their arm ones.
+        # "disk_benchmark", the UR-10 arm; "disk_benchmark_light", "disk_benchmark_fast";
+        # "disk_benchmark_flex", the flex skirt lip) or an MJCF path. With test objects, a scene
+        # name containing "flex" runs their flex scenes, "gantry", "light" or "fast" their
+        # gantry scenes, else their arm ones.
         self.scene = str(scene)
         if not os.path.exists(_core.scene_path(self.scene)):
             raise ValueError(f"scene {self.scene!r} not found: a name among {list_scenes()} or "
