@@ -20,6 +20,9 @@ constexpr int kWarmStartSize = kNumChambers + 1;
 constexpr int kRimBisections = 6;
 // Per-mjData noise seed (set by the application after a reset), after the warm start.
 constexpr int kSeedSlot = kSensorChainStateSize + kWarmStartSize;
+// The chamber vacuums' force on the tool at the last passive evaluation (world, N; 3 values):
+// the F/T transducer carries it (runtime/tool_force.h).
+constexpr int kVacuumForceSlot = kSeedSlot + 1;
 
 // World-frame axis `col` of a row-major 3x3 rotation.
 void Axis(const mjtNum* mat, int col, mjtNum out[3]) {
@@ -50,6 +53,10 @@ class ChamberPressureSensor final : public ChamberPressureDiagnostics {
   int num_lip_segments() const override { return lip_.num_rim_points(); }
   const ChamberPressureConfig& config() const override { return config_; }
   const ChamberPressureSample& last_sample() const override { return sample_; }
+  std::array<double, 3> lip_vacuum_force_n(const mjModel* m, const mjData* d) const override {
+    const mjtNum* f = d->plugin_state + m->plugin_stateadr[instance_] + kVacuumForceSlot;
+    return {f[0], f[1], f[2]};
+  }
   void Measure(const mjModel* m, const mjData* d, ChamberPressureSample* sample) const override;
   void CopyDiagnosticsFrom(const ChamberPressureSensor& other) { sample_ = other.sample_; }
   // The sensor chain's parameters with the run seed kept in the plugin state.
@@ -96,7 +103,7 @@ ChamberPressureSensor* SensorOf(const mjData* d, int instance) {
   return reinterpret_cast<ChamberPressureSensor*>(d->plugin_data[instance]);
 }
 
-int StateSize() { return kSeedSlot + 1; }
+int StateSize() { return kVacuumForceSlot + 3; }
 
 }  // namespace
 
@@ -175,6 +182,7 @@ void ChamberPressureSensor::Reset(mjtNum* plugin_state) const {
   ResetSensorChain(reinterpret_cast<SensorChainState*>(plugin_state));
   for (int i = 0; i < kWarmStartSize; ++i) plugin_state[kSensorChainStateSize + i] = 0.0;
   plugin_state[kSeedSlot] = 0.0;
+  for (int k = 0; k < 3; ++k) plugin_state[kVacuumForceSlot + k] = 0.0;
 }
 
 void SetChamberPressureRunSeed(const mjModel* m, mjData* d, int instance, std::uint64_t seed) {
@@ -388,8 +396,8 @@ void ChamberPressureSensor::ApplyLipForces(const mjModel* m, mjData* d, int inst
   const mjtNum* warm = d->plugin_state + m->plugin_stateadr[instance] + kSensorChainStateSize;
   std::array<double, kNumChambers> vacuum_pa{};
   for (int i = 0; i < kNumChambers; ++i) vacuum_pa[i] = std::max(0.0, warm[i]);
-  lip_.ApplyForces(m, d, vacuum_pa, config_.geometry.ChamberOpeningArea(),
-                   config_.lip_vacuum_load != 0);
+  lip_.ApplyForces(m, d, vacuum_pa, config_.lip_vacuum_load != 0,
+                   d->plugin_state + m->plugin_stateadr[instance] + kVacuumForceSlot);
 }
 
 void ChamberPressureSensor::Compute(const mjModel* m, mjData* d, int instance) {

@@ -231,6 +231,21 @@ bool LipBody::BindSkirt(const mjModel* m, int root, std::string* error) {
     ToSiteFrame(m, site_id_, p, local[v].data());
     depth[v] = local[v][2];
   }
+  // The pinned ring (vertices carried by the cup itself) bounds the cup's ceiling.
+  double pinned_radius_sum = 0.0;
+  int pinned = 0;
+  for (int v = 0; v < n; ++v) {
+    if (m->flex_vertbodyid[adr + v] != root) continue;
+    pinned_radius_sum += std::hypot(local[v][0], local[v][1]);
+    ++pinned;
+  }
+  if (pinned < 3) {
+    *error = Fail("the flex skirt has " + std::to_string(pinned) +
+                  " vertices pinned to the tool site's body; need its top ring (3 or more)");
+    return false;
+  }
+  const double ceiling_radius_m = pinned_radius_sum / pinned;
+  ceiling_area_m2_ = 0.25 * M_PI * ceiling_radius_m * ceiling_radius_m;
   rim_of_vertex_.assign(n, -1);
   double radius_sum = 0.0;
   for (int v : RimVertices(depth, kRimToleranceM)) {
@@ -297,12 +312,13 @@ void LipBody::MarkContacts(const mjModel* m, const mjData* d, unsigned char* tou
 }
 
 void LipBody::ApplyForces(const mjModel* m, mjData* d,
-                          const std::array<double, kNumChambers>& vacuum_pa, double opening_area_m2,
-                          bool vacuum_load) const {
+                          const std::array<double, kNumChambers>& vacuum_pa, bool vacuum_load,
+                          mjtNum vacuum_force_n[3]) const {
+  mju_zero3(vacuum_force_n);
   if (kind_ == Kind::kSegments) {
     ApplySegmentForces(d);
   } else if (vacuum_load) {
-    ApplySkirtVacuum(m, d, vacuum_pa, opening_area_m2);
+    ApplySkirtVacuum(m, d, vacuum_pa, vacuum_force_n);
   }
 }
 
@@ -329,7 +345,7 @@ void LipBody::ApplySegmentForces(mjData* d) const {
 
 void LipBody::ApplySkirtVacuum(const mjModel* m, mjData* d,
                                const std::array<double, kNumChambers>& vacuum_pa,
-                               double opening_area_m2) const {
+                               mjtNum vacuum_force_n[3]) const {
   const mjtNum* site_pos = d->site_xpos + 3 * site_id_;
   const mjtNum* site_mat = d->site_xmat + 9 * site_id_;
   const mjtNum axis_z[3] = {site_mat[2], site_mat[5], site_mat[8]};
@@ -353,15 +369,17 @@ void LipBody::ApplySkirtVacuum(const mjModel* m, mjData* d,
     if (vacuum == 0.0) continue;
     const std::array<double, 3> f = TrianglePressureForce(p0, p1, p2, vacuum, cavity);
     mjtNum third[3] = {f[0] / 3.0, f[1] / 3.0, f[2] / 3.0};
+    for (int k = 0; k < 3; ++k) vacuum_force_n[k] += f[k];
     for (int k = 0; k < 3; ++k) {
       mjtNum* point = d->flexvert_xpos + 3 * (adr + v[k]);
       mj_applyFT(m, d, third, zero, point, m->flex_vertbodyid[adr + v[k]], d->qfrc_passive);
     }
   }
-  // The cup's ceiling over each chamber: pulled toward the object.
+  // The cup's ceiling over each chamber (inside the skirt's pinned ring): pulled toward the object.
   double pull_n = 0.0;
-  for (double p : vacuum_pa) pull_n += p * opening_area_m2;
+  for (double p : vacuum_pa) pull_n += p * ceiling_area_m2_;
   mjtNum force[3] = {pull_n * axis_z[0], pull_n * axis_z[1], pull_n * axis_z[2]};
+  mju_addTo3(vacuum_force_n, force);
   mjtNum point[3];
   mju_copy3(point, site_pos);
   mj_applyFT(m, d, force, zero, point, m->site_bodyid[site_id_], d->qfrc_passive);

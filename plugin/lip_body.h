@@ -5,7 +5,8 @@
 //     and tilt hinges get springs from the lip_* keys;
 //   - skirt: a 2-D MuJoCo flex whose vertices hang under the site's body
 //     (models/ssc_tool_flex.xml): the engine's own elasticity deforms it; its deepest vertices
-//     are the rim; each chamber's vacuum loads the skirt's triangles and the cup.
+//     are the rim; each chamber's vacuum loads the skirt's triangles and the cup's ceiling inside
+//     the skirt's pinned ring.
 // A model with lip geoms uses them; otherwise the first 2-D flex under the site's body.
 // MuJoCo adapter: the physics it calls lives in pneumatics/ (lip_ring.h, lip_rim.h).
 #ifndef SSC_PLUGIN_LIP_BODY_H_
@@ -52,9 +53,13 @@ class LipBody {
 
   // Passive forces into d->qfrc_passive: ring bending and carrier springs (segments), or each
   // chamber's vacuum on the skirt's triangles and on the cup (skirt, when vacuum_load). Switches
-  // the carrier's equality locks to match the config. Allocates nothing.
+  // the carrier's equality locks to match the config. `vacuum_force_n` gets the sum of the
+  // vacuum forces applied (world frame; zero when none). Allocates nothing.
   void ApplyForces(const mjModel* m, mjData* d, const std::array<double, kNumChambers>& vacuum_pa,
-                   double opening_area_m2, bool vacuum_load) const;
+                   bool vacuum_load, mjtNum vacuum_force_n[3]) const;
+  // A skirt's ceiling over one chamber: a quarter of the disk inside its pinned ring (the rest of
+  // the cavity's projected area is the skirt's own, loaded triangle by triangle).
+  double ceiling_area_m2() const { return ceiling_area_m2_; }
 
  private:
   bool BindSegments(const mjModel* m, int root, int lip_geom_group, std::string* error);
@@ -63,7 +68,7 @@ class LipBody {
   void ApplySegmentForces(mjData* d) const;
   void ApplySkirtVacuum(const mjModel* m, mjData* d,
                         const std::array<double, kNumChambers>& vacuum_pa,
-                        double opening_area_m2) const;
+                        mjtNum vacuum_force_n[3]) const;
 
   Kind kind_ = Kind::kSegments;
   int site_id_ = -1;
@@ -92,6 +97,7 @@ class LipBody {
   int flex_ = -1;
   std::vector<int> rim_vertex_;     // flex vertex (global id) of each rim point
   std::vector<int> rim_of_vertex_;  // rim point of each of the flex's vertices, -1 if none
+  double ceiling_area_m2_ = 0.0;
 };
 
 }  // namespace ssc

@@ -1,5 +1,7 @@
 #include "runtime/tool_force.h"
 
+#include "plugin/chamber_pressure_sensor.h"
+
 namespace ssc {
 namespace {
 
@@ -52,6 +54,11 @@ void ToolForceReader::Update(const mjModel* m, const mjData* d) {
     }
     const double on_tool_along_z = (tool_side == 1 ? 1.0 : -1.0) * mju_dot3(f_world, axis_z);
     axial -= on_tool_along_z;
+  }
+  // The chamber vacuums pull the cup and skirt toward the object: the transducer carries that too.
+  if (const ChamberPressureDiagnostics* sensor = FindChamberPressureDiagnostics(m, d)) {
+    const std::array<double, 3> f = sensor->lip_vacuum_force_n(m, d);
+    axial -= f[0] * axis_z[0] + f[1] * axis_z[1] + f[2] * axis_z[2];
   }
   balance_n_ = axial;
 }

@@ -5,8 +5,9 @@
 // integrator the skirt's elasticity lives in the step's metric, not in any force the sensor's
 // recursion sums, so the sensor misses the load the skirt carries to the cup (it reads ~0 N while
 // the lip is pressed 2 mm into an object). There the reading is the quasi-static balance instead:
-// minus the contact forces on everything below the transducer (cup geoms and the skirt), along
-// the site's z axis. The cup's own inertia is left out (under 1 % of the 1.5 N band at the
+// minus the contact forces on everything below the transducer (cup geoms and the skirt) and
+// minus the chamber vacuums' pull on them (the pressure plugin's passive force), along the site's
+// z axis. The cup's own inertia is left out (under 1 % of the 1.5 N band at the
 // trial's accelerations).
 #ifndef SSC_RUNTIME_TOOL_FORCE_H_
 #define SSC_RUNTIME_TOOL_FORCE_H_

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Writes models/ssc_tool_flex.xml: models/ssc_tool.xml with its lip (16 segments on slides and
 their carrier) replaced by a skirt that MuJoCo deforms: a 2-D flex shell with the engine's own
-elasticity, pinned along its top ring to the cup and free at its rim.
+elasticity, pinned along its top ring to the cup and free at its rim, leaning on the four
+chamber walls, and loaded by each chamber's vacuum (the plugin's lip_vacuum_load).
 
 The skirt's shape and material are the one home of those facts (SKIRT below); the published cup
 fixes the rim (the 11 mm opening); the rest is argued in docs/pneumatics.md (the flex skirt) with
@@ -36,6 +37,15 @@ SKIRT = {
     # the usual time-constant solref lets the rim sink through the object under a 1 N press. A
     # direct stiffness (MuJoCo's negative solref, critically damped) holds it on the surface.
     "contact_stiffness": (1e8, "1/s^2", "rim held within 0.01 mm of the surface under 1.4 N"),
+    # The four chamber walls (the cross that splits the opening into quadrants) are moulded with
+    # the skirt: a wall is stiff in its own plane (a silicone plate loaded edgewise) and soft
+    # across it, so the model makes each a rigid plate whose edge runs along the skirt's inside;
+    # the skirt leans on that edge and slides along it. Their lower edges are the stop that
+    # carries a grasp: pressed beyond them, the skirt would buckle under the chambers' vacuum.
+    "wall_thickness_mm": (1.0, "mm", "0.6-1.5: moulded like the lip"),
+    "wall_recess_mm": (0.5, "mm", "0.3-1: the walls' lower edge above the lip plane: clear of "
+                       "the object at the approach's press (0.2 mm), reached before the skirt "
+                       "buckles under a sealed cup's vacuum (0.7-1 mm)"),
     "rings": (3, "", "vertex rings from the pinned top to the rim (cost grows with rings x sectors)"),
     "sectors": (16, "", "vertices per ring: the rim has as many points as the segment lip"),
 }
@@ -77,11 +87,55 @@ def skirt_flexcomp():
                         elastic2d="both"/>
             <contact condim="3" selfcollide="none" contype="1" conaffinity="0"
                      friction="{value('friction')} 0.005 0.0001"
-                     solref="{-value('contact_stiffness'):.6g} {-2 * math.sqrt(value('contact_stiffness')):.6g}"
+                     solref="{contact_solref()}"
                      solimp="0.95 0.99 0.0005"/>
             <pin id="{pin}"/>
           </flexcomp>
 """
+
+
+def chamber_walls():
+    """The four chamber walls in the cup body: each a rigid plate from the axis to the skirt's
+    inner surface (a box) with a rounded edge along the skirt's inside (a capsule) that the skirt
+    leans on; both end wall_recess_mm above the lip plane."""
+    lip_plane = 0.1206
+    cr = value("contact_radius_mm") * 1e-3
+    r_top, r_rim = value("top_radius_mm") * 1e-3, value("rim_radius_mm") * 1e-3
+    height, half_t = value("height_mm") * 1e-3, 0.5 * value("wall_thickness_mm") * 1e-3
+    z_top = lip_plane - cr - height  # the skirt's pinned ring: the ceiling
+    z_edge = lip_plane - value("wall_recess_mm") * 1e-3  # the walls' lower edge
+    z_rib = z_edge - half_t  # the edge capsule's lower end (its cap reaches z_edge)
+    # The skirt's centre line runs from (r_top, z_top) to (r_rim, lip_plane - cr).
+    r_at = lambda z: r_top + (r_rim - r_top) * (z - z_top) / height
+    inset = cr + half_t  # the capsule touches the skirt's inner face at rest
+    rib_top, rib_bottom = r_top - inset, r_at(z_rib) - inset
+    lines = ["          <!-- The chamber walls (tools/make_flex_tool.py): rigid in their plane; the"
+             " skirt leans on their edges. -->"]
+    for k in range(4):
+        a = 0.5 * math.pi * k  # the quadrant boundaries (plugin/pneumatics/cup_geometry.h)
+        c, s = math.cos(a), math.sin(a)
+        half_r = 0.5 * rib_top
+        lines.append(
+            f'          <geom name="wall_{k}" type="box" size="{half_r:.6f} {half_t:.6f} '
+            f'{0.5 * (z_edge - z_top):.6f}" pos="{half_r * c:.6f} {half_r * s:.6f} '
+            f'{0.5 * (z_edge + z_top):.6f}" quat="{math.cos(a / 2):.6f} 0 0 {math.sin(a / 2):.6f}" {wall_contact()}/>')
+        lines.append(
+            f'          <geom name="wall_edge_{k}" type="capsule" size="{half_t:.6f}" '
+            f'fromto="{rib_top * c:.6f} {rib_top * s:.6f} {z_top:.6f} {rib_bottom * c:.6f} '
+            f'{rib_bottom * s:.6f} {z_rib:.6f}" {wall_contact()}/>')
+    return "\n".join(lines) + "\n"
+
+
+def contact_solref():
+    return f"{-value('contact_stiffness'):.6g} {-2 * math.sqrt(value('contact_stiffness')):.6g}"
+
+
+def wall_contact():
+    """The walls touch the skirt (and objects) with the skirt's own contact; group 3: no ray of
+    the pressure sensor sees them; their mass is in the cup body's."""
+    return (f'group="3" contype="0" conaffinity="1" condim="3" mass="0" rgba="0.95 0.55 0.1 0.6" '
+            f'friction="{value("friction")} 0.005 0.0001" solref="{contact_solref()}" '
+            f'solimp="0.95 0.99 0.0005"')
 
 
 DOC = ROOT / "docs" / "pneumatics.md"
@@ -99,18 +153,29 @@ def doc_with_table(doc):
     return doc[:start] + "\n" + markdown_table() + "\n" + doc[end:]
 
 
-def main():
+def tool_xml(walls=True, vacuum_load=True):
+    """The flex tool's MJCF; tests build variants without the walls or the vacuum load."""
     text = (ROOT / "models" / "ssc_tool.xml").read_text()
     # The segment lip and its carrier body go; the skirt takes their place.
     start = text.index('          <!-- The lip\'s carrier')
     end = text.index("        </body>\n      </body>\n    </body>\n  </worldbody>")
-    text = text[:start] + skirt_flexcomp() + text[end:]
+    text = text[:start] + (chamber_walls() if walls else "") + skirt_flexcomp() + text[end:]
     text = re.sub(r"\n  <!-- Rigid lip carrier.*?</equality>\n", "\n", text, flags=re.S)
     text = text.replace('<mujoco model="ssc_tool">', '<mujoco model="ssc_tool_flex">')
+    # Each chamber's vacuum loads the skirt and the cup (the walls hold the skirt's shape).
+    text = text.replace('<instance name="pressure"/>',
+                        '<instance name="pressure">\n        <config key="lip_vacuum_load" '
+                        f'value="{int(vacuum_load)}"/>\n      </instance>')
     text = re.sub(r"<!--\n  Smart Suction Cup tool:", "<!--\n  GENERATED by tools/make_flex_tool.py from ssc_tool.xml: do not edit.\n"
-                  "  The same tool with a deformable skirt lip (a 2-D flex) instead of 16 segments.\n"
+                  "  The same tool with a deformable skirt lip (a 2-D flex) instead of 16 segments,\n"
+                  "  the four chamber walls it leans on, and each chamber's vacuum loading it.\n"
                   "  Scenes using it must set integrator=\"discrete\" (MuJoCo integrates 2-D flex\n"
                   "  elasticity only there).\n\n  Smart Suction Cup tool:", text, count=1)
+    return text
+
+
+def main():
+    text = tool_xml()
     out = ROOT / "models" / "ssc_tool_flex.xml"
     doc = DOC.read_text()
     if "--check" in sys.argv:
