@@ -13,7 +13,7 @@ bool Enabled(const mjModel* m, int flag) { return (m->opt.enableflags & flag) !=
 bool CanDeferAccSensors(const mjModel* m) {
   const int integrator = m->opt.integrator;
   if (integrator != mjINT_EULER && integrator != mjINT_IMPLICIT &&
-      integrator != mjINT_IMPLICITFAST) {
+      integrator != mjINT_IMPLICITFAST && integrator != mjINT_DISCRETE) {
     return false;
   }
   if (Enabled(m, mjENBL_FWDINV) || mjcb_sensor != nullptr) return false;
@@ -63,6 +63,14 @@ void FinishStep(const mjModel* m, mjData* d, bool acc_sensors, mjtNum step_start
   mj_checkAcc(m, d);
   if (m->opt.integrator == mjINT_EULER) {
     mj_Euler(m, d);
+  } else if (m->opt.integrator == mjINT_DISCRETE) {
+    // The discrete map's acceleration comes from the forward pass (its constraint solve in the
+    // effective metric); mj_step then advances it explicitly (qvel += h qacc, then positions),
+    // which is mj_Euler's branch without its implicit damping. A shallow copy of the model
+    // (every array shared, read only) with that damping off takes it.
+    mjModel explicit_advance = *m;
+    explicit_advance.opt.disableflags |= mjDSBL_EULERDAMP;
+    mj_Euler(&explicit_advance, d);
   } else {
     mj_implicit(m, d);
   }

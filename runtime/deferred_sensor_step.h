@@ -18,8 +18,8 @@
 
 namespace ssc {
 
-// Whether `m` allows it: integrator Euler, implicit or implicitfast (RK4 and the discrete map
-// run forward passes of their own); no forward/inverse comparison (mjENBL_FWDINV); every
+// Whether `m` allows it: integrator Euler, implicit, implicitfast or discrete (RK4 runs forward
+// passes of its own); no forward/inverse comparison (mjENBL_FWDINV); every
 // acceleration-stage sensor built in (no plugin or user sensor) and without history, delay or
 // interval; no mjcb_sensor installed. Otherwise use mj_step.
 bool CanDeferAccSensors(const mjModel* m);
