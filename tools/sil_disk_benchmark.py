@@ -1,16 +1,26 @@
 #!/usr/bin/env python3
 """The lab's one-disk-revolution script under `ssc sil` beside `ssc trial` on the same settings.
 
-    tools/sil_disk_benchmark.py --lab-repo CHECKOUT [--seeds 1-5] [--step-mm 7.5] [--ssc build/bin/ssc]
+    tools/sil_disk_benchmark.py --lab-repo CHECKOUT [--seeds 1-5] [--step-mm 7.5]
+                                [--pause-cost S] [--ssc build/bin/ssc]
 
 For each seed: runs CHECKOUT/src/SDL_ur_control_edgeFollowing_livePlot_oneDiskRevolution.py in
 virtual time with its knob d_lat set to the step (--set d_lat=...; its P_ref 100 Pa and beta 2
 are the script's own), reads the .mat it saves (success, edgeFollowing_history) and reports the
 outcome, dr = mean distance of the history's TCP from the disk centre minus 35 mm, the CPU time
 (user + sys of the run) and the wall time; then `ssc trial --scene SCENE` with the same P_ref,
-beta, step and seed, once with the twin's own protocol (start 32 mm, approach 1.5 N) and once with
-the script's (start_offset 31 mm, F_normalThres 1.1-1.2 N: --start-offset 31 --approach-force
-1.15). Needs scipy (the lab's saver writes the .mat with it).
+beta, step and seed, three ways:
+  - twin: the twin's own protocol and loop (start 32 mm, approach 1.5 N, period 0.15 s, the
+    default robot effects);
+  - script: the script's protocol (start_offset 31 mm, F_normalThres 1.1-1.2 N:
+    --start-offset 31 --approach-force 1.15), the twin's loop;
+  - same loop: the script's protocol and the script's loop timing on the SIL's robot. The loop
+    reads the pressures 10 ms after its top (rospy.sleep), redraws (plt.pause: 10 ms + the pause
+    cost C), reads the pose and sends servoL, waits out the 8 ms RTDE period and sleeps 10 ms:
+    period 0.038 s + C, and the step is added to a pose read 0.01 s + C after the pressures
+    (--period, --effects pose_delay_s); the SIL's arm lands where it servos, so the step landing
+    errors and the tare residual are off (step_error_relative=0, offset_spread_pa=0).
+Needs scipy (the lab's saver writes the .mat with it).
 """
 import argparse
 import json
@@ -39,10 +49,17 @@ def child_cpu():
     return r.ru_utime + r.ru_stime
 
 
-def sil_run(ssc, script, seed, step_m, scene, out):
+# The script's loop without the pause cost (see the docstring): the sleeps, plt.pause's argument
+# and the RTDE period; and from the pressure read to the pose read: plt.pause's argument. s.
+LOOP_SLEEPS_S = 0.01 + 0.01 + 1.0 / 125 + 0.01
+PRESSURE_TO_POSE_SLEEPS_S = 0.01
+
+
+def sil_run(ssc, script, seed, step_m, scene, out, pause_cost):
     report = os.path.join(out, "report.json")
     cpu0, wall0 = child_cpu(), time.perf_counter()
     p = subprocess.run([ssc, "sil", "--out", out, "--scene", scene, "--seed", str(seed),
+                        "--pause-cost", str(pause_cost),
                         "--set", "d_lat=%r" % step_m, "--report", report, script],
                        cwd=out, capture_output=True, text=True)
     cpu, wall = child_cpu() - cpu0, time.perf_counter() - wall0
@@ -82,25 +99,38 @@ def main():
     ap.add_argument("--seeds", default="1-5", type=seeds)
     ap.add_argument("--step-mm", type=float, default=7.5)
     ap.add_argument("--scene", default="disk_benchmark_gantry")
+    ap.add_argument("--pause-cost", type=float, default=None,
+                    help="ssc sil's --pause-cost (default: ssc sil's own)")
     ap.add_argument("--ssc", default=os.path.join(os.path.dirname(__file__), "..", "build", "bin", "ssc"))
     a = ap.parse_args()
     script = os.path.join(os.path.abspath(a.lab_repo), SCRIPT)
+    ssc = os.path.abspath(a.ssc)
+    if a.pause_cost is None:
+        h = subprocess.run([ssc, "sil", "--help"], capture_output=True, text=True).stdout
+        a.pause_cost = float(re.search(r"default ([\d.]+), measured", " ".join(h.split())).group(1))
+    protocol = ["--start-offset", "31", "--approach-force", "1.15"]
+    same_loop = protocol + [
+        "--period", "%.4f" % (LOOP_SLEEPS_S + a.pause_cost),
+        "--effects", "pose_delay_s=%.4f,step_error_relative=0,offset_spread_pa=0" % (
+            PRESSURE_TO_POSE_SLEEPS_S + a.pause_cost)]
+    print("ssc sil --pause-cost %g; same loop: ssc trial %s" % (a.pause_cost, " ".join(same_loop)))
     print("| seed | ssc sil: outcome | iterations | dr (mm) | simulated (s) | CPU (s) | wall (s) "
-          "| ssc trial (twin protocol): outcome | dr (mm) | ssc trial (script's protocol): "
-          "outcome | dr (mm) |")
-    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+          "| ssc trial, twin: outcome | dr (mm) | script's protocol: outcome | dr (mm) "
+          "| same loop: outcome | dr (mm) |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     rows = []
     for seed in a.seeds:
         with tempfile.TemporaryDirectory(prefix="sil_bench_") as out:
-            s = sil_run(os.path.abspath(a.ssc), script, seed, a.step_mm * 1e-3, a.scene, out)
-            t = trial_run(os.path.abspath(a.ssc), seed, a.step_mm, a.scene, os.path.join(out, "t1"))
-            u = trial_run(os.path.abspath(a.ssc), seed, a.step_mm, a.scene, os.path.join(out, "t2"),
-                          ["--start-offset", "31", "--approach-force", "1.15"])
-        rows.append((s, t, u))
-        print("| %d | %s | %s | %.2f | %.1f | %.1f | %.1f | %s | %.2f | %s | %.2f |" % (
+            s = sil_run(ssc, script, seed, a.step_mm * 1e-3, a.scene, out, a.pause_cost)
+            t = trial_run(ssc, seed, a.step_mm, a.scene, os.path.join(out, "t1"))
+            u = trial_run(ssc, seed, a.step_mm, a.scene, os.path.join(out, "t2"), protocol)
+            v = trial_run(ssc, seed, a.step_mm, a.scene, os.path.join(out, "t3"), same_loop)
+        rows.append((s, t, u, v))
+        print("| %d | %s | %s | %.2f | %.1f | %.1f | %.1f | %s | %.2f | %s | %.2f | %s | %.2f |" % (
             seed, s["outcome"] if s["status"] == 0 else "error: " + s["problem"],
             s.get("iterations", "-"), s.get("dr_mm", float("nan")), s["sim_s"], s["cpu_s"],
-            s["wall_s"], t["outcome"], t["dr_mm"], u["outcome"], u["dr_mm"]), flush=True)
+            s["wall_s"], t["outcome"], t["dr_mm"], u["outcome"], u["dr_mm"], v["outcome"],
+            v["dr_mm"]), flush=True)
 
     def stat(values):
         values = [v for v in values if np.isfinite(v)]
@@ -108,12 +138,13 @@ def main():
             return "-"
         sd = np.std(values, ddof=1) if len(values) > 1 else 0.0
         return "%.2f +- %.2f mm (%d)" % (np.mean(values), sd, len(values))
-    print("\ndr over successful runs (mean +- SD, n): ssc sil %s; ssc trial twin protocol %s; "
-          "script's protocol %s; ssc sil CPU per run %.1f-%.1f s" % (
-              stat([s.get("dr_mm", np.nan) for s, _, _ in rows if s["outcome"] == "success"]),
-              stat([t["dr_mm"] for _, t, _ in rows if t["outcome"] == "success"]),
-              stat([u["dr_mm"] for _, _, u in rows if u["outcome"] == "success"]),
-              min(s["cpu_s"] for s, _, _ in rows), max(s["cpu_s"] for s, _, _ in rows)))
+    print("\ndr over successful runs (mean +- SD, n): ssc sil %s; ssc trial twin %s; "
+          "script's protocol %s; same loop %s; ssc sil CPU per run %.1f-%.1f s" % (
+              stat([r[0].get("dr_mm", np.nan) for r in rows if r[0]["outcome"] == "success"]),
+              stat([r[1]["dr_mm"] for r in rows if r[1]["outcome"] == "success"]),
+              stat([r[2]["dr_mm"] for r in rows if r[2]["outcome"] == "success"]),
+              stat([r[3]["dr_mm"] for r in rows if r[3]["outcome"] == "success"]),
+              min(r[0]["cpu_s"] for r in rows), max(r[0]["cpu_s"] for r in rows)))
     return 0
 
 

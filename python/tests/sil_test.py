@@ -166,6 +166,52 @@ class SilContracts(unittest.TestCase):
         # Virtual: the 3.5 simulated seconds took less wall time than they simulate.
         self.assertLess(time.perf_counter() - wall0, 3.5)
 
+    def test_the_arm_and_the_packets_go_on_during_a_plot_pause(self):
+        # The UR's servo thread keeps tracking the last servoL target and the board keeps
+        # streaming while the script redraws its plot (plt.pause).
+        import rospy
+        import rtde_control
+        import rtde_receive
+        from suction_cup.msg import SensorPacket, cmdPacket
+        from ssc_twin.sil import noop
+        got = []
+        rospy.Subscriber("SensorPacket", SensorPacket, got.append)
+        rospy.Publisher("cmdPacket", cmdPacket, queue_size=1).publish(cmdPacket(cmdInput=2))
+        c = rtde_control.RTDEControlInterface("10.0.0.1", 125)
+        r = rtde_receive.RTDEReceiveInterface("10.0.0.1", 125)
+        c.setTcp([0, 0, 0.146, 0, 0, 0])
+        rospy.sleep(0.2)
+        start = r.getActualTCPPose()
+        goal = list(start)
+        goal[0] += 0.005
+        c.servoL(goal, 0.0, 0.0, 0.05, 0.2, 100.0)
+        self.assertAlmostEqual(r.getActualTCPPose()[0], start[0], delta=1e-6,
+                               msg="servoL returns at once, as ur_rtde's does")
+        self.world.pause_cost_s = 0.1
+        n0, t0 = len(got), rospy.get_time()
+        noop._pause(0.01)
+        self.assertAlmostEqual(rospy.get_time() - t0, 0.11, delta=self.world.plant.timestep)
+        moved = r.getActualTCPPose()[0] - start[0]
+        self.assertGreater(moved, 0.3 * 0.005, "the arm did not servo during the pause")
+        self.assertLess(moved, 0.005)
+        self.assertAlmostEqual(len(got) - n0, 0.11 * self.world.plant.sample_rate_hz, delta=1.5)
+
+    def test_a_measured_pause_charges_the_scripts_cpu_time(self):
+        import rospy
+        from ssc_twin.sil import noop
+        self.world.pause_cost_s = world_mod.MEASURED
+        rospy.sleep(0.01)
+        c0, x = time.process_time(), 0
+        while time.process_time() - c0 < 0.05:  # the script building its plot
+            x += 1
+        t0 = rospy.get_time()
+        noop._pause(0.01)
+        took = rospy.get_time() - t0
+        self.assertGreaterEqual(took, 0.06 - self.world.plant.timestep)
+        self.assertLess(took, 0.5)
+        self.assertEqual(len(self.world.pause_log), 1)
+        self.assertGreaterEqual(self.world.pause_log[0][0], 0.05)
+
 
 def run_sil(args, cwd):
     cmd = [SSC, "sil"] if SSC else [sys.executable, "-m", "ssc_twin.sil"]
@@ -200,6 +246,27 @@ class SilLoop(unittest.TestCase):
         p = run_sil(["--out", out, script], out)
         self.assertEqual(p.returncode, 3, p.stdout + p.stderr)
         self.assertIn("missing interface: module rtde_io", p.stdout)
+
+    def test_the_real_plot_draws_and_its_pause_costs_simulated_time(self):
+        out = tempfile.mkdtemp(prefix="ssc_sil_plots_")
+        script = os.path.join(out, "plots.py")
+        with open(script, "w") as f:
+            f.write("import rospy\nimport matplotlib.pyplot as plt\n"
+                    "fig, ax = plt.subplots(figsize=(8, 4))\nt0 = rospy.get_time()\n"
+                    "ax.annotate('', xytext=(0, 0), xy=(0.5, 0.5), arrowprops={})\n"
+                    "plt.pause(0.01)\nprint('paused %.4f' % (rospy.get_time() - t0))\n")
+        report = os.path.join(out, "r.json")
+        cmd = [SSC, "sil"] if SSC else [sys.executable, "-m", "ssc_twin.sil"]
+        env = dict(os.environ, SSC_PYTHON=sys.executable, MPLBACKEND="Agg")
+        p = subprocess.run(cmd + ["--plots", "--pause-cost", "0.2", "--report", report,
+                                  "--out", out, script], cwd=out, env=env, capture_output=True,
+                           text=True, timeout=300)
+        self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
+        self.assertIn("paused 0.210", p.stdout)
+        with open(report) as f:
+            pauses = json.load(f)["plt_pause"]
+        self.assertEqual(pauses["pauses"], 1)
+        self.assertGreater(pauses["draw_cpu_s_median"], 0.0, "the figure was not drawn")
 
     def test_a_method_missing_from_the_scripts_own_helper_is_named_as_its_bug(self):
         # The lab's HEAD: the script calls a helper method its own helper no longer defines.

@@ -71,8 +71,28 @@ class NoOpModule(types.ModuleType):
 
 def _pause(interval=0.0):
     from .world import current
-    w = current()
-    w.sleep(float(interval) + w.pause_cost_s)
+    current().pause(interval)
+
+
+def real_pause(pyplot):
+    """The real matplotlib's plt.pause with the figure drawn for real and its time simulated:
+    the redraw's CPU time is measured, then World.pause advances the simulation (the GUI event
+    loop's own wait would pass wall time, not simulated time)."""
+    import time
+    from matplotlib import _pylab_helpers
+
+    def pause(interval=0.0):
+        from .world import current
+        t0 = time.process_time()
+        manager = _pylab_helpers.Gcf.get_active()
+        if manager is not None:
+            canvas = manager.canvas
+            if canvas.figure.stale:
+                canvas.draw_idle()
+            pyplot.show(block=False)
+            canvas.flush_events()
+        current().pause(interval, time.process_time() - t0, t0)
+    return pause
 
 
 def _subplots(nrows=1, ncols=1, **kwargs):

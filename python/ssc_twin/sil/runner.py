@@ -45,10 +45,12 @@ def parse_args(argv):
     p.add_argument("--viewer", action="store_true", help="show the scene in MuJoCo's viewer")
     p.add_argument("--out", default="sil_out",
                    help="folder for the script's /tmp and home (default ./sil_out)")
-    p.add_argument("--pause-cost", type=float, default=0.11, metavar="S",
+    p.add_argument("--pause-cost", type=pause_cost, default=world_mod.DEFAULT_PAUSE_COST_S,
+                   metavar="S|measured",
                    help="simulated seconds a plt.pause costs beyond its argument: the figure "
-                        "redraw the lab's loop paid (default 0.11: the one-disk script's "
-                        "iteration then lasts the twin's 0.15 s control period)")
+                        "redraw the lab's loop paid (default %(default)s, measured: docs/sil.md), "
+                        "or 'measured': the script's own CPU time building and drawing its plot "
+                        "on this machine (with --plots: the real matplotlib draws)")
     p.add_argument("--max-sim", type=float, default=600.0, metavar="S",
                    help="shut the node down after S simulated seconds (default 600)")
     p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
@@ -64,6 +66,18 @@ def parse_args(argv):
     p.add_argument("script", help="the lab script (.py)")
     p.add_argument("args", nargs=argparse.REMAINDER, help="the script's own arguments")
     return p.parse_args(argv)
+
+
+def pause_cost(text):
+    if text == world_mod.MEASURED:
+        return text
+    try:
+        value = float(text)
+    except ValueError:
+        value = float("nan")
+    if not 0.0 <= value <= 10.0:
+        raise argparse.ArgumentTypeError("%r: seconds in [0, 10], or 'measured'" % text)
+    return value
 
 
 def apply_knobs(tree, knobs, script):
@@ -208,6 +222,9 @@ def run(opts):
                                   "netft_utils"):
             del sys.modules[name]
     noop.install(plots=opts.plots)
+    if opts.plots:
+        import matplotlib.pyplot as pyplot
+        pyplot.pause = noop.real_pause(pyplot)
     redirect = TmpRedirect(tmp_dir, out)
     home = os.environ.get("HOME")
     os.environ["HOME"] = out
@@ -260,11 +277,19 @@ def run(opts):
     summary = {"script": script, "status": status, "problem": problem,
                "sim_time_s": round(w.sim_time, 4), "wall_time_s": round(wall, 3),
                "logger_recordings": w.logger.started, "mat_files": mats,
-               "hit_time_limit": w.shutdown and w.sim_time >= opts.max_sim - 1e-9}
+               "hit_time_limit": w.shutdown and w.sim_time >= opts.max_sim - 1e-9,
+               "plt_pause": w.pause_summary()}
     print("ssc sil: %s: %s; %.2f s simulated in %.2f s wall%s" % (
         os.path.basename(script), "finished" if status == EXIT_OK else
         ("missing interface: " + problem if status == EXIT_MISSING else "failed: " + problem),
         w.sim_time, wall, " (stopped at --max-sim)" if summary["hit_time_limit"] else ""))
+    ps = summary["plt_pause"]
+    if ps:
+        print("ssc sil: plt.pause: %d calls; the script's CPU per call (median, this machine): "
+              "%.1f ms building the plot, %.1f ms drawing it; charged: %s" % (
+                  ps["pauses"], 1e3 * ps["build_cpu_s_median"], 1e3 * ps["draw_cpu_s_median"],
+                  "that CPU time" if ps["cost"] == world_mod.MEASURED
+                  else "the argument + %g s" % ps["cost"]))
     for m in mats:
         print("ssc sil: saved %s" % m)
     if opts.report:

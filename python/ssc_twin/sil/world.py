@@ -33,6 +33,12 @@ TWIN_SMOOTHING_S = 0.15
 SERVO_MAX_SPEED_M_S = 0.25
 MOVEL_SMOOTHING_S = 0.02
 REACHED_M = 0.1e-3       # moveL returns once the tool is this close and slow
+MEASURED = "measured"     # pause_cost_s: charge the script's measured CPU time instead
+# What one plt.pause of the lab's disk loop costs beyond its argument: building and drawing its
+# 8x4 in arrow plot with the real matplotlib, measured (`ssc sil --plots --pause-cost measured`,
+# TkAgg under Xvfb: median 12.7 ms building + 51.8 ms drawing CPU per iteration, the 10 ms
+# argument's timer running while it draws). docs/sil.md has the measurement and its spread.
+DEFAULT_PAUSE_COST_S = 0.055
 DEFAULT_TOPICS = ("/netft_data", "/SensorPacket", "/pwm", "/endEffectorPose", "/sync")
 
 _world = None
@@ -102,7 +108,7 @@ class World:
     """One simulated robot cell: the scene, its clock and the ROS graph around it."""
 
     def __init__(self, scene="disk_benchmark_gantry", seed=1, realtime=False, tmp_dir=None,
-                 pause_cost_s=0.11, verbose=False, disk_geom="disk"):
+                 pause_cost_s=DEFAULT_PAUSE_COST_S, verbose=False, disk_geom="disk"):
         import sys
         from .. import _core
         standins = os.path.join(os.path.dirname(os.path.abspath(__file__)), "standins")
@@ -111,7 +117,14 @@ class World:
         self.plant = _core.SilPlant(scene, seed)
         self.realtime = realtime
         self.verbose = verbose
+        # Seconds a plt.pause costs beyond its argument, or MEASURED: the script's own CPU time
+        # since its last call into the twin (the plot built and drawn) on this machine.
         self.pause_cost_s = pause_cost_s
+        self.pause_log = []                  # per plt.pause: (build CPU s, draw CPU s)
+        self._depth = 0                      # advance_to nesting (callbacks run inside it)
+        # When the script last returned from the twin, in process CPU seconds (the stand-ins run
+        # in the script's thread; thread_time costs ~0.1 ms a call in some sandboxes).
+        self._cpu_mark = _time.process_time()
         self.tmp_dir = tmp_dir or os.path.join(os.getcwd(), "sil_tmp")
         os.makedirs(self.tmp_dir, exist_ok=True)
         self.epoch_s = _time.time()          # ROS time at simulation time 0
@@ -164,19 +177,50 @@ class World:
 
     def advance_to(self, t_s):
         """Steps the simulation to t_s, delivering every message due on the way."""
-        while True:
-            if self.shutdown:
-                return
-            t_next = self._events[0][0] if self._events else t_s
-            t_stop = min(t_next, t_s)
-            self._step_plant(t_stop)
-            if self._events and self._events[0][0] <= t_s + 1e-12:
-                t, _, fn, period = heapq.heappop(self._events)
-                fn()
-                if period:
-                    self._push(t + period, fn, period)
-            else:
-                return
+        self._depth += 1
+        try:
+            while True:
+                if self.shutdown:
+                    return
+                t_next = self._events[0][0] if self._events else t_s
+                t_stop = min(t_next, t_s)
+                self._step_plant(t_stop)
+                if self._events and self._events[0][0] <= t_s + 1e-12:
+                    t, _, fn, period = heapq.heappop(self._events)
+                    fn()
+                    if period:
+                        self._push(t + period, fn, period)
+                else:
+                    return
+        finally:
+            self._depth -= 1
+            if self._depth == 0:
+                self._cpu_mark = _time.process_time()
+
+    def pause(self, interval_s, draw_cpu_s=0.0, draw_start_cpu_s=None):
+        """plt.pause: the figure redraw, then the GUI event loop for the interval; meanwhile the
+        arm keeps servoing to its last target and the packets keep coming (the robot and the ROS
+        nodes do not wait for the plot). Costs interval + pause_cost_s of simulated time, or with
+        pause_cost_s = MEASURED the script's CPU time since its last twin call (building the
+        plot) plus the redraw or the interval, whichever is longer (the interval's timer runs
+        while the figure draws)."""
+        start = _time.process_time() - draw_cpu_s if draw_start_cpu_s is None else draw_start_cpu_s
+        build_cpu_s = max(0.0, start - self._cpu_mark)
+        self.pause_log.append((build_cpu_s, draw_cpu_s))
+        if self.pause_cost_s == MEASURED:
+            self.sleep(build_cpu_s + max(float(interval_s), draw_cpu_s))
+        else:
+            self.sleep(float(interval_s) + self.pause_cost_s)
+
+    def pause_summary(self):
+        """Median CPU seconds per plt.pause: the script's work before it, the redraw, and the
+        simulated cost charged (None without a pause)."""
+        if not self.pause_log:
+            return None
+        a = np.asarray(self.pause_log)
+        return {"pauses": int(len(a)), "build_cpu_s_median": float(np.median(a[:, 0])),
+                "draw_cpu_s_median": float(np.median(a[:, 1])),
+                "cost": "measured" if self.pause_cost_s == MEASURED else self.pause_cost_s}
 
     def _step_plant(self, t_s):
         if self.velocity is not None:
