@@ -8,7 +8,7 @@
 // mjData and the controller's FollowStart. Later trials with the same approach start from a copy
 // of that mjData, with the pressure sensor's noise re-derived for their own seed (the noise is
 // counter-based: plugin/pneumatics/sensor_chain.h), and follow from there. Their rows are those
-// of a run from scratch to the bit (tests/shared_approach_test.sh compares whole sweeps).
+// of a run from scratch to the bit (tests/runtime/shared_approach_test.sh compares whole sweeps).
 //
 // A trial runs from scratch instead (counted as `unshared`) when its model has a plugin other
 // than the one pressure sensor, or a MuJoCo callback other than mjcb_control is installed (either

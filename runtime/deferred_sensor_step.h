@@ -10,7 +10,7 @@
 // asked for, mjData is bit for bit what mj_step leaves; without, only what those sensors and
 // mj_rnePostConstraint write differs (their sensordata and cacc, cfrc_int, cfrc_ext keep the
 // previous evaluation's values; flg_rnepost is 0): nothing in the physics reads them.
-// (tests/trial_test.cc runs a trial both ways and compares every row and the final state.)
+// (tests/runtime/trial_test.cc runs a trial both ways and compares every row and the final state.)
 #ifndef SSC_RUNTIME_DEFERRED_SENSOR_STEP_H_
 #define SSC_RUNTIME_DEFERRED_SENSOR_STEP_H_
 

@@ -25,7 +25,7 @@ SKIRT = {
     "thickness_mm": (1.0, "mm", "0.6-1.5: a cast lip that holds its shape"),
     "young_mpa": (1.0, "MPa", "0.6-1.5: Shore 20A-30A silicone"),
     # MuJoCo's 2-D shell bends this much more than a Kirchhoff plate of the same E, t and nu
-    # (a clamped strip under uniform load, mesh-converged; tests/flex_lip_test.py measures it):
+    # (a clamped strip under uniform load, mesh-converged; tests/plugin/flex_lip_test.py measures it):
     # the MJCF modulus is the material's times this, so the skirt bends as the silicone would.
     "shell_bending_correction": (1.70, "", "measured: MuJoCo 4.0.0 shell vs plate theory"),
     "poisson": (0.45, "", "0.45-0.49: nearly incompressible rubber (0.45 keeps shells unlocked)"),

@@ -2,7 +2,7 @@
 # Builds the project and its test suite with AddressSanitizer + UndefinedBehaviorSanitizer in a
 # separate build directory and runs the C++ tests there (the Python tests load the plugin into an
 # uninstrumented interpreter and the mpirun tests start other processes: both are left out,
-# except tests/bad_input_test.py, which only runs the instrumented ssc in subprocesses; so are
+# except tests/apps/bad_input_test.py, which only runs the instrumented ssc in subprocesses; so are
 # the install tests, see below).
 #   usage: tools/sanitize.sh [BUILD_DIR] [extra ctest args]     (default: build-asan)
 # Any sanitizer report fails the test that triggered it (halt_on_error, no recovery).

@@ -6,7 +6,7 @@ import sys
 import tempfile
 import unittest
 
-BIN = os.environ.get("SSC_BIN_DIR", os.path.join(os.path.dirname(__file__), "..", "build", "bin"))
+BIN = os.environ.get("SSC_BIN_DIR", os.path.join(os.path.dirname(__file__), "..", "..", "build", "bin"))
 SSC = os.path.join(BIN, "ssc")
 
 

@@ -1,5 +1,6 @@
-// The study job runner on threads (MPI runs are tested by tests/mpi_sweep_test.sh): longest-
-// first handout, every job delivered exactly once in handout order, resume by skip, interruption.
+// The study job runner on threads (MPI runs are tested by tests/studies/mpi_sweep_test.sh):
+// longest- first handout, every job delivered exactly once in handout order, resume by skip,
+// interruption.
 #include "studies/job_runner.h"
 
 #include <gtest/gtest.h>

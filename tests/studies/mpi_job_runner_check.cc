@@ -1,5 +1,5 @@
-// Run by tests/mpi_sweep_test.sh under mpirun: the job runner across ranks with results on every
-// rank (what a calibration objective evaluated in lock-step on all ranks needs). Exit 0 when
+// Run by tests/studies/mpi_sweep_test.sh under mpirun: the job runner across ranks with results on
+// every rank (what a calibration objective evaluated in lock-step on all ranks needs). Exit 0 when
 // every rank holds every job's result; 1 otherwise.
 #include <cstdio>
 #include <string>

@@ -17,9 +17,9 @@ import tempfile
 import time
 import unittest
 
-BIN = os.environ.get("SSC_BIN_DIR", os.path.join(os.path.dirname(__file__), "..", "build", "bin"))
+BIN = os.environ.get("SSC_BIN_DIR", os.path.join(os.path.dirname(__file__), "..", "..", "build", "bin"))
 SRC = os.path.abspath(os.environ.get("SSC_SOURCE_DIR",
-                                     os.path.join(os.path.dirname(__file__), "..")))
+                                     os.path.join(os.path.dirname(__file__), "..", "..")))
 SSC = os.path.abspath(os.path.join(BIN, "ssc"))
 # Short trials: the follow phase is cut at 1 s simulated (rows still whole trials).
 SWEEP = ["sweep", "--pref", "100", "--beta", "2", "--step", "7.5", "--timeout", "1",

@@ -10,10 +10,10 @@ import unittest
 import mujoco
 import numpy as np
 
-ROOT = os.environ.get("SSC_SOURCE_DIR", os.path.join(os.path.dirname(__file__), ".."))
+ROOT = os.environ.get("SSC_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 PLUGIN = os.environ["SSC_PLUGIN_LIB"]
 TOOL_Z_M = 0.146  # flange to lip plane (geometry/dimensions.h)
-SEALED_PA = 25644.0  # a sealed cup on a plate (tests/flow_network_test.cc)
+SEALED_PA = 25644.0  # a sealed cup on a plate (tests/plugin/pneumatics/flow_network_test.cc)
 
 
 def make_flex_tool():

@@ -1,6 +1,7 @@
-// The twin against robot logs written exactly as the lab records them (tests/lab_log_generator):
-// every form must open unchanged, land the disk where the lab had it, and replay must recover
-// what was changed; a replay that misses every object is an error, never a report.
+// The twin against robot logs written exactly as the lab records them
+// (tests/compare/lab_log_generator): every form must open unchanged, land the disk where the lab
+// had it, and replay must recover what was changed; a replay that misses every object is an error,
+// never a report.
 #include <gtest/gtest.h>
 #include <unistd.h>
 

@@ -11,8 +11,8 @@ import tempfile
 import time
 import unittest
 
-BIN = os.environ.get("SSC_BIN_DIR", os.path.join(os.path.dirname(__file__), "..", "build", "bin"))
-SRC = os.path.abspath(os.environ.get("SSC_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..")))
+BIN = os.environ.get("SSC_BIN_DIR", os.path.join(os.path.dirname(__file__), "..", "..", "build", "bin"))
+SRC = os.path.abspath(os.environ.get("SSC_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", "..")))
 SSC = os.path.abspath(os.path.join(BIN, "ssc"))
 TMP = tempfile.mkdtemp(prefix="ssc_bad_input_")
 A_FILE = os.path.join(TMP, "a_file")

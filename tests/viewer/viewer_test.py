@@ -13,7 +13,7 @@ import unittest
 import matplotlib.image as mpimg
 import numpy as np
 
-BIN = os.environ.get("SSC_BIN_DIR", os.path.join(os.path.dirname(__file__), "..", "build", "bin"))
+BIN = os.environ.get("SSC_BIN_DIR", os.path.join(os.path.dirname(__file__), "..", "..", "build", "bin"))
 SSC = os.path.join(BIN, "ssc")
 XVFB = shutil.which("xvfb-run")
 TOOL_RE = re.compile(r"tool at (\S+) (\S+) (\S+) m")

@@ -5,7 +5,7 @@ import unittest
 
 import mujoco
 
-ROOT = os.environ.get("SSC_SOURCE_DIR", os.path.join(os.path.dirname(__file__), ".."))
+ROOT = os.environ.get("SSC_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 PLUGIN = os.environ["SSC_PLUGIN_LIB"]
 
 
@@ -32,7 +32,7 @@ class PythonBindingsTest(unittest.TestCase):
         def on_plate(m, d):
             d.mocap_pos[0] = [-0.03, 0.0, 0.010 - 0.001 + 0.146]
         p = self.pressures("probe_edge.xml", 200, on_plate)
-        # The sealed cup's reading (tests/flow_network_test.cc, SealedCupOnAPlate: the chamber
+        # The sealed cup's reading (tests/plugin/pneumatics/flow_network_test.cc, SealedCupOnAPlate: the chamber
         # vacuum of four roughness leaks, 25644 Pa; that air enters as a sheet, so no tap recovery)
         # within the noise band of the filtered value (5 sigma of a 7-sample mean of 6 Pa: 11.3 Pa).
         self.assertTrue(all(abs(p - 25644) < 11.3), p)

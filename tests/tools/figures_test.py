@@ -19,7 +19,7 @@ matplotlib.use("Agg")
 import matplotlib.figure  # noqa: E402
 import numpy as np  # noqa: E402
 
-ROOT = os.environ.get("SSC_SOURCE_DIR", os.path.join(os.path.dirname(__file__), ".."))
+ROOT = os.environ.get("SSC_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 TOOLS = os.path.join(ROOT, "tools")
 
 
