@@ -439,8 +439,17 @@ void ContourTrial::RunIteration(double t, const Vec3& tool) {
   // The law's reading of the pressures (P_mean, the differentials, c_f) for the log and overlays.
   last_step_ = ComputeContourStep(p, config_.law);
   if (external_policy_) {  // the caller's step arrives through ApplyStep
+    if (controller_in_loop_) {
+      controller_command_ = controller_->Step(InputAt(t, tool, p));
+      if (const std::string e = CheckControllerCommand(controller_command_); !e.empty()) {
+        TakeCommand(controller_command_, t, tool);  // ends the trial with controller_fault
+        Log(true);
+        return;
+      }
+    }
     awaiting_step_ = true;
     iteration_tool_ = tool;
+    iteration_t_s_ = t;
   } else if (!TakeCommand(controller_->Step(InputAt(t, tool, p)), t, tool)) {
     Log(true);
     return;
@@ -534,6 +543,12 @@ std::array<double, 2> ContourTrial::LandedStepWorld(std::array<double, 2> step) 
 void ContourTrial::ApplyStep(const std::array<double, 2>& step_m) {
   if (!awaiting_step_) return;
   awaiting_step_ = false;
+  if (controller_in_loop_) {
+    ControllerCommand command = controller_command_;
+    command.step_m = {command.step_m[0] + step_m[0], command.step_m[1] + step_m[1]};
+    TakeCommand(command, iteration_t_s_, iteration_tool_);
+    return;
+  }
   last_step_.step_m = step_m;
   last_step_world_ = LandedStepWorld(step_m);
   servo_->SetTarget({iteration_tool_[0] + last_step_world_[0],

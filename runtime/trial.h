@@ -168,11 +168,19 @@ class ContourTrial : public ControlCallback {
   // control iteration reads the sensor and waits: RunToNextIteration returns, the caller
   // decides from HostPressures() and calls ApplyStep, and the servo takes that step
   // (from the next physics step on) instead of the law's.
-  void SetExternalPolicy(bool on) { external_policy_ = on; }
+  // With `controller_in_loop`, the trial's controller still decides at each iteration and the
+  // caller's step is added to its command (a residual policy; a zero step runs the controller).
+  void SetExternalPolicy(bool on, bool controller_in_loop = false) {
+    external_policy_ = on;
+    controller_in_loop_ = on && controller_in_loop;
+  }
+  // The controller's command at the waiting iteration (controller in the loop).
+  const ControllerCommand& controller_command() const { return controller_command_; }
   // Steps until the next control iteration has read the sensor (external policy) or run (the
   // law), or the trial ends, or max_sim_s; false when the trial ended.
   bool RunToNextIteration(double max_sim_s = 1e9);
-  // The planar step for the iteration that is waiting (tool frame, m); the height is held.
+  // The planar step for the iteration that is waiting (tool frame, m); the height is held (or,
+  // with the controller in the loop, the controller's height and lift, its step plus this one).
   void ApplyStep(const std::array<double, 2>& step_m);
 
   // The shared approach (runtime/approach_cache.h). Steps through the approach and the move;
@@ -253,11 +261,13 @@ class ContourTrial : public ControlCallback {
   std::array<double, 4> host_p_pa_{};
   TrialResult result_;
   std::unique_ptr<ScopedControl> registration_;
-  bool external_policy_ = false, awaiting_step_ = false;
-  bool defer_acc_sensors_ = false;  // SetResultOnly(true) and the model allows it
-  double run_until_s_ = 1e300;      // while Run runs: its max_sim_s
-  Vec3 iteration_tool_{};           // measured tool position at the waiting iteration
-  Point2 goal_start_{};             // the cup where the goal tracker started following
+  bool external_policy_ = false, awaiting_step_ = false, controller_in_loop_ = false;
+  ControllerCommand controller_command_;  // the controller's, at the waiting iteration
+  double iteration_t_s_ = 0;              // host clock of the waiting iteration
+  bool defer_acc_sensors_ = false;        // SetResultOnly(true) and the model allows it
+  double run_until_s_ = 1e300;            // while Run runs: its max_sim_s
+  Vec3 iteration_tool_{};                 // measured tool position at the waiting iteration
+  Point2 goal_start_{};                   // the cup where the goal tracker started following
 };
 
 // Loads nothing: runs one trial on an existing model with its own mjData.

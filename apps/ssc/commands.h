@@ -16,6 +16,7 @@ int RunCompareCommand(int argc, char** argv);
 int RunStabilityCommand(int argc, char** argv);
 int RunCalibrateCommand(int argc, char** argv);
 int RunChartsCommand(int argc, char** argv);
+int RunTuneCommand(int argc, char** argv);
 int RunSilCommand(int argc, char** argv);  // execs PYTHON -m ssc_twin.sil
 
 }  // namespace ssc

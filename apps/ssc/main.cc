@@ -42,6 +42,8 @@ const Command kCommands[] = {
      "fit the pneumatic model to the published disk results; residuals + parameter file"},
     {"charts", ssc::RunChartsCommand,
      "speed-accuracy charts: the cup (sweep over dL) and the simulator (pressure error vs cost)"},
+    {"tune", ssc::RunTuneCommand,
+     "search a controller's parameters for speed at a success rate (NLopt); Pareto chart"},
     {"sil", ssc::RunSilCommand,
      "run a lab script (ROS 1 + ur_rtde) against the twin, unchanged (python -m ssc_twin.sil)"},
     {"bench", ssc::RunBench, "step cost with/without the pressure sensor (runs ssc_bench)"},

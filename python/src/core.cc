@@ -496,10 +496,17 @@ class SteppedTrial {
  public:
   SteppedTrial(const std::string& scene, double pref, double beta, double step_mm,
                std::uint64_t seed, const std::string& object, double timeout_s,
-               const std::string& effects) {
+               const std::string& effects, const nb::object& controller,
+               const std::string& controller_params) {
     scene_ = scene;
     config_ = MakeConfig(pref, beta, step_mm, seed, object, effects, &scene_);
     SetTimeout(timeout_s, &config_);
+    if (!controller.is_none()) {
+      config_.controller = ChoiceFrom(controller, controller_params);
+      if (const std::string e = config_.controller.Validate(); !e.empty()) Invalid(e);
+    } else if (!controller_params.empty()) {
+      Invalid("controller_params apply to a registered controller; no controller given");
+    }
     // The mujoco package owns the model and the data (MjModel._from_model_ptr takes ownership
     // of a compiled mjModel; both sides use the same libmujoco), so Python sees the live
     // MjModel/MjData the trial steps: renderers, viewers and mujoco functions work on them.
@@ -519,7 +526,10 @@ class SteppedTrial {
     trial_->Reset();
   }
   // The policy: the contour law inside the trial, or Python (apply_step at each iteration).
-  void SetExternalPolicy(bool on) { trial_->SetExternalPolicy(on); }
+  void SetExternalPolicy(bool on, bool controller_in_loop) {
+    trial_->SetExternalPolicy(on, controller_in_loop);
+  }
+  std::array<double, 2> ControllerStep() const { return trial_->controller_command().step_m; }
   bool RunToNextIteration() {
     nb::gil_scoped_release release;
     return trial_->RunToNextIteration();
@@ -1191,16 +1201,31 @@ NB_MODULE(_core, m) {
       "step_mm"_a = law.step_mm, "seed"_a = 1, "effects"_a = "default",
       "Runs a trial and writes it as a lab recording (ssc trial --robot-log).");
 
+  m.def(
+      "check_controller",
+      [](const nb::object& controller, const std::string& controller_params) {
+        const ControllerChoice choice = ChoiceFrom(controller, controller_params);
+        if (const std::string e = choice.Validate(); !e.empty()) Invalid(e);
+      },
+      "controller"_a, "controller_params"_a = "",
+      "Raises ValueError when the controller (a registered name with its key=value parameters, "
+      "or a callable) would be refused.");
+
   nb::class_<SteppedTrial>(m, "SteppedTrial",
                            "A trial stepped one control iteration at a time from Python.")
       .def(nb::init<const std::string&, double, double, double, std::uint64_t, const std::string&,
-                    double, const std::string&>(),
+                    double, const std::string&, const nb::object&, const std::string&>(),
            "scene"_a = "disk_benchmark_gantry", "pref"_a = law.p_ref_pa, "beta"_a = law.beta,
            "step_mm"_a = law.step_mm, "seed"_a = 1, "object"_a = "", "timeout_s"_a = 0.0,
-           "effects"_a = "default")
+           "effects"_a = "default", "controller"_a = nb::none(), "controller_params"_a = "")
       .def("reset", &SteppedTrial::Reset, "seed"_a)
       .def("set_external_policy", &SteppedTrial::SetExternalPolicy, "on"_a,
-           "On: each following iteration waits for apply_step instead of taking the law's step.")
+           "controller_in_loop"_a = false,
+           "On: each following iteration waits for apply_step instead of taking the law's step. "
+           "controller_in_loop: the trial's controller still decides and apply_step's step is "
+           "added to its command.")
+      .def("controller_step", &SteppedTrial::ControllerStep,
+           "The controller's planar step at the waiting iteration (controller in the loop), m.")
       .def("run_to_next_iteration", &SteppedTrial::RunToNextIteration,
            "Steps until the next control iteration read the sensor (or the trial ended: False).")
       .def("apply_step", &SteppedTrial::ApplyStep, "step_m"_a,

@@ -14,6 +14,7 @@ on the test objects (disk_dNN, hole_dNN, corner_aNNN, volute, strips, fillet).
     env = gym.make("ssc_twin/EdgeFollowing-v0", scene="disk_benchmark", effects="off",
                    render_mode="rgb_array")                      # the UR-10 arm, the ideal loop
     env.unwrapped.model, env.unwrapped.data                      # mujoco.MjModel / MjData
+    env = gym.make("ssc_twin/EdgeFollowing-v0", controller="fast")  # a residual on a controller
 """
 import math
 import os
@@ -46,7 +47,11 @@ LIP_GEOM_GROUP = 4  # models/ssc_tool.xml: the lip segments
 class EdgeFollowingEnv(gym.Env):
     """Observation: the four filtered chamber pressures (Pa; P1 SE, P2 NE, P3 NW, P4 SW in the
     tool frame), then with ``include_ft`` the F/T force (N) and torque (N m).
-    Action: a planar step in the tool frame, in [-1, 1]^2 times ``max_step_mm``.
+    Action: a planar step in the tool frame, in [-1, 1]^2 times ``max_step_mm``. With
+    ``controller`` (a registered name, with ``controller_params`` as ``--controller-param``, or a
+    Python callable or class, docs/controllers.md) the controller runs in the loop and the action
+    is added to its command: a zero action runs the controller as it is
+    (``info["controller_step_m"]`` holds its step).
     Reward: progress along the edge in units of ``max_step_mm`` per step (negative when going
     backwards), ``terminal_reward`` on success, ``-failure_penalty`` on failure mode I or II or a
     lost edge.
@@ -59,7 +64,7 @@ class EdgeFollowingEnv(gym.Env):
     def __init__(self, objects=None, include_ft=False, max_step_mm=10.0, pref=_LAW["pref"],
                  beta=_LAW["beta"], failure_penalty=10.0, terminal_reward=10.0, timeout_s=None,
                  effects="default", scene=DEFAULT_SCENE, render_mode=None, width=640, height=480,
-                 camera="cup"):
+                 camera="cup", controller=None, controller_params=""):
         super().__init__()
         # The scene: a name under scenes/ ("disk_benchmark_gantry", the cup on a gantry;
         # "disk_benchmark", the UR-10 arm; "disk_benchmark_light", "disk_benchmark_fast";
@@ -98,6 +103,11 @@ class EdgeFollowingEnv(gym.Env):
         # The robot effects (docs/fidelity.md): "default" (the fitted set: each step lands off
         # target), "off" (the ideal loop) or "key=value,...".
         self.effects = str(effects)
+        if controller is None and controller_params:
+            raise ValueError("controller_params apply to a registered controller; none given")
+        self.controller, self.controller_params = controller, str(controller_params)
+        if controller is not None:  # refused here, not at the first reset()
+            _core.check_controller(controller, self.controller_params)
         n = 10 if self.include_ft else 4
         low = np.full(n, PRESSURE_LOW_PA, dtype=np.float32)
         high = np.full(n, PRESSURE_HIGH_PA, dtype=np.float32)
@@ -115,8 +125,10 @@ class EdgeFollowingEnv(gym.Env):
         if name not in self._trials:
             t = _core.SteppedTrial(scene=self.scene, pref=self.pref, beta=self.beta,
                                    step_mm=_LAW["step_mm"], seed=1, object=name or "",
-                                   timeout_s=self.timeout_s, effects=self.effects)
-            t.set_external_policy(True)
+                                   timeout_s=self.timeout_s, effects=self.effects,
+                                   controller=self.controller,
+                                   controller_params=self.controller_params)
+            t.set_external_policy(True, controller_in_loop=self.controller is not None)
             self._trials[name] = t
         return self._trials[name]
 
@@ -145,7 +157,9 @@ class EdgeFollowingEnv(gym.Env):
                 "phase": self._trial.phase,
                 "time_s": self._trial.time, "progress_mm": self._progress_mm,
                 "tool_xy_m": (x, y), "contour_distance_mm": 1e3 * self._trial.contour_distance_m(x, y),
-                "outcome": self._trial.result()["outcome"]}
+                "outcome": self._trial.result()["outcome"],
+                "controller_step_m": (tuple(self._trial.controller_step())
+                                      if self.controller is not None else (0.0, 0.0))}
 
     # -- Gymnasium API ---------------------------------------------------------------------
     def reset(self, *, seed=None, options=None):
@@ -176,7 +190,7 @@ class EdgeFollowingEnv(gym.Env):
         reward = (progress - self._progress_mm) / self.max_step_mm
         self._progress_mm = progress
         outcome = self._trial.result()["outcome"]
-        terminated = outcome == "success" or outcome in FAILURES or outcome == "unstable"
+        terminated = outcome in ("success", "unstable", "controller_fault") or outcome in FAILURES
         truncated = outcome == "timeout"
         if outcome == "success":
             reward += self.terminal_reward

@@ -335,6 +335,34 @@ class EdgeFollowingTest(unittest.TestCase):
             self.assertNotEqual(info["outcome"], "success", info)
             self.assertLess(total, 5)
 
+    def test_controller_runs_in_the_loop(self):
+        zero = lambda obs: np.zeros(2, dtype=np.float32)
+        env = self.gym.make("ssc_twin/EdgeFollowing-v0", controller="published", effects="off")
+        info, total, steps = self.episode(env, zero, seed=1)
+        self.assertEqual(info["outcome"], "success", info)  # a zero action: the law as it is
+        self.assertGreater(info["progress_mm"], 200)
+        self.assertNotEqual(info["controller_step_m"], (0.0, 0.0))
+        # The action adds to the controller's step: pushing off the object every step loses it.
+        outward = lambda obs: np.array([0.0, -1.0], dtype=np.float32)
+        info, _, _ = self.episode(env, outward, seed=1)
+        self.assertIn(info["outcome"], ("failure_I", "lost_edge"), info)
+
+        class Broken:  # a Python controller: one instance per episode
+            def __call__(self, reading):
+                return (float("nan"), 0.0)
+        env = self.gym.make("ssc_twin/EdgeFollowing-v0", controller=Broken)
+        obs, info = env.reset(seed=1)
+        obs, reward, terminated, truncated, info = env.step(zero(obs))
+        self.assertTrue(terminated)
+        self.assertEqual(info["outcome"], "controller_fault", info)
+        with self.assertRaisesRegex(ValueError, "step_max_mm"):
+            self.gym.make("ssc_twin/EdgeFollowing-v0", controller="fast",
+                          controller_params="step_max_mm=99")
+        with self.assertRaisesRegex(ValueError, "controller"):
+            self.gym.make("ssc_twin/EdgeFollowing-v0", controller="no_such")
+        with self.assertRaisesRegex(ValueError, "controller_params"):
+            self.gym.make("ssc_twin/EdgeFollowing-v0", controller_params="gain=1")
+
     def test_scene_option_runs_the_named_scene(self):
         import mujoco
         arm = self.gym.make("ssc_twin/EdgeFollowing-v0", scene="disk_benchmark", effects="off")

@@ -171,6 +171,19 @@ class FigureScriptsTest(unittest.TestCase):
         png = self.out("speed_accuracy.png")
         self.assertEqual(self.render("plot_speed_accuracy.py", [cup, sim, png]), [])
 
+    def test_tune(self):
+        cols = ["label", "controller", "step_max_mm", "trials", "successes", "success_rate",
+                "success_lo", "success_hi", "speed_mm_s", "speed_ci_mm_s", "score", "pareto"]
+        rows = [["published", "published", "", 6, 5, 0.83, 0.44, 0.97, 30.6, 0.4, 15, 0]]
+        for k in range(12):
+            ok = 6 - k // 2
+            rows.append([f"eval {k + 1}", "fast", 7 + k, 6, ok, ok / 6, max(0, ok / 6 - 0.3),
+                         min(1, ok / 6 + 0.2), 35 + 1.5 * k, 0.8, 35 - 20 * k, int(k % 3 == 0)])
+        table = write_csv(self.out("tune.csv"), cols, rows)
+        png = self.out("pareto.png")
+        self.assertEqual(self.render("plot_tune.py", [table, png, "0.9"]), [])
+        self.assertTrue(os.path.getsize(png) > 0)
+
     def test_validation_has_colour_bars(self):
         rows = []
         for step in (5.0,):
