@@ -29,6 +29,13 @@ double AdaptiveStepMm(const FastFollowingParams& p, double strength_pa, double t
   return step;
 }
 
+double RampStepMm(const FastFollowingParams& p, std::uint64_t iteration) {
+  const double lo = std::min(p.step_min_mm, p.step_max_mm);
+  if (!(p.ramp_iterations > 0) || static_cast<double>(iteration) >= p.ramp_iterations)
+    return p.step_max_mm;
+  return lo + (p.step_max_mm - lo) * static_cast<double>(iteration) / p.ramp_iterations;
+}
+
 double SignedAngle(const std::array<double, 2>& a, const std::array<double, 2>& b) {
   const double cross = a[0] * b[1] - a[1] * b[0], dot = a[0] * b[0] + a[1] * b[1];
   if (cross == 0 && dot == 0) return 0;
@@ -58,8 +65,11 @@ ControllerCommand FastFollowingController::Step(const ControllerInput& in) {
     }
   }
   const double strength = std::hypot(law.dpx_pa, law.dpy_pa);
-  const double step_mm =
-      AdaptiveStepMm(p_, strength, turn_per_m_ * p_.step_max_mm * 1e-3, period_ratio);
+  double step_mm = AdaptiveStepMm(p_, strength, turn_per_m_ * p_.step_max_mm * 1e-3, period_ratio);
+  // Speeding up over the first iterations, while the turn estimate settles and the arm starts.
+  if (p_.ramp_iterations > 0 && static_cast<double>(in.iteration) < p_.ramp_iterations) {
+    step_mm = std::min(step_mm, RampStepMm(p_, in.iteration));
+  }
   // The arm's lag behind the last target along the edge (tool frame): made up, so the target,
   // not the lagging tool, advances by the step. Across the edge the step starts from the
   // measured tool, as the law's does.
@@ -73,9 +83,9 @@ ControllerCommand FastFollowingController::Step(const ControllerInput& in) {
                              2 * p_.step_max_mm * 1e-3);
   }
   const double along_m = step_mm * 1e-3 / cf_norm + p_.lag_gain * lag_along_m;
-  // Aimed along the chord of the turning edge, from the tool to the middle of the next step.
-  const std::array<double, 2> aim = Rotated(
-      law.along_edge, p_.lead * turn_per_m_ * (p_.lag_gain * lag_along_m + 0.5 * step_mm * 1e-3));
+  // Aimed along the chord of the turning edge from the tool to the target: a chord of arc
+  // length L leaves the tangent at half the turn over L.
+  const std::array<double, 2> aim = Rotated(law.along_edge, p_.lead * turn_per_m_ * 0.5 * along_m);
   // Across the edge, the law's move at its own dL, whatever the step along.
   const double across_m = p_.lateral_gain * law_.step_mm * 1e-3 * law.cf / cf_norm;
   c.step_m = {along_m * aim[0] + across_m * law.correction[0],
@@ -112,8 +122,10 @@ ControllerType FastFollowingControllerType() {
         &P::lag_gain},
        {"lateral_gain", "1", 0, 3, "the move across the edge over the law's at its dL",
         &P::lateral_gain},
-       {"timing", "1", 0, 1, "1: scale the step by the measured loop period; 0: fixed",
-        &P::timing}});
+       {"timing", "1", 0, 1, "1: scale the step by the measured loop period; 0: fixed", &P::timing},
+       {"ramp_iterations", "1", 0, 50,
+        "iterations over which the step grows from step_min_mm to step_max_mm at the start",
+        &P::ramp_iterations}});
 }
 
 }  // namespace ssc

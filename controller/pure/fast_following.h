@@ -10,8 +10,9 @@
 // The step grows to step_max_mm where the edge is straight and the signal strong, and shrinks
 // toward step_min_mm where it turns (a turn of turn_slow_deg per step halves it) or the signal
 // weakens (below strength_pa); it scales with the measured period (the same speed when the loop
-// runs late). The direction is the law's turned by `lead` times the edge's predicted turn
-// between the cup and the middle of the next step (the chord of the turning edge). The arm
+// runs late). The direction is the law's turned by `lead` times half the edge's predicted turn
+// between the cup and the target (the chord of the turning edge). The first ramp_iterations
+// grow the step from step_min_mm (the turn estimate settles, the arm starts). The arm
 // lags its target (the servo's smoothing) and misses it (the landing error); the step adds
 // lag_gain times what separates the measured tool from the previous target, so the target, not
 // the lagging tool, advances by the step.
@@ -19,6 +20,7 @@
 #define SSC_CONTROLLER_PURE_FAST_FOLLOWING_H_
 
 #include <array>
+#include <cstdint>
 
 #include "controller/pure/contour_law.h"
 #include "controller/pure/controller_registry.h"
@@ -26,15 +28,16 @@
 namespace ssc {
 
 struct FastFollowingParams {
-  double step_max_mm = 7.5;   // step on a straight edge with a strong differential
-  double step_min_mm = 5.0;   // step where the edge turns hard or the differential is weak
-  double strength_pa = 20.0;  // differential magnitude for the full step (0: always full)
-  double turn_slow_deg = 90;  // turn of the edge over one step that halves the step
-  double turn_filter = 0.5;   // weight of the newest turn measurement
-  double lead = 0.0;          // share of the edge's predicted turn the aim leads by
-  double lag_gain = 1.0;      // share of the arm's lag behind its target added to the step
-  double lateral_gain = 0.6;  // the move across the edge over the law's at its dL
-  double timing = 1.0;        // 1: scale the step by the measured period; 0: fixed
+  double step_max_mm = 7.5;    // step on a straight edge with a strong differential
+  double step_min_mm = 5.0;    // step where the edge turns hard or the differential is weak
+  double strength_pa = 20.0;   // differential magnitude for the full step (0: always full)
+  double turn_slow_deg = 90;   // turn of the edge over one step that halves the step
+  double turn_filter = 0.5;    // weight of the newest turn measurement
+  double lead = 0.0;           // share of the edge's predicted turn the aim leads by
+  double lag_gain = 1.0;       // share of the arm's lag behind its target added to the step
+  double lateral_gain = 0.6;   // the move across the edge over the law's at its dL
+  double timing = 1.0;         // 1: scale the step by the measured period; 0: fixed
+  double ramp_iterations = 0;  // the step grows from step_min_mm over this many iterations
 };
 
 // The step length, mm: step_max_mm x min(1, strength / strength_pa) / (1 + turn_per_step /
@@ -43,6 +46,10 @@ struct FastFollowingParams {
 // step_max_mm.
 double AdaptiveStepMm(const FastFollowingParams& p, double strength_pa, double turn_per_step_rad,
                       double period_ratio);
+
+// The largest step at iteration `iteration` of following while ramping up: from step_min_mm at
+// the first iteration linearly to step_max_mm at ramp_iterations (step_max_mm from then on).
+double RampStepMm(const FastFollowingParams& p, std::uint64_t iteration);
 
 // The signed angle from a to b (2D vectors), rad in (-pi, pi]; 0 when either is zero.
 double SignedAngle(const std::array<double, 2>& a, const std::array<double, 2>& b);

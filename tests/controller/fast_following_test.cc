@@ -133,6 +133,50 @@ TEST(FastFollowingTest, AnEdgeThatTurnsIsMeasuredAndSlowsTheStep) {
   EXPECT_NEAR(c.last_step_mm(), 8 / (1 + 0.32 * 180 / kPi / 10), 1e-9);
 }
 
+TEST(RampStepTest, GrowsFromTheShortestToTheLongestStepOverTheRamp) {
+  FastFollowingParams p;
+  p.step_min_mm = 4;
+  p.step_max_mm = 10;
+  p.ramp_iterations = 3;
+  EXPECT_DOUBLE_EQ(RampStepMm(p, 0), 4);
+  EXPECT_DOUBLE_EQ(RampStepMm(p, 1), 6);
+  EXPECT_DOUBLE_EQ(RampStepMm(p, 2), 8);
+  EXPECT_DOUBLE_EQ(RampStepMm(p, 3), 10);
+  EXPECT_DOUBLE_EQ(RampStepMm(p, 30), 10);
+  p.ramp_iterations = 0;  // off
+  EXPECT_DOUBLE_EQ(RampStepMm(p, 0), 10);
+}
+
+TEST(FastFollowingTest, TheFirstStepIsTheRampsShortestAndTheAimLeadsIntoTheTurn) {
+  ControllerContext context;
+  FastFollowingParams p;
+  p.step_max_mm = 10;
+  p.step_min_mm = 4;
+  p.strength_pa = 0;
+  p.lag_gain = 0;
+  p.timing = 0;
+  p.ramp_iterations = 5;
+  FastFollowingController ramped(context, p);
+  ramped.Step(At(0, 0, 0, Straddling({0, 1}, 200, 10)));
+  EXPECT_DOUBLE_EQ(ramped.last_step_mm(), 4);
+  // Lead: once the edge is measured turning, the step's along-edge part turns the same way
+  // by half the turn over the step's length.
+  p.ramp_iterations = 0;
+  p.turn_filter = 1;
+  p.turn_slow_deg = 180;
+  p.lateral_gain = 0;
+  p.lead = 1;
+  FastFollowingController leading(context, p);
+  leading.Step(At(0, 0, 0, Straddling({0, 1}, 200, 10)));
+  const std::array<double, 4> turned = Straddling({-std::sin(0.2), std::cos(0.2)}, 200, 10);
+  const ControllerCommand cmd = leading.Step(At(0.15, 0.005, 0, turned));
+  const ContourStep law = ComputeContourStep(turned, context.law);
+  const double angle = SignedAngle(law.along_edge, cmd.step_m);
+  const double along_m = std::hypot(cmd.step_m[0], cmd.step_m[1]);
+  EXPECT_NEAR(angle, leading.turn_per_m() * 0.5 * along_m, 1e-9);
+  EXPECT_GT(std::fabs(angle), 0.01);
+}
+
 TEST(FastFollowingTest, InTheDeadBandItHolds) {
   ControllerContext context;
   FastFollowingController c(context, FastFollowingParams{});
