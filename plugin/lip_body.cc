@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "plugin/body_tree.h"
 #include "plugin/chamber_pressure_config.h"
 #include "plugin/pneumatics/lip_rim.h"
 
@@ -12,11 +13,6 @@ namespace {
 
 // A skirt vertex within this much of the deepest one belongs to the rim.
 constexpr double kRimToleranceM = 0.1e-3;
-
-bool IsInSubtree(const mjModel* m, int body, int root) {
-  while (body > 0 && body != root) body = m->body_parentid[body];
-  return body == root;
-}
 
 // Point `p` given in body `b`'s frame, in the frame of its ancestor `root`, at the model's
 // reference pose (body offsets only: init has no mjData).

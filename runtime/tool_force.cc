@@ -1,16 +1,9 @@
 #include "runtime/tool_force.h"
 
+#include "plugin/body_tree.h"
 #include "plugin/chamber_pressure_sensor.h"
 
 namespace ssc {
-namespace {
-
-bool IsInSubtree(const mjModel* m, int body, int root) {
-  while (body > 0 && body != root) body = m->body_parentid[body];
-  return body == root;
-}
-
-}  // namespace
 
 void ToolForceReader::Bind(const mjModel* m, int force_sensor) {
   sensor_adr_ = m->sensor_adr[force_sensor];
