@@ -186,12 +186,8 @@ void ContourTrial::Reset() {
   start_point_ = {config_.target.start[0], config_.target.start[1], 0};
   transfer_done_ = false;
   reach_wait_since_s_ = -1;
-  lip_shear_ = LipShearState();
-  ResetChamberSpread(config_.effects.chambers, EffectsSeed(), &chamber_spread_);
+  effects_.Reset(config_.effects, config_.seed);
   last_tool_ = servo_ ? servo_->Measured(d_) : Vec3{};
-  step_pending_ = false;
-  step_apply_s_ = 0;
-  iteration_index_ = 0;
   host_p_pa_ = {};
 }
 
@@ -217,8 +213,7 @@ void ContourTrial::Log(bool iteration) {
   if (iteration) {
     row.p_pa = host_p_pa_;
   } else {
-    row.p_pa = Pressures();
-    ApplyLipTilt(config_.effects.lip, lip_shear_, &row.p_pa);
+    row.p_pa = effects_.ChamberReading(Pressures());
   }
   // The law's quantities exist only where it ran: NaN elsewhere (the approach, the move, and
   // the rows between iterations), never 0 or the previous iteration's values.
@@ -271,9 +266,8 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
   const Vec3 tool = servo_->Measured(d_);
   if (phase_ == TrialPhase::kMoveToStart || phase_ == TrialPhase::kFollow) TrackLipShear(tool);
   last_tool_ = tool;
-  if (step_pending_ && t + 1e-9 >= step_apply_s_) {
+  if (effects_.TakeDueStep(t)) {
     // The pose read after the plot: measured pose + the step computed from older pressures.
-    step_pending_ = false;
     servo_->SetTarget({tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], command_z_});
   }
   // The log keeps every phase (the approach gives the in-air start a robot log also has),
@@ -301,8 +295,7 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
 
 void ContourTrial::TrackLipShear(const Vec3& tool) {
   const mjtNum* R = d_->site_xmat + 9 * tool_site_;
-  AdvanceLipShear(config_.effects.lip,
-                  WorldToTool(R, tool[0] - last_tool_[0], tool[1] - last_tool_[1]), &lip_shear_);
+  effects_.MoveTool(WorldToTool(R, tool[0] - last_tool_[0], tool[1] - last_tool_[1]));
 }
 
 bool ContourTrial::MoveSetPointToward(const Point2& point, double z) {
@@ -419,22 +412,16 @@ bool ContourTrial::TakeCommand(const ControllerCommand& command, double t, const
   }
   last_step_world_ = LandedStepWorld(command.step_m);
   // Measured pose + step; with a pose delay, the pose read after the plot.
-  if (config_.effects.loop.pose_delay_s > 0) {
-    step_pending_ = true;
-    step_apply_s_ = t + config_.effects.loop.pose_delay_s;
-  } else {
+  if (!effects_.DeferStep(t)) {
     servo_->SetTarget({tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], command_z_});
   }
   return true;
 }
 
 void ContourTrial::RunIteration(double t, const Vec3& tool) {
-  next_iteration_s_ += IterationPeriod(config_.effects.loop, config_.control_period_s,
-                                       EffectsSeed(), iteration_index_++);
+  next_iteration_s_ += effects_.NextIterationPeriod(config_.control_period_s);
   ++result_.iterations;
-  std::array<double, 4> p = Pressures();
-  ApplyLipTilt(config_.effects.lip, lip_shear_, &p);
-  ApplyChamberSpread(config_.effects.chambers, EffectsSeed(), t, &chamber_spread_, &p);
+  const std::array<double, 4> p = effects_.HostReading(t, Pressures());
   host_p_pa_ = p;
   // The law's reading of the pressures (P_mean, the differentials, c_f) for the log and overlays.
   last_step_ = ComputeContourStep(p, config_.law);
@@ -531,11 +518,7 @@ bool ContourTrial::RunToNextIteration(double max_sim_s) {
 }
 
 std::array<double, 2> ContourTrial::LandedStepWorld(std::array<double, 2> step) const {
-  if (step[0] != 0 || step[1] != 0) {  // a step taken (not held by the dead band) misses
-    const std::array<double, 2> e = StepError(config_.effects.loop, std::hypot(step[0], step[1]),
-                                              EffectsSeed(), result_.iterations);
-    step = {step[0] + e[0], step[1] + e[1]};
-  }
+  step = effects_.LandedStep(step, static_cast<std::uint64_t>(result_.iterations));
   // Tool frame -> world with the tool site's rotation (orientation is held).
   return ToolToWorld(d_->site_xmat + 9 * tool_site_, step[0], step[1]);
 }
@@ -575,7 +558,7 @@ FollowStart ContourTrial::SaveFollowStart() const {
   s.next_log_time_s = next_log_time_s_;
   s.last_tool_m = last_tool_;
   s.goal_start_m = goal_start_;
-  s.lip_shear = lip_shear_;
+  s.lip_shear = effects_.lip_shear();
   return s;
 }
 
@@ -595,7 +578,7 @@ void ContourTrial::ResumeAtFollowStart(const mjData* follow_start_data, const Fo
   next_log_s_ = s.next_log_s;
   next_log_time_s_ = s.next_log_time_s;
   last_tool_ = s.last_tool_m;
-  lip_shear_ = s.lip_shear;
+  effects_.set_lip_shear(s.lip_shear);
   goal_start_ = s.goal_start_m;
   goal_.Start(config_.target.goal, config_.target.edge, goal_start_);
   phase_ = TrialPhase::kFollow;

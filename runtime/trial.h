@@ -21,6 +21,7 @@
 #include "controller/pure/controller.h"
 #include "controller/pure/controller_registry.h"
 #include "controller/pure/robot_effects.h"
+#include "controller/pure/trial_effects.h"
 #include "controller/pure/trial_goal.h"
 #include "controller/pure/trial_metrics.h"
 #include "controller/pure/trial_outcome.h"
@@ -221,8 +222,6 @@ class ContourTrial : public ControlCallback {
   // that the current step's forward pass leaves in sensordata.
   bool FtReadAfterThisStep() const;
   void Log(bool iteration);
-  // The effects' draws come from the trial seed, in streams apart from the plugin's noise.
-  std::uint64_t EffectsSeed() const { return config_.seed ^ 0x5EEDEFFEC7ULL; }
 
   const mjModel* m_;
   mjData* d_;
@@ -252,12 +251,8 @@ class ContourTrial : public ControlCallback {
   std::vector<Point2> path_xy_;
   std::vector<double> path_t_;
   // Robot effects: lip shear, chamber spread, the step waiting for the pose read after the plot.
-  LipShearState lip_shear_;
-  ChamberSpreadState chamber_spread_;
-  Vec3 last_tool_{};
-  bool step_pending_ = false;
-  double step_apply_s_ = 0;
-  std::uint64_t iteration_index_ = 0;
+  TrialEffects effects_;
+  Vec3 last_tool_{};  // where the lip's drag was last advanced from
   std::array<double, 4> host_p_pa_{};
   TrialResult result_;
   std::unique_ptr<ScopedControl> registration_;
