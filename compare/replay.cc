@@ -46,12 +46,13 @@ std::string CorrelationText(double r) {
 
 namespace {
 
-// The replay; with `take` the log's series move into `out` at the end instead of being copied
+// Steps the replay scene along the log: the twin's chamber pressures (as the host reads them,
+// with the lip's drag) and tared F/T force at the log's time stamps into `out`, beside the log's
+// own series; with `take` the log's series move into `out` at the end instead of being copied
 // sample by sample.
-bool Replay(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
-            const LipShearParams& lip, ReplayComparison* out, std::string* error,
-            const std::function<void(double)>& progress, ProcessedLog* take) {
-  *out = ReplayComparison();
+bool ReplayPath(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
+                const LipShearParams& lip, ReplayComparison* out, std::string* error,
+                const std::function<void(double)>& progress, ProcessedLog* take) {
   const int body = mj_name2id(m, mjOBJ_BODY, "probe");
   if (body < 0 || m->body_mocapid[body] < 0) {
     *error =
@@ -148,7 +149,11 @@ bool Replay(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
     *take = ProcessedLog();
   }
   if (progress) progress(1.0);
+  return true;
+}
 
+// Per chamber, twin against log: RMS in Pa and in log10, correlation, ratio of means.
+void ScoreChambers(ReplayComparison* out) {
   const size_t n = out->t_s.size();
   for (int c = 0; c < 4; ++c) {
     // One pass of sums per chamber (no copies of the series): RMS, log10 RMS, correlation.
@@ -175,6 +180,12 @@ bool Replay(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
                                                          : std::numeric_limits<double>::quiet_NaN();
     out->mean_ratio[c] = std::fabs(sb) > 1e-9 ? sa / sb : 0;
   }
+}
+
+// What the law reads from either side: the mean pressure's RMS and bias, and the direction of g
+// where both exceed the law's noise level.
+void ScoreLaw(ReplayComparison* out) {
+  const size_t n = out->t_s.size();
   double se = 0, bias = 0;
   std::vector<double> angles;
   ContourLawParams law;
@@ -201,6 +212,15 @@ bool Replay(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
                      angles.end());
     out->direction_median_deg = angles[angles.size() / 2];
   }
+}
+
+bool Replay(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
+            const LipShearParams& lip, ReplayComparison* out, std::string* error,
+            const std::function<void(double)>& progress, ProcessedLog* take) {
+  *out = ReplayComparison();
+  if (!ReplayPath(m, log, tcp_offset_m, lip, out, error, progress, take)) return false;
+  ScoreChambers(out);
+  ScoreLaw(out);
   return true;
 }
 

@@ -226,6 +226,120 @@ void ListScenes() {
       "corner_aNNN, volute, semicircle_strip, semisquare_strip, fillet\n");
 }
 
+// Camera, options, scene and rendering context for the trial, the camera as --camera asks.
+// 0, or the exit code when this OpenGL cannot render the off-screen image asked for (the scene
+// and the context then freed).
+int StartSession(const ViewerOptions& options, mjModel* model, mjData* data, ContourTrial* trial,
+                 bool offscreen, Session* s) {
+  s->m = model;
+  s->d = data;
+  s->trial = trial;
+  s->sensor = FindChamberPressureDiagnostics(s->m, s->d);
+  s->tool_site = s->sensor->site_id();
+  mjv_defaultCamera(&s->cam);
+  mjv_defaultOption(&s->opt);
+  s->opt.geomgroup[4] = 1;  // the lip segments
+  mjv_defaultScene(&s->scn);
+  mjr_defaultContext(&s->con);
+  mjv_makeScene(s->m, &s->scn, 6000);
+  if (offscreen) {
+    // The off-screen buffer the model asks for may be smaller than the requested image.
+    model->vis.global.offwidth = std::max(model->vis.global.offwidth, options.width);
+    model->vis.global.offheight = std::max(model->vis.global.offheight, options.height);
+  }
+  mjr_makeContext(s->m, &s->con, mjFONTSCALE_150);
+  if (offscreen && (s->con.offWidth < options.width || s->con.offHeight < options.height)) {
+    std::fprintf(stderr,
+                 "ssc view: --width %d --height %d: this OpenGL renders off-screen images up to "
+                 "%dx%d; ask for at most that\n",
+                 options.width, options.height, s->con.offWidth, s->con.offHeight);
+    mjr_freeContext(&s->con);
+    mjv_freeScene(&s->scn);
+    return 2;
+  }
+  s->cam.type = mjCAMERA_FREE;
+  // Arm scenes: the base of the first joint's chain; gantry and probe scenes have none.
+  if (mj_name2id(s->m, mjOBJ_JOINT, "gantry_x") < 0 && s->m->njnt > 0 &&
+      s->m->jnt_type[0] == mjJNT_HINGE) {
+    s->arm_base_body = s->m->jnt_bodyid[0];
+  }
+  mj_forward(s->m, s->d);
+  s->cam.azimuth = 225;
+  s->cam.elevation = -25;
+  // --camera: the start of T's cycle.
+  if (options.camera == ViewerCamera::kCup) {
+    s->close_up = true;
+  } else if (options.camera == ViewerCamera::kFree) {
+    s->tracking = false;
+    mjv_defaultFreeCamera(s->m, &s->cam);
+  }
+  FollowCup(s);
+  s->speed = options.speed;
+  return 0;
+}
+
+// --screenshot: the steps of a headless trial up to the requested time, then one off-screen
+// frame written as a PNG. The exit code.
+int TakeScreenshot(const ViewerOptions& options, Session* s) {
+  while (s->d->time < options.time_s && s->trial->phase() != TrialPhase::kDone) StepOnce(s);
+  mjr_setBuffer(mjFB_OFFSCREEN, &s->con);
+  const int w = std::min(options.width, s->con.offWidth);
+  const int h = std::min(options.height, s->con.offHeight);
+  const mjrRect viewport = {0, 0, w, h};
+  Render(s, viewport, -1);  // no real-time factor: nothing ran in real time
+  std::vector<unsigned char> rgb(static_cast<size_t>(w) * h * 3);
+  mjr_readPixels(rgb.data(), nullptr, viewport, &s->con);
+  std::string write_error;
+  if (!WritePng(options.screenshot, w, h, rgb, &write_error)) {
+    std::fprintf(stderr, "ssc view: %s\n", write_error.c_str());
+    return 1;
+  }
+  const mjtNum* p = s->d->site_xpos + 3 * s->tool_site;
+  std::printf("wrote %s (%dx%d) at t = %.4f s; phase %s; tool at %.9f %.9f %.9f m\n",
+              options.screenshot.c_str(), w, h, s->d->time, PhaseName(s->trial->phase()), p[0],
+              p[1], p[2]);
+  std::printf("%s\n", OverlayValuesLine(CurrentOverlayValues(*s->trial, s->d)).c_str());
+  return 0;
+}
+
+// The window: the trial in real time (times the speed), paused or stepped by the keys, until
+// the window is closed.
+void RunWindow(GLFWwindow* window, Session* s) {
+  ListScenes();
+  std::printf("F1 in the window lists the keys.\n");
+  glfwSetWindowUserPointer(window, s);
+  glfwSetKeyCallback(window, OnKey);
+  glfwSetMouseButtonCallback(window, OnButton);
+  glfwSetCursorPosCallback(window, OnMove);
+  glfwSetScrollCallback(window, OnScroll);
+  using Clock = std::chrono::steady_clock;
+  auto last = Clock::now();
+  double rtf = 0;
+  while (!glfwWindowShouldClose(window)) {
+    const auto now = Clock::now();
+    const double wall_dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
+    last = now;
+    const double sim_start = s->d->time;
+    if (!s->paused) {
+      const double target = s->d->time + wall_dt * s->speed;
+      const auto budget_end = now + std::chrono::milliseconds(30);  // keep the UI responsive
+      while (s->d->time < target && s->trial->phase() != TrialPhase::kDone &&
+             Clock::now() < budget_end) {
+        StepOnce(s);
+      }
+    } else if (s->step_once) {
+      StepOnce(s);
+    }
+    s->step_once = false;
+    if (wall_dt > 0) rtf = 0.9 * rtf + 0.1 * (s->d->time - sim_start) / wall_dt;
+    mjrRect viewport = {0, 0, 0, 0};
+    glfwGetFramebufferSize(window, &viewport.width, &viewport.height);
+    Render(s, viewport, rtf);
+    glfwSwapBuffers(window);
+    glfwPollEvents();
+  }
+}
+
 }  // namespace
 
 int RunViewer(const ViewerOptions& options) {
@@ -274,109 +388,16 @@ int RunViewer(const ViewerOptions& options) {
 
   auto session = std::make_unique<Session>();
   Session* s = session.get();
-  s->m = model.get();
-  s->d = data.get();
-  s->trial = trial.get();
-  s->sensor = FindChamberPressureDiagnostics(s->m, s->d);
-  s->tool_site = s->sensor->site_id();
-  mjv_defaultCamera(&s->cam);
-  mjv_defaultOption(&s->opt);
-  s->opt.geomgroup[4] = 1;  // the lip segments
-  mjv_defaultScene(&s->scn);
-  mjr_defaultContext(&s->con);
-  mjv_makeScene(s->m, &s->scn, 6000);
-  if (offscreen) {
-    // The off-screen buffer the model asks for may be smaller than the requested image.
-    model->vis.global.offwidth = std::max(model->vis.global.offwidth, options.width);
-    model->vis.global.offheight = std::max(model->vis.global.offheight, options.height);
-  }
-  mjr_makeContext(s->m, &s->con, mjFONTSCALE_150);
-  if (offscreen && (s->con.offWidth < options.width || s->con.offHeight < options.height)) {
-    std::fprintf(stderr,
-                 "ssc view: --width %d --height %d: this OpenGL renders off-screen images up to "
-                 "%dx%d; ask for at most that\n",
-                 options.width, options.height, s->con.offWidth, s->con.offHeight);
-    mjr_freeContext(&s->con);
-    mjv_freeScene(&s->scn);
+  int code = StartSession(options, model.get(), data.get(), trial.get(), offscreen, s);
+  if (code != 0) {
     glfwDestroyWindow(window);
     glfwTerminate();
-    return 2;
+    return code;
   }
-  s->cam.type = mjCAMERA_FREE;
-  // Arm scenes: the base of the first joint's chain; gantry and probe scenes have none.
-  if (mj_name2id(s->m, mjOBJ_JOINT, "gantry_x") < 0 && s->m->njnt > 0 &&
-      s->m->jnt_type[0] == mjJNT_HINGE) {
-    s->arm_base_body = s->m->jnt_bodyid[0];
-  }
-  mj_forward(s->m, s->d);
-  s->cam.azimuth = 225;
-  s->cam.elevation = -25;
-  // --camera: the start of T's cycle.
-  if (options.camera == ViewerCamera::kCup) {
-    s->close_up = true;
-  } else if (options.camera == ViewerCamera::kFree) {
-    s->tracking = false;
-    mjv_defaultFreeCamera(s->m, &s->cam);
-  }
-  FollowCup(s);
-  s->speed = options.speed;
-
-  int code = 0;
   if (offscreen) {
-    // Same steps as a headless trial up to the requested time, then one off-screen frame.
-    while (s->d->time < options.time_s && s->trial->phase() != TrialPhase::kDone) StepOnce(s);
-    mjr_setBuffer(mjFB_OFFSCREEN, &s->con);
-    const int w = std::min(options.width, s->con.offWidth);
-    const int h = std::min(options.height, s->con.offHeight);
-    const mjrRect viewport = {0, 0, w, h};
-    Render(s, viewport, -1);  // no real-time factor: nothing ran in real time
-    std::vector<unsigned char> rgb(static_cast<size_t>(w) * h * 3);
-    mjr_readPixels(rgb.data(), nullptr, viewport, &s->con);
-    std::string write_error;
-    if (!WritePng(options.screenshot, w, h, rgb, &write_error)) {
-      std::fprintf(stderr, "ssc view: %s\n", write_error.c_str());
-      code = 1;
-    } else {
-      const mjtNum* p = s->d->site_xpos + 3 * s->tool_site;
-      std::printf("wrote %s (%dx%d) at t = %.4f s; phase %s; tool at %.9f %.9f %.9f m\n",
-                  options.screenshot.c_str(), w, h, s->d->time, PhaseName(s->trial->phase()), p[0],
-                  p[1], p[2]);
-      std::printf("%s\n", OverlayValuesLine(CurrentOverlayValues(*s->trial, s->d)).c_str());
-    }
+    code = TakeScreenshot(options, s);
   } else {
-    ListScenes();
-    std::printf("F1 in the window lists the keys.\n");
-    glfwSetWindowUserPointer(window, s);
-    glfwSetKeyCallback(window, OnKey);
-    glfwSetMouseButtonCallback(window, OnButton);
-    glfwSetCursorPosCallback(window, OnMove);
-    glfwSetScrollCallback(window, OnScroll);
-    using Clock = std::chrono::steady_clock;
-    auto last = Clock::now();
-    double rtf = 0;
-    while (!glfwWindowShouldClose(window)) {
-      const auto now = Clock::now();
-      const double wall_dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
-      last = now;
-      const double sim_start = s->d->time;
-      if (!s->paused) {
-        const double target = s->d->time + wall_dt * s->speed;
-        const auto budget_end = now + std::chrono::milliseconds(30);  // keep the UI responsive
-        while (s->d->time < target && s->trial->phase() != TrialPhase::kDone &&
-               Clock::now() < budget_end) {
-          StepOnce(s);
-        }
-      } else if (s->step_once) {
-        StepOnce(s);
-      }
-      s->step_once = false;
-      if (wall_dt > 0) rtf = 0.9 * rtf + 0.1 * (s->d->time - sim_start) / wall_dt;
-      mjrRect viewport = {0, 0, 0, 0};
-      glfwGetFramebufferSize(window, &viewport.width, &viewport.height);
-      Render(s, viewport, rtf);
-      glfwSwapBuffers(window);
-      glfwPollEvents();
-    }
+    RunWindow(window, s);
   }
   mjv_freeScene(&s->scn);
   mjr_freeContext(&s->con);

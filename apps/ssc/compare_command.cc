@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
 
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
@@ -14,63 +17,62 @@
 
 namespace ssc {
 
-int RunCompareCommand(int argc, char** argv) {
-  cli::Command cmd(
-      "compare",
-      "ssc compare LOG [options]: replays the logged tool path in the twin and compares the\n"
-      "chamber pressures with the logged ones (RMS in Pa and log10, correlation, mean-pressure\n"
-      "error, direction error of the controller's g), and the lab controller's iterations\n"
-      "(edgeFollowing_history) with the twin's at the same poses. LOG, unchanged as the lab\n"
-      "records it: a recording folder of dataLog_<stamp>_<topic>.csv files or any one of them\n"
-      "(either logger version), a DataLog_*.mat, or a plain CSV (docs/robot_logs.md).\n"
-      "Writes OUT/report.md, report.json, series.csv, history.csv and compare.png.");
-  CompareOptions o;
+namespace {
+
+// The command line's values that are not CompareOptions' own until parsed.
+struct CompareArgs {
+  CompareOptions options;
   long average = 7;
   double tcp_mm = kToolCentreOffsetM * 1e3;
   std::string frame = "base_link";
   bool no_plot = false;
-  cmd.Positional("LOG", &o.log_path, "the robot log (folder, one of its files, .mat, plain CSV)",
-                 true);
-  cmd.Text("scene", &o.scene, "replay scene with a mocap body 'probe' holding the tool");
-  cmd.OutputDir("out", &o.out_dir, "output directory");
-  cmd.Number("offset-window", &o.processing.offset_window_s,
-             "in-air offset: mean absolute pressure over the first ... of the log", "s",
-             NumberRange::Positive(60));
-  cmd.Integer("average", &average, "host moving-average window applied to the log, samples",
-              NumberRange::Closed(1, 1000));
-  cmd.Number("tcp-offset", &tcp_mm, "tool centre point along the tool0 z axis", "mm",
-             NumberRange::Closed(0, kMaxTcpOffsetM * 1e3));
-  cmd.Choice("log-frame", &frame,
-             "frame of the lab log's poses: ROS base_link (the lab's tf) or the UR base (RTDE)",
-             {"base_link", "base"});
-  cmd.NumberList("object-pose", &o.object_pose,
-                 "the object in the log's frame: centre x,y and top z (m) [,yaw (deg)]; "
-                 "default: from the log (disk benchmark)",
-                 "m / deg", NumberRange::Closed(-360, 360), true);
-  cmd.Flag("closed-loop", &o.closed_loop,
-           "also run the twin's controller from the log's start (P_ref, beta, dL, force band "
-           "from a .mat's script arguments)");
-  cmd.Text("loop-scene", &o.loop_scene, "disk scene for the closed loop and the lip depth");
-  TrialConfig& tc = o.loop_config;
-  cmd.Number("pref", &tc.law.p_ref_pa, "closed loop: P_ref when the file has none", "Pa",
-             NumberRange::Positive(1e6).OpenHigh());
-  cmd.Number("beta", &tc.law.beta, "closed loop: beta when the file has none", "",
-             NumberRange::Closed(0, 100));
-  cmd.Number("step", &tc.law.step_mm, "closed loop: the step dL when the file has none", "mm",
-             NumberRange::Closed(kMinStepMm, kMaxStepMm));
-  cmd.Flag("override-law", &o.override_law,
-           "closed loop: use --pref, --beta, --step even when the file records them");
-  cmd.Seed("seed", &tc.seed, "closed loop: noise seed");
   std::string effects = "default";
-  AddEffectsOption(&cmd,
+  std::string controller_name = "published", controller_params;
+};
+
+void AddCompareOptions(cli::Command* cmd, CompareArgs* a) {
+  cmd->Positional("LOG", &a->options.log_path,
+                  "the robot log (folder, one of its files, .mat, plain CSV)", true);
+  cmd->Text("scene", &a->options.scene, "replay scene with a mocap body 'probe' holding the tool");
+  cmd->OutputDir("out", &a->options.out_dir, "output directory");
+  cmd->Number("offset-window", &a->options.processing.offset_window_s,
+              "in-air offset: mean absolute pressure over the first ... of the log", "s",
+              NumberRange::Positive(60));
+  cmd->Integer("average", &a->average, "host moving-average window applied to the log, samples",
+               NumberRange::Closed(1, 1000));
+  cmd->Number("tcp-offset", &a->tcp_mm, "tool centre point along the tool0 z axis", "mm",
+              NumberRange::Closed(0, kMaxTcpOffsetM * 1e3));
+  cmd->Choice("log-frame", &a->frame,
+              "frame of the lab log's poses: ROS base_link (the lab's tf) or the UR base (RTDE)",
+              {"base_link", "base"});
+  cmd->NumberList("object-pose", &a->options.object_pose,
+                  "the object in the log's frame: centre x,y and top z (m) [,yaw (deg)]; "
+                  "default: from the log (disk benchmark)",
+                  "m / deg", NumberRange::Closed(-360, 360), true);
+  cmd->Flag("closed-loop", &a->options.closed_loop,
+            "also run the twin's controller from the log's start (P_ref, beta, dL, force band "
+            "from a .mat's script arguments)");
+  cmd->Text("loop-scene", &a->options.loop_scene,
+            "disk scene for the closed loop and the lip depth");
+  TrialConfig& tc = a->options.loop_config;
+  cmd->Number("pref", &tc.law.p_ref_pa, "closed loop: P_ref when the file has none", "Pa",
+              NumberRange::Positive(1e6).OpenHigh());
+  cmd->Number("beta", &tc.law.beta, "closed loop: beta when the file has none", "",
+              NumberRange::Closed(0, 100));
+  cmd->Number("step", &tc.law.step_mm, "closed loop: the step dL when the file has none", "mm",
+              NumberRange::Closed(kMinStepMm, kMaxStepMm));
+  cmd->Flag("override-law", &a->options.override_law,
+            "closed loop: use --pref, --beta, --step even when the file records them");
+  cmd->Seed("seed", &tc.seed, "closed loop: noise seed");
+  AddEffectsOption(cmd,
                    "robot effects (docs/fidelity.md) of the closed loop, and the lip's (slip_mm, "
                    "tilt_decades, peel_decades) also in the replay",
-                   &effects, &tc.effects);
-  std::string controller_name = "published", controller_params;
-  AddControllerOptions(&cmd, &controller_name, &controller_params, &tc.controller);
-  cmd.Flag("no-plot", &no_plot, "skip the PNG plot");
-  cmd.Check([&tc]() { return tc.Validate(); });
-  cmd.Check([&o]() -> std::string {
+                   &a->effects, &tc.effects);
+  AddControllerOptions(cmd, &a->controller_name, &a->controller_params, &tc.controller);
+  cmd->Flag("no-plot", &a->no_plot, "skip the PNG plot");
+  cmd->Check([a]() { return a->options.loop_config.Validate(); });
+  cmd->Check([a]() -> std::string {
+    const CompareOptions& o = a->options;
     if (o.object_pose.empty()) return "";
     if (o.object_pose.size() != 3 && o.object_pose.size() != 4) {
       return "--object-pose takes x,y,z or x,y,z,yaw (got " + std::to_string(o.object_pose.size()) +
@@ -84,22 +86,20 @@ int RunCompareCommand(int argc, char** argv) {
     }
     return "";
   });
-  if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
-  o.processing.moving_average = static_cast<int>(average);
-  o.processing.tcp_offset_m = tcp_mm * 1e-3;
-  ParseLogFrame(frame, &o.frame);
+}
 
-  // Progress on stderr once a replay has run 2 s (a long log): a line per 10 %, or a bar on a
-  // terminal.
+// Progress on stderr once a replay has run 2 s (a long log): a line per 10 %, or a bar on a
+// terminal.
+std::function<void(double)> ReplayProgress() {
   const bool tty = isatty(STDERR_FILENO);
   const auto start = std::chrono::steady_clock::now();
-  int shown_pct = -1;
-  o.progress = [&](double fraction) {
+  auto shown_pct = std::make_shared<int>(-1);
+  return [tty, start, shown_pct](double fraction) {
     const double elapsed_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const int pct = static_cast<int>(fraction * 100);
-    if (elapsed_s < 2 || pct == shown_pct || (!tty && pct % 10 != 0)) return;
-    shown_pct = pct;
+    if (elapsed_s < 2 || pct == *shown_pct || (!tty && pct % 10 != 0)) return;
+    *shown_pct = pct;
     const double eta_s = fraction > 0 ? elapsed_s * (1 - fraction) / fraction : 0;
     std::fprintf(stderr,
                  tty ? "\rssc compare: replay %3d%% (%.0f s, ETA %.0f s) %s"
@@ -107,12 +107,10 @@ int RunCompareCommand(int argc, char** argv) {
                  pct, elapsed_s, eta_s, tty && pct == 100 ? "\n" : "");
     std::fflush(stderr);
   };
-  CompareResult r;
-  std::string error;
-  if (!RunComparison(o, &r, &error)) {
-    std::fprintf(stderr, "ssc compare: %s\n", error.c_str());
-    return 1;
-  }
+}
+
+// The comparison's figures on stdout, its warnings on stderr.
+void PrintComparison(const CompareResult& r) {
   for (const std::string& w : r.log_warnings) {
     std::fprintf(stderr, "ssc compare: warning: %s\n", w.c_str());
   }
@@ -155,9 +153,38 @@ int RunCompareCommand(int argc, char** argv) {
         cl.twin.sigma_r_mm, cl.log.sigma_r_mm, cl.twin.s_c, cl.log.s_c, cl.twin.duration_s,
         cl.log.duration_s, cl.path_distance_mean_mm, cl.path_distance_max_mm);
   }
+}
+
+}  // namespace
+
+int RunCompareCommand(int argc, char** argv) {
+  cli::Command cmd(
+      "compare",
+      "ssc compare LOG [options]: replays the logged tool path in the twin and compares the\n"
+      "chamber pressures with the logged ones (RMS in Pa and log10, correlation, mean-pressure\n"
+      "error, direction error of the controller's g), and the lab controller's iterations\n"
+      "(edgeFollowing_history) with the twin's at the same poses. LOG, unchanged as the lab\n"
+      "records it: a recording folder of dataLog_<stamp>_<topic>.csv files or any one of them\n"
+      "(either logger version), a DataLog_*.mat, or a plain CSV (docs/robot_logs.md).\n"
+      "Writes OUT/report.md, report.json, series.csv, history.csv and compare.png.");
+  CompareArgs args;
+  AddCompareOptions(&cmd, &args);
+  if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
+  CompareOptions& o = args.options;
+  o.processing.moving_average = static_cast<int>(args.average);
+  o.processing.tcp_offset_m = args.tcp_mm * 1e-3;
+  ParseLogFrame(args.frame, &o.frame);
+  o.progress = ReplayProgress();
+  CompareResult r;
+  std::string error;
+  if (!RunComparison(o, &r, &error)) {
+    std::fprintf(stderr, "ssc compare: %s\n", error.c_str());
+    return 1;
+  }
+  PrintComparison(r);
   const std::filesystem::path out = o.out_dir;
   std::printf("wrote %s\n", (out / "report.md").c_str());
-  if (!no_plot) {
+  if (!args.no_plot) {
     const std::string png = (out / "compare.png").string();
     if (RunPlotScript("plot_compare.py",
                       {(out / "series.csv").string(), png, (out / "report.json").string()})) {
