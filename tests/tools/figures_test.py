@@ -55,7 +55,12 @@ def legend_problems(fig):
                 continue
             if inner.overlaps(t.get_window_extent(renderer)):
                 problems.append(f"legend over the text {t.get_text()!r}")
-        axes = [leg.axes] if leg.axes is not None and leg.axes in fig.axes else fig.axes
+        # The legend's own axes and its twins (twinx/twiny: the same place), else all of them.
+        if leg.axes is not None and leg.axes in fig.axes:
+            place = leg.axes.get_position().bounds
+            axes = [ax for ax in fig.axes if ax.get_position().bounds == place]
+        else:
+            axes = fig.axes
         for ax in axes:
             for line in ax.get_lines():
                 xy = np.asarray(line.get_xydata(), dtype=float)
@@ -251,6 +256,36 @@ class FigureScriptsTest(unittest.TestCase):
                 for k in range(3)]
         sweep = write_csv(self.out("sweep.csv"), ["step_mm", "pref_pa", "beta", "outcome"], rows)
         self.assertEqual(self.render("plot_success_maps.py", [sweep, self.out("maps.png")]), [])
+
+    def test_objects_and_the_fillet_profile(self):
+        """`ssc objects`: the paths over each object and, beside the table, the fillet's profile
+        (plot_objects.py writes both: OUT.png and OUT_fillet.png)."""
+        paths = self.out("paths")
+        os.makedirs(paths)
+        rows = []
+        for k, (name, closed, outcome) in enumerate([("disk_d10", 1, "success"),
+                                                     ("hole_d10", 1, "failure_I"),
+                                                     ("corner_a090", 0, "lost_edge")]):
+            n = 40
+            contour = [(0.65 + 0.005 * math.cos(2 * math.pi * i / n),
+                        0.005 * math.sin(2 * math.pi * i / n), closed) for i in range(n)]
+            write_csv(os.path.join(paths, name + "_contour.csv"), ["x_m", "y_m", "closed"],
+                      contour)
+            path = [(0.65 + 0.008 * math.cos(0.1 * i), 0.008 * math.sin(0.1 * i))
+                    for i in range(30 + 10 * k)]
+            write_csv(os.path.join(paths, name + "_s1.csv"), ["x_m", "y_m"], path)
+            rows.append([name, 1, outcome])
+        table = write_csv(self.out("objects.csv"), ["object", "seed", "outcome"], rows)
+        # Along a 60 mm edge whose fillet grows from 0 to 10 mm: the differential fades, the mean
+        # vacuum rises a little.
+        profile = [(x, 40 * math.exp(-x / 20), 100 + 0.3 * x, x / 6) for x in range(0, 61, 2)]
+        write_csv(self.out("fillet_profile.csv"),
+                  ["x_mm", "diff_pa", "pbar_pa", "fillet_radius_mm"], profile)
+        png = self.out("objects.png")
+        self.assertEqual(self.render("plot_objects.py", [table, paths, png]), [])
+        self.assertTrue(os.path.exists(png))
+        self.assertTrue(os.path.exists(self.out("objects_fillet.png")))
+
 
 
 if __name__ == "__main__":
