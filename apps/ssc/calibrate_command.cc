@@ -4,13 +4,15 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "apps/ssc/trial_options.h"
 #include "calibration/pneumatic_fit.h"
+#include "common/output_file.h"
 #include "controller/pure/robot_effects.h"
 #include "runtime/mujoco_model.h"
 #include "studies/loop_calibration.h"
@@ -32,13 +34,32 @@ void PrintLine(const std::string& line) {
   std::fflush(stdout);
 }
 
+// Whole or not at all (common/output_file.h): a full disk leaves the previous file, never a
+// partial one.
 bool WriteText(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream f(path);
-  f << text;
-  f.close();
-  if (!f) std::fprintf(stderr, "ssc calibrate: cannot write %s\n", path.c_str());
-  return static_cast<bool>(f);
+  std::string error;
+  if (WriteWholeFile(path.string(), text, &error)) return true;
+  std::fprintf(stderr, "ssc calibrate: %s\n", error.c_str());
+  return false;
 }
+
+// A log of finished lines that survives an interrupted fit: each line is added by rewriting the
+// whole file (a few kB; an evaluation takes seconds), so the file always holds every line
+// finished so far and never a partial one. The first write error is kept for the end.
+class FinishedLinesLog {
+ public:
+  explicit FinishedLinesLog(std::filesystem::path path) : path_(std::move(path)) {}
+  void Add(const std::string& line) {
+    text_ += line;
+    text_ += '\n';
+    if (error_.empty()) WriteWholeFile(path_.string(), text_, &error_);
+  }
+  const std::string& error() const { return error_; }
+
+ private:
+  std::filesystem::path path_;
+  std::string text_, error_;
+};
 
 std::string DynamicKeysHelp() {
   std::string s;
@@ -70,14 +91,14 @@ int CalibrateDynamic(cli::Command& cmd, const DynamicFitSpec& spec, const std::s
   if (std::string e; !CheckTrialSetup(model.get(), spec.base, &e)) return Fail(e);
   if (int rc = cmd.CreateOutputs(); rc != 0) return rc;
   const std::filesystem::path out = out_dir;
-  std::ofstream evals_log(out / "dynamic_evals.txt");
-  if (!evals_log) return Fail("cannot write " + (out / "dynamic_evals.txt").string());
+  FinishedLinesLog evals_log(out / "dynamic_evals.txt");
   DynamicFitResult fit;
-  auto log_line = [&](const std::string& line) {
+  auto log_line = [&evals_log](const std::string& line) {
     PrintLine(line);
-    evals_log << line << '\n' << std::flush;
+    evals_log.Add(line);
   };
   if (!FitDynamic(model.get(), spec, log_line, &fit, &error)) return Fail(error);
+  if (!evals_log.error().empty()) return Fail(evals_log.error());
   PrintDynamicFit(spec, fit);
   if (holdout_seed > 0) {
     HeldOutScores held;
@@ -91,7 +112,8 @@ int CalibrateDynamic(cli::Command& cmd, const DynamicFitSpec& spec, const std::s
                   held.start.expected_agreement, held.start.opposite, held.best_cost,
                   held.best.expected_agreement, held.best.opposite);
     std::printf("%s\n", line);
-    evals_log << line << '\n' << std::flush;
+    evals_log.Add(line);
+    if (!evals_log.error().empty()) return Fail(evals_log.error());
   }
   std::printf("as options: --period %.4g --smoothing %.4g --effects %s\n",
               fit.best.control_period_s, fit.best.servo.smoothing_s,

@@ -6,6 +6,7 @@ right result; nothing is left behind."""
 import csv
 import glob
 import io
+import json
 import math
 import os
 import resource
@@ -151,6 +152,17 @@ class ReliabilityTest(unittest.TestCase):
         self.assertIn("sweep.csv: cannot append a row: File too large", r.stderr)
         with open(csv_path) as f:
             self.assertEqual(f.read(), before)  # the partial row cut off again
+        self.assertEqual(leftovers(out), [])
+
+    def test_a_file_size_limit_fails_calibrate_whole(self):
+        # params.json (about 0.8 kB) fits under the limit, the calibrated tool (about 11 kB) not.
+        out = os.path.join(self.tmp, "fsize_calibrate")
+        r = run(["calibrate", "--out", out], preexec_fn=self.limited(4096))
+        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertIn("ssc_tool_calibrated.xml: cannot write: File too large", r.stderr)
+        self.assertFalse(os.path.exists(os.path.join(out, "ssc_tool_calibrated.xml")))
+        with open(os.path.join(out, "params.json")) as f:
+            json.load(f)  # whole
         self.assertEqual(leftovers(out), [])
 
     def test_sigterm_during_a_trial_leaves_no_empty_folder(self):
