@@ -101,15 +101,34 @@ bool HasResources(const std::filesystem::path& dir) {
   return FileExists((dir / "models" / "ssc_tool.xml").string());
 }
 
-// The folder of the binary that holds this code (the ssc executable, or the Python module).
-std::filesystem::path ThisBinaryDir() {
+// The folder of the binary or shared library that holds `symbol`.
+std::filesystem::path FolderOf(const void* symbol) {
   Dl_info info{};
-  if (dladdr(reinterpret_cast<void*>(&HasResources), &info) == 0 || info.dli_fname == nullptr) {
-    return {};
-  }
+  if (dladdr(symbol, &info) == 0 || info.dli_fname == nullptr) return {};
   std::error_code ec;
   const std::filesystem::path self = std::filesystem::canonical(info.dli_fname, ec);
   return ec ? std::filesystem::path() : self.parent_path();
+}
+
+// Where an installed copy keeps models/ and scenes/, from the binary that holds this code (the
+// ssc executable, a downstream program installed into the prefix, or the Python module, which
+// keeps them beside itself), then from the plugin library the process loaded (a downstream
+// program linked against an installed prefix but run from its own build folder:
+// <prefix>/lib/libssc_plugin.so -> <prefix>/share/ssc). Empty when neither has them.
+std::string InstalledResourceDir() {
+  const std::filesystem::path bin = FolderOf(reinterpret_cast<const void*>(&HasResources));
+  const std::filesystem::path plugin =
+      FolderOf(reinterpret_cast<const void*>(&InstallMuJoCoMessageHandlers));
+  std::vector<std::filesystem::path> candidates;
+  if (!bin.empty()) {
+    candidates.push_back(bin.parent_path() / "share" / "ssc");
+    candidates.push_back(bin);
+  }
+  if (!plugin.empty()) candidates.push_back(plugin.parent_path() / "share" / "ssc");
+  for (const std::filesystem::path& dir : candidates) {
+    if (HasResources(dir)) return dir.lexically_normal().string();
+  }
+  return "";
 }
 
 std::string g_resource_dir;  // SetResourceDir
@@ -328,14 +347,8 @@ std::string ResourceDir() {
     if (env && env[0]) return env;
   }
   static const std::string found = [] {
-    const std::filesystem::path bin = ThisBinaryDir();
-    if (!bin.empty()) {
-      // <prefix>/bin/ssc -> <prefix>/share/ssc; the Python package keeps them beside _core.
-      for (const std::filesystem::path& dir : {bin.parent_path() / "share" / "ssc", bin}) {
-        if (HasResources(dir)) return dir.lexically_normal().string();
-      }
-    }
-    return std::string(SSC_SOURCE_DIR);
+    const std::string installed = InstalledResourceDir();
+    return installed.empty() ? std::string(SSC_SOURCE_DIR) : installed;
   }();
   return found;
 }
@@ -386,6 +399,11 @@ ModelPtr LoadModel(const std::string& path, std::string* error) {
   InstallMuJoCoMessageHandlers();
   if (const std::string why = CheckInputFile(path); !why.empty()) {
     *error = path + ": " + why;
+    // A bare name ResolveScenePath could not find: say where scenes were looked for.
+    if (path.find('/') == std::string::npos) {
+      *error += " here or in " + ResourceDir() +
+                "/scenes (SSC_RESOURCE_DIR names the folder that holds models/ and scenes/)";
+    }
     return nullptr;
   }
   if (std::string e = CheckSceneFiles(path, std::filesystem::path(path).parent_path(), 0);

@@ -60,7 +60,9 @@ std::string ResolveScenePath(const std::string& scene);
 
 // The folder holding models/ and scenes/: SetResourceDir, else $SSC_RESOURCE_DIR (or
 // $SSC_SOURCE_DIR) when set, else <prefix>/share/ssc beside an installed binary, or the Python
-// package's folder, else the source tree this was built from (SSC_SOURCE_DIR at compile time).
+// package's folder, else <prefix>/share/ssc beside the plugin library the process loaded (a
+// program built against an installed prefix, not installed itself), else the source tree this
+// was built from (SSC_SOURCE_DIR at compile time).
 std::string ResourceDir();
 // Overrides all of the above (a program that knows where its models are; empty: look them up).
 void SetResourceDir(const std::string& dir);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # cmake --install into a temporary prefix; a downstream project finds it with find_package(ssc),
-# links, installs into the same prefix and finds the scenes there (not in the source tree); the
-# installed `ssc` runs a trial there without writing MUJOCO_LOG.TXT.
+# links, finds the prefix's scenes (not the source tree's) both from its build folder and once
+# installed into the same prefix; the installed `ssc` runs a trial there without writing
+# MUJOCO_LOG.TXT.
 #   install_test.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
 build="$1"; src="$2"
@@ -19,8 +20,13 @@ cmake -S "$src/tests/install/downstream" -B "$tmp/build" -DCMAKE_PREFIX_PATH="$p
   -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_BUILD_TYPE=Release >"$tmp/configure.log" 2>&1 ||
   { cat "$tmp/configure.log"; exit 1; }
 cmake --build "$tmp/build" -j2 >"$tmp/build.log" 2>&1 || { cat "$tmp/build.log"; exit 1; }
-cmake --install "$tmp/build" >/dev/null
 cd "$tmp"
+# Not yet installed, run from its build folder: the scenes of the prefix it was built against
+# (found from the plugin library it loaded), not the builder's source tree.
+env -u SSC_SOURCE_DIR -u SSC_RESOURCE_DIR "$tmp/build/ssc_downstream" | tee uninstalled.txt
+grep -qx "resources $prefix/share/ssc" uninstalled.txt ||
+  { echo "FAIL: the uninstalled downstream does not use the prefix's resources"; exit 1; }
+cmake --install "$tmp/build" >/dev/null
 env -u SSC_SOURCE_DIR -u SSC_RESOURCE_DIR "$prefix/bin/ssc_downstream" | tee out.txt
 grep -qx "resources $prefix/share/ssc" out.txt || { echo "FAIL: not the installed resources"; exit 1; }
 grep -q "phase approach\|phase move\|phase follow" out.txt || { echo "FAIL: no trial"; exit 1; }
