@@ -230,7 +230,7 @@ int RunCalibrateCommand(int argc, char** argv) {
               NumberRange::Closed(1, 100000));
   cmd.Integer("dynamic-seeds", &dyn_seeds, "trials per cell per evaluation (common seeds)",
               NumberRange::Closed(3, 1000));
-  cmd.Integer("threads", &dyn_threads, "worker threads", NumberRange::Closed(1, 256));
+  AddThreadsOption(&cmd, &dyn_threads);
   cmd.Choice("dynamic-algorithm", &dyn_algorithm, "NLopt algorithm", {"bobyqa", "sbplx"});
   cmd.Text("map", &dyn_map, "training map for --dynamic");
   long holdout_seed = 2;

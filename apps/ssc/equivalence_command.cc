@@ -83,7 +83,7 @@ int RunEquivalenceCommand(int argc, char** argv) {
            "the candidate's base seed (default: --seed, the same seeds as the reference)");
   cmd.Number("alpha", &spec.options.alpha, "level of each test", "",
              NumberRange::Positive(1).OpenHigh());
-  cmd.Integer("threads", &threads, "worker threads", NumberRange::Closed(1, 256));
+  AddThreadsOption(&cmd, &threads);
   cmd.OutputDir("out", &out_dir, "output directory");
   cmd.Flag("no-progress", &no_progress, "no progress bar even on a terminal");
   cmd.Flag("no-shared-approach", &no_shared_approach,

@@ -39,7 +39,7 @@ int RunObjectsCommand(int argc, char** argv) {
   AddEffectsOption(&cmd, "robot effects (docs/fidelity.md)", &effects_text, &spec.effects);
   std::string controller_name = "published", controller_params;
   AddControllerOptions(&cmd, &controller_name, &controller_params, &spec.controller);
-  cmd.Integer("threads", &threads, "worker threads", NumberRange::Closed(1, 256));
+  AddThreadsOption(&cmd, &threads);
   cmd.OutputDir("out", &out_dir, "output directory (scenes in OUT/scenes)");
   cmd.Flag("write-only", &write_only, "only write the scenes");
   cmd.Flag("no-plot", &no_plot, "skip the PNG plot");

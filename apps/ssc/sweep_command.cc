@@ -39,7 +39,7 @@ int RunSweepCommand(int argc, char** argv) {
                  NumberRange::Closed(kMinStepMm, kMaxStepMm));
   cmd.Integer("repeats", &repeats, "trials per grid point", NumberRange::Closed(1, 1000));
   cmd.Seed("seed", &spec.seed, "base seed (each trial's seed derives from it and its grid point)");
-  cmd.Integer("threads", &threads, "worker threads", NumberRange::Closed(1, 256));
+  AddThreadsOption(&cmd, &threads);
   cmd.OutputDir("out", &out_dir, "output directory (sweep.csv, success_maps.png)");
   cmd.Flag("no-plot", &no_plot, "skip the PNG plot");
   cmd.Flag("no-progress", &no_progress,

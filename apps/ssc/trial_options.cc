@@ -55,6 +55,10 @@ void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* c, TrialSettings* s)
   });
 }
 
+void AddThreadsOption(cli::Command* cmd, long* threads) {
+  cmd->Integer("threads", threads, "worker threads", NumberRange::Closed(1, 256));
+}
+
 void AddEffectsOption(cli::Command* cmd, const std::string& what, std::string* text,
                       RobotEffectsParams* effects) {
   cmd->Text("effects", text,

@@ -33,6 +33,9 @@ void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* config, TrialSetting
 void AddEffectsOption(cli::Command* cmd, const std::string& what, std::string* text,
                       RobotEffectsParams* effects);
 
+// --threads: worker threads, a whole number in [1, 256] (the one range every command takes).
+void AddThreadsOption(cli::Command* cmd, long* threads);
+
 // --controller NAME and --controller-param key=value,...: parsed onto *choice by a check
 // registered here (unknown names and keys, values out of range are errors naming the key and
 // its range). `name` and `params` hold the texts and must outlive the parse.

@@ -61,7 +61,7 @@ int RunTuneCommand(int argc, char** argv) {
            "controllers run on the same seeds at their defaults and drawn on the chart "
            "(comma-separated names, or 'none')");
   cmd.Seed("seed", &spec.sweep.seed, "base seed of the trials");
-  cmd.Integer("threads", &threads, "worker threads", NumberRange::Closed(1, 256));
+  AddThreadsOption(&cmd, &threads);
   cmd.OutputDir("out", &out_dir, "output directory (tune.csv, pareto.png, evals/)");
   cmd.Flag("no-plot", &no_plot, "skip the PNG chart");
   AddTrialSettingOptions(&cmd, &spec.sweep.base, &settings);

@@ -38,7 +38,7 @@ int RunValidateCommand(int argc, char** argv) {
   cmd.Integer("seeds", &seeds, "trials per cell (the first 3 give the class match)",
               NumberRange::Closed(3, 10000));
   cmd.Seed("seed", &spec.seed, "base seed, as ssc sweep --seed");
-  cmd.Integer("threads", &threads, "worker threads", NumberRange::Closed(1, 256));
+  AddThreadsOption(&cmd, &threads);
   cmd.OutputDir("out", &out_dir, "output directory");
   cmd.Flag("no-plot", &no_plot, "skip the PNG figure");
   cmd.Flag("no-progress", &no_progress,
