@@ -48,6 +48,7 @@ int RunTuneCommand(int argc, char** argv) {
            "the keys searched, key=lo:hi,... (the controller's keys and the law's pref_pa, "
            "beta, step_mm); default for fast: " +
                DefaultSearch("fast") + "; for published: " + DefaultSearch("published"));
+  cmd.Seed("seed", &spec.sweep.seed, "base seed of the trials");
   cmd.Integer("seeds", &seeds, "trials per evaluation (the same seeds at every point)",
               NumberRange::Closed(1, 1000));
   cmd.Integer("evals", &evaluations, "evaluations of the search (its budget)",
@@ -60,10 +61,9 @@ int RunTuneCommand(int argc, char** argv) {
   cmd.Text("reference", &references,
            "controllers run on the same seeds at their defaults and drawn on the chart "
            "(comma-separated names, or 'none')");
-  cmd.Seed("seed", &spec.sweep.seed, "base seed of the trials");
-  AddThreadsOption(&cmd, &threads);
   cmd.OutputDir("out", &out_dir, "output directory (tune.csv, pareto.png, evals/)");
   cmd.Flag("no-plot", &no_plot, "skip the PNG chart");
+  AddThreadsOption(&cmd, &threads);
   AddTrialSettingOptions(&cmd, &spec.sweep.base, &settings);
   cmd.Check([&]() -> std::string {
     const ControllerType* type = FindControllerType(settings.controller);
