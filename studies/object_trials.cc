@@ -95,6 +95,7 @@ ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,
   row.result = RunTrial(model, ObjectTrialConfig(spec, base), keep_log, &error);
   const double steps = row.result.sim_time_s / model->opt.timestep;
   row.step_cost_us = steps > 0 ? row.result.wall_time_s / steps * 1e6 : 0;
+  row.approach_compression_mm = (spec.trial.surface_top_z_m - row.result.hold_height_m) * 1e3;
   if (spec.closed()) {
     row.end_swept_deg = row.result.swept_deg;
   } else {
@@ -109,7 +110,7 @@ ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,
 std::string ObjectTableHeader() {
   return "object,kind,param,seed,outcome,contour_mean_mm,contour_max_mm,end_arc_mm,"
          "end_swept_deg,end_fillet_radius_mm,s_mm,follow_s,speed_mm_s,iterations,step_cost_us,"
-         "detail";
+         "approach_compression_mm,detail";
 }
 
 std::string ObjectTableRow(const ObjectTrialRow& r) {
@@ -118,13 +119,13 @@ std::string ObjectTableRow(const ObjectTrialRow& r) {
   for (char& ch : detail) {
     if (ch == ',' || ch == '"') ch = ';';
   }
-  std::snprintf(buf, sizeof(buf),
-                "%s,%s,%g,%llu,%s,%.3f,%.3f,%.2f,%.2f,%.2f,%.1f,%.1f,%.2f,%d,%.1f,%s",
-                r.object.c_str(), r.kind.c_str(), r.param, static_cast<unsigned long long>(r.seed),
-                OutcomeName(r.result.outcome), r.result.metrics.contour_mean_mm,
-                r.result.metrics.contour_max_mm, r.end_arc_mm, r.end_swept_deg,
-                r.end_fillet_radius_mm, r.result.metrics.s_mm, r.result.follow_time_s,
-                r.result.metrics.speed_mm_s, r.result.iterations, r.step_cost_us, detail.c_str());
+  std::snprintf(
+      buf, sizeof(buf), "%s,%s,%g,%llu,%s,%.3f,%.3f,%.2f,%.2f,%.2f,%.1f,%.1f,%.2f,%d,%.1f,%.3f,%s",
+      r.object.c_str(), r.kind.c_str(), r.param, static_cast<unsigned long long>(r.seed),
+      OutcomeName(r.result.outcome), r.result.metrics.contour_mean_mm,
+      r.result.metrics.contour_max_mm, r.end_arc_mm, r.end_swept_deg, r.end_fillet_radius_mm,
+      r.result.metrics.s_mm, r.result.follow_time_s, r.result.metrics.speed_mm_s,
+      r.result.iterations, r.step_cost_us, r.approach_compression_mm, detail.c_str());
   return buf;
 }
 

@@ -36,10 +36,11 @@ struct ObjectTrialRow {
   double param = 0;
   std::uint64_t seed = 0;
   TrialResult result;
-  double end_arc_mm = -1;            // open contours: tracked arc position at the end, mm
-  double end_swept_deg = 0;          // closed contours: swept angle at the end, deg (signed)
-  double end_fillet_radius_mm = -1;  // fillet only: radius where tracking ended, mm
-  double step_cost_us = 0;           // wall time per physics step of this trial
+  double end_arc_mm = -1;              // open contours: tracked arc position at the end, mm
+  double end_swept_deg = 0;            // closed contours: swept angle at the end, deg (signed)
+  double end_fillet_radius_mm = -1;    // fillet only: radius where tracking ended, mm
+  double step_cost_us = 0;             // wall time per physics step of this trial
+  double approach_compression_mm = 0;  // the lip plane below the top face after the approach
 };
 
 // Runs one object trial on `model` (a scene written by WriteObjectScenes) with `effects` (the

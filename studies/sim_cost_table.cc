@@ -1,14 +1,19 @@
 #include "studies/sim_cost_table.h"
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <sstream>
+#include <thread>
 
 #include "compare/replay.h"
 #include "compare/twin_log.h"
 #include "geometry/dimensions.h"
+#include "runtime/mujoco_model.h"
+#include "studies/edge_probe.h"
 
 namespace ssc {
 
@@ -129,6 +134,175 @@ std::string SimCostCsv(const std::vector<SimCostRow>& rows) {
   for (const SimCostRow& r : rows) {
     os << '"' << r.setting << "\"," << r.timestep_ms << ',' << r.wall_per_sim_s << ','
        << r.rms_log10 << ',' << r.rms_pa << ',' << (r.is_default ? 1 : 0) << '\n';
+  }
+  return os.str();
+}
+
+std::vector<SimTier> SimTiers() {
+  using K = ObjectSceneKind;
+  return {
+      {"arm", "UR-10, 16-segment lip (the reference)", "disk_benchmark", "probe_edge", true,
+       K::kArm},
+      {"gantry", "gantry, 16-segment lip", "disk_benchmark_gantry", "probe_edge", true, K::kGantry},
+      {"light", "gantry, single-point lip contacts, rigid carrier", "disk_benchmark_light",
+       "probe_edge", false, K::kGantry},
+      {"fast", "the light tier at a 4 ms step", "disk_benchmark_fast", "probe_edge", false,
+       K::kGantry},
+      {"flex", "gantry, the lip a flex skirt MuJoCo deforms", "disk_benchmark_flex",
+       "probe_edge_flex", true, K::kFlex},
+  };
+}
+
+bool SimTiersByNames(const std::string& names, std::vector<SimTier>* tiers, std::string* error) {
+  const std::vector<SimTier> all = SimTiers();
+  std::string valid;
+  for (const SimTier& t : all) valid += (valid.empty() ? "" : ", ") + t.name;
+  std::stringstream in(names);
+  std::string name;
+  tiers->clear();
+  while (std::getline(in, name, ',')) {
+    const auto it =
+        std::find_if(all.begin(), all.end(), [&](const SimTier& t) { return t.name == name; });
+    if (it == all.end()) {
+      *error = "unknown tier '" + name + "' (valid: " + valid + ")";
+      return false;
+    }
+    for (const SimTier& t : *tiers) {
+      if (t.name == name) {
+        *error = "tier '" + name + "' is listed twice";
+        return false;
+      }
+    }
+    tiers->push_back(*it);
+  }
+  if (tiers->empty() || names.back() == ',') {
+    *error = "no tier in '" + names + "' (valid: " + valid + ")";
+    return false;
+  }
+  return true;
+}
+
+namespace {
+
+// Runs fn(0..count-1) on `threads` threads.
+void ParallelFor(int count, int threads, const std::function<void(int)>& fn) {
+  std::atomic<int> next{0};
+  std::vector<std::thread> pool;
+  for (int t = 0; t < std::max(1, std::min(threads, count)); ++t) {
+    pool.emplace_back([&]() {
+      for (int i = next++; i < count; i = next++) fn(i);
+    });
+  }
+  for (std::thread& t : pool) t.join();
+}
+
+}  // namespace
+
+bool RunSimTierTable(const SimTierSpec& spec,
+                     const std::function<void(const SimTierRow&)>& row_done,
+                     std::vector<SimTierRow>* rows, std::string* error) {
+  for (const SimTier& tier : spec.tiers) {
+    SimTierRow row;
+    row.tier = tier.name;
+    // The straight-edge static curve: the cup held 1 mm into the plate at each offset.
+    auto probe = EdgeProbe3d::Create(ResolveScenePath(tier.probe_scene), error);
+    if (!probe) return false;
+    ProbeStudySpec ps;
+    for (int k = 0; k < 3; ++k) {
+      const ProbeReading r = probe->Read(-kStaticOffsetsMm[k] * 1e-3, 0, 0, 0.010,
+                                         ps.compression_mm * 1e-3, ps.settle_s);
+      row.static_pbar_pa[k] = r.pbar_pa;
+      if (k == 1) row.static_diff_pa = std::hypot(r.dpx_pa, r.dpy_pa);
+    }
+    // Fig. 6 on the disk: P_ref 100 Pa, dL 5 mm, beta 1.5 / 2.5 / 3.5, default effects.
+    ModelPtr disk = LoadModel(ResolveScenePath(tier.disk_scene), error);
+    if (!disk) return false;
+    const int n = 3 * spec.seeds;
+    std::vector<TrialResult> results(n);
+    ParallelFor(n, spec.threads, [&](int i) {
+      TrialConfig c;
+      c.law.p_ref_pa = 100;
+      c.law.beta = kFig6Beta[i / spec.seeds];
+      c.law.step_mm = 5;
+      c.seed = spec.seed + static_cast<std::uint64_t>(i % spec.seeds);
+      std::string e;
+      results[i] = RunTrial(disk.get(), c, false, &e);
+      if (results[i].outcome == Outcome::kRunning) results[i].detail = e;
+    });
+    double wall = 0, steps = 0, compression = 0;
+    for (int i = 0; i < n; ++i) {
+      const TrialResult& r = results[i];
+      const int b = i / spec.seeds;
+      wall += r.wall_time_s;
+      steps += r.sim_time_s / disk->opt.timestep;
+      compression += (0.010 - r.hold_height_m) * 1e3 / n;
+      ++row.trials[b];
+      if (r.outcome != Outcome::kSuccess) continue;
+      ++row.successes[b];
+      row.sigma_r_mm[b] += r.metrics.sigma_r_mm;
+      row.s_c[b] += r.metrics.s_c;
+      row.dr_mm[b] += r.metrics.dr_mm;
+    }
+    for (int b = 0; b < 3; ++b) {
+      const double k = std::max(1, row.successes[b]);
+      row.sigma_r_mm[b] /= k;
+      row.s_c[b] /= k;
+      row.dr_mm[b] /= k;
+    }
+    row.us_per_step = steps > 0 ? wall / steps * 1e6 : 0;
+    row.approach_compression_mm = compression;
+    // Outcomes on the objects, in the tier's object scenes.
+    if (tier.has_object_scenes && !spec.objects.empty()) {
+      std::vector<std::string> outcomes(spec.objects.size());
+      ParallelFor(static_cast<int>(spec.objects.size()), spec.threads, [&](int i) {
+        const ObjectSpec& o = spec.objects[i];
+        std::string e;
+        const std::string dir = spec.object_dir + "/" + tier.name;
+        ModelPtr m;
+        if (WriteObjectFiles(o, dir, SourceDir(), &e)) {
+          m = LoadModel(dir + "/" + ObjectSceneFile(ObjectFileNames(o.name), tier.object_kind), &e);
+        }
+        if (!m) {
+          outcomes[i] = o.name + " not run: " + e;
+          return;
+        }
+        ContourLawParams law;
+        law.step_mm = 0.5;
+        const ObjectTrialRow r =
+            RunObjectTrial(m.get(), o, law, FittedRobotEffects(), spec.seed, false);
+        char text[160];
+        std::snprintf(text, sizeof(text), "%s %s (%.1f %s)", o.name.c_str(),
+                      OutcomeName(r.result.outcome), o.closed() ? r.end_swept_deg : r.end_arc_mm,
+                      o.closed() ? "deg" : "mm");
+        outcomes[i] = text;
+      });
+      for (const std::string& o : outcomes) row.objects += (row.objects.empty() ? "" : "; ") + o;
+    }
+    rows->push_back(row);
+    if (row_done) row_done(row);
+  }
+  return true;
+}
+
+std::string SimTierCsv(const std::vector<SimTierRow>& rows) {
+  std::ostringstream os;
+  os << "tier,us_per_step,approach_compression_mm,pbar_0.7mm_pa,pbar_2.5mm_pa,pbar_3.2mm_pa,"
+        "diff_2.5mm_pa";
+  for (const char* m : {"sigma_r_mm", "s_c", "dr_mm", "successes", "trials"}) {
+    for (double b : kFig6Beta) os << ',' << m << "_beta" << b;
+  }
+  os << ",objects\n";
+  for (const SimTierRow& r : rows) {
+    os << r.tier << ',' << r.us_per_step << ',' << r.approach_compression_mm;
+    for (double p : r.static_pbar_pa) os << ',' << p;
+    os << ',' << r.static_diff_pa;
+    for (const auto* a : {&r.sigma_r_mm, &r.s_c, &r.dr_mm}) {
+      for (double v : *a) os << ',' << v;
+    }
+    for (const auto* a : {&r.successes, &r.trials}) {
+      for (int v : *a) os << ',' << v;
+    }
+    os << ",\"" << r.objects << "\"\n";
   }
   return os.str();
 }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "runtime/trial.h"
+#include "studies/object_trials.h"
 #include "studies/tool_variants.h"
 
 namespace ssc {
@@ -54,6 +55,52 @@ bool RunSimCostTable(const TrialConfig& trial_config, const TrialResult& trial,
 // The table as CSV: setting, timestep_ms, wall_per_sim_s, rms_log10_vs_reference,
 // rms_pa_vs_reference, is_default.
 std::string SimCostCsv(const std::vector<SimCostRow>& rows);
+
+// The fidelity tiers side by side (ssc charts --tiers): per tier, its cost per step, the
+// straight-edge static curve, the Fig. 6 targets on the disk and outcomes on a few test objects.
+struct SimTier {
+  std::string name;         // picked by this name
+  std::string what;         // one line for the table
+  std::string disk_scene;   // the disk benchmark (name under scenes/)
+  std::string probe_scene;  // the straight-edge probe (mocap cup; name under scenes/)
+  bool has_object_scenes = false;
+  ObjectSceneKind object_kind = ObjectSceneKind::kGantry;
+};
+// arm, gantry, light, fast, flex.
+std::vector<SimTier> SimTiers();
+// Tiers by comma-separated names; false + *error naming an unknown or repeated one.
+bool SimTiersByNames(const std::string& names, std::vector<SimTier>* tiers, std::string* error);
+
+struct SimTierSpec {
+  std::vector<SimTier> tiers;
+  int seeds = 2;                    // disk trials per beta (seeds seed, seed + 1, ...)
+  std::uint64_t seed = 7;           // unseen by the fits
+  std::vector<ObjectSpec> objects;  // run with seed `seed`, dL 0.5 mm (none: skipped)
+  std::string object_dir;           // where the objects' scenes are written
+  int threads = 1;
+};
+
+// The published targets the table is read against (docs/pneumatics.md, docs/fidelity.md).
+inline constexpr double kStaticOffsetsMm[3] = {0.7, 2.5, 3.2};  // P̄ 40, 100, 200 Pa there
+inline constexpr double kFig6Beta[3] = {1.5, 2.5, 3.5};         // P_ref 100 Pa, dL 5 mm
+
+struct SimTierRow {
+  std::string tier;
+  double us_per_step = 0;                  // disk trials: wall time per physics step, this run
+  double approach_compression_mm = 0;      // disk trials: lip plane below the top after approach
+  std::array<double, 3> static_pbar_pa{};  // probe at kStaticOffsetsMm inside the edge
+  double static_diff_pa = 0;               // |(dPx, dPy)| at 2.5 mm inside
+  std::array<double, 3> sigma_r_mm{}, s_c{}, dr_mm{};  // per kFig6Beta, mean over successes
+  std::array<int, 3> successes{}, trials{};
+  std::string objects;  // "name outcome (end); ..." ("" when skipped or not available)
+};
+
+// Runs every tier; `row_done` (optional) sees each finished row. False + *error on a load
+// failure.
+bool RunSimTierTable(const SimTierSpec& spec,
+                     const std::function<void(const SimTierRow&)>& row_done,
+                     std::vector<SimTierRow>* rows, std::string* error);
+std::string SimTierCsv(const std::vector<SimTierRow>& rows);
 
 }  // namespace ssc
 

@@ -7,6 +7,10 @@ chamber walls, and loaded by each chamber's vacuum (the plugin's lip_vacuum_load
 The skirt's shape and material are the one home of those facts (SKIRT below); the published cup
 fixes the rim (the 11 mm opening); the rest is argued in docs/pneumatics.md (the flex skirt) with
 its range. Run after changing either: tools/make_flex_tool.py (a test checks the file is current).
+
+A variant for a sensitivity run: tools/make_flex_tool.py --set height_mm=2.5 --set friction=1.0
+--out PATH writes the model with those values to PATH (and nothing else; the values must be
+numbers, the keys SKIRT's).
 """
 import math
 import pathlib
@@ -153,6 +157,37 @@ def doc_with_table(doc):
     return doc[:start] + "\n" + markdown_table() + "\n" + doc[end:]
 
 
+def parse_args(argv):
+    """(check, overrides, out) from argv; exits with a message naming a bad argument."""
+    import argparse
+    parser = argparse.ArgumentParser(description="Writes models/ssc_tool_flex.xml and the skirt "
+                                     "table in docs/pneumatics.md, or a variant model with --out.")
+    parser.add_argument("--check", action="store_true", help="fail when either file is stale")
+    parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                        help="override a skirt parameter (only with --out): " + ", ".join(SKIRT))
+    parser.add_argument("--out", help="write the variant model here instead (docs untouched)")
+    args = parser.parse_args(argv)
+    overrides = {}
+    for item in args.set:
+        key, sep, text = item.partition("=")
+        if not sep or key not in SKIRT:
+            parser.error(f"--set {item!r}: expected KEY=VALUE with KEY one of {', '.join(SKIRT)}")
+        try:
+            number = float(text)
+        except ValueError:
+            parser.error(f"--set {item!r}: {text!r} is not a number")
+        if not math.isfinite(number) or number <= 0:
+            parser.error(f"--set {item!r}: must be a positive finite number")
+        if key in ("rings", "sectors") and (number != int(number) or number < 2):
+            parser.error(f"--set {item!r}: must be a whole number >= 2")
+        overrides[key] = number
+    if overrides and not args.out:
+        parser.error("--set needs --out: the repository's model keeps the SKIRT values")
+    if args.out and args.check:
+        parser.error("--check compares the repository's files; it takes no --out")
+    return args.check, overrides, args.out
+
+
 def tool_xml(walls=True, vacuum_load=True):
     """The flex tool's MJCF; tests build variants without the walls or the vacuum load."""
     text = (ROOT / "models" / "ssc_tool.xml").read_text()
@@ -175,10 +210,17 @@ def tool_xml(walls=True, vacuum_load=True):
 
 
 def main():
+    check, overrides, variant_out = parse_args(sys.argv[1:])
+    if variant_out:
+        for key, number in overrides.items():
+            SKIRT[key] = (number,) + SKIRT[key][1:]
+        text = tool_xml()
+        pathlib.Path(variant_out).write_text(text)
+        return
     text = tool_xml()
     out = ROOT / "models" / "ssc_tool_flex.xml"
     doc = DOC.read_text()
-    if "--check" in sys.argv:
+    if check:
         if out.read_text() != text:
             sys.exit(f"{out} is stale: run tools/make_flex_tool.py")
         if doc_with_table(doc) != doc:

@@ -66,7 +66,22 @@ void GoalTracker::Start(const TrialGoal& goal, std::shared_ptr<const ContourPath
 
 void GoalTracker::Add(const Point2& p) {
   if (goal_.kind == TrialGoal::Kind::kSweptAngle) sweep_.Add(p[0], p[1]);
-  if (edge_) Track(p, arc_m_ - kArcTrackWindowM, arc_m_ + kArcTrackWindowM);
+  if (edge_) Track(p, arc_m_ - kArcTrackWindowM, ForwardReach(p));
+}
+
+double GoalTracker::ForwardReach(const Point2& p) const {
+  double reach = arc_m_ + kArcTrackWindowM;
+  if (goal_.band_m <= 0) return reach;
+  // With a band, the edge ahead that lies under the cup body (within the band of the cup centre)
+  // is covered: a corner whose apex passes under the body is followed round it however sharp,
+  // while a part of the edge reached only across open ground stays out of reach.
+  const double end = edge_->closed() ? arc_m_ + edge_->Length() : edge_->Length();
+  for (double s = arc_m_ + kReachStepM; s <= end; s += kReachStepM) {
+    const Point2 q = edge_->PointAt(s);
+    if (std::hypot(q[0] - p[0], q[1] - p[1]) > goal_.band_m) break;
+    reach = std::max(reach, s);
+  }
+  return reach;
 }
 
 void GoalTracker::Track(const Point2& p, double s_min, double s_max) {

@@ -12,7 +12,9 @@
 //
 // The tracked arc position follows the cup along the edge: each sample may move it at most
 // kArcTrackWindowM from the previous one, so it cannot jump to another part of the contour that
-// passes close by.
+// passes close by; with a band it may also move forward over any stretch of edge that lies
+// under the cup body (within band_m of the cup centre): the apex of a sharp corner that passes
+// under the body is followed round, one the cup turns back from short of it is not.
 #ifndef SSC_CONTROLLER_PURE_TRIAL_GOAL_H_
 #define SSC_CONTROLLER_PURE_TRIAL_GOAL_H_
 
@@ -28,6 +30,7 @@ namespace ssc {
 
 inline constexpr double kLoopSweepDeg = 355;       // the implementation's "one loop"
 inline constexpr double kArcTrackWindowM = 0.010;  // largest move of the tracked arc position
+inline constexpr double kReachStepM = 0.25e-3;     // resolution of the stretch under the body
 // The band of following: the edge stays under the cup body (its radius), m.
 inline constexpr double kFollowBandM = 0.5e-3 * kCupBodyDiameterMm;
 
@@ -70,6 +73,8 @@ class GoalTracker {
   double Progress() const;  // kSweptAngle: swept angle in the goal's sense, deg
   bool ProgressReached() const;
   void Track(const Point2& p, double s_min, double s_max);
+  // The largest arc position the tracked one may reach from p this sample.
+  double ForwardReach(const Point2& p) const;
 
   TrialGoal goal_;
   std::shared_ptr<const ContourPath> edge_;

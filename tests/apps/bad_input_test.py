@@ -199,6 +199,10 @@ CASES = [
     (["view", "--speed", "0"], 2, "--speed"),
     (["view", "no_such_object"], 2, "no_such_object"),
     (["view", "fillet", "--scene-kind", "robot"], 2, "gantry, arm, flex"),
+    (["charts", "--tiers", "gantry,rigid"], 2, "unknown tier 'rigid'"),
+    (["charts", "--tiers", "flex,flex"], 2, "twice"),
+    (["charts", "--tier-objects", "fillet,nothing"], 2, "unknown object 'nothing'"),
+    (["charts", "--tier-seeds", "0"], 2, "--tier-seeds"),
     (["view", "disk_benchmark", "--scene-kind", "flex"], 2, "disk_benchmark_flex"),
     (["nosuchcommand"], 2, "unknown command"),
     # Second round (docs/reliability.md): inputs found bad only after the output was made, and

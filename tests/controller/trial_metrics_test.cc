@@ -186,6 +186,35 @@ TEST(TrialGoalTest, LeavingTheBandLosesTheGoal) {
   EXPECT_EQ(blind.status(), GoalStatus::kLost);
 }
 
+// A sharp convex corner: the first edge runs east to the apex at the origin, the second leaves
+// back at 180 - a deg; the cup turns back from the first edge at `turn_m` before the apex, 3 mm
+// inside, and walks the second edge back 3 mm inside it. The goal is 23 mm past the apex.
+GoalStatus RoundSharpCorner(double angle_deg, double turn_m) {
+  const double a = (180 - angle_deg) * M_PI / 180;
+  auto edge = std::make_shared<ContourPath>(
+      ContourPath::Polygon({{-0.06, 0}, {0, 0}, {0.06 * std::cos(a), 0.06 * std::sin(a)}}, false));
+  TrialGoal goal = TrialGoal::GoalPoint(0.083);
+  goal.band_m = kFollowBandM;
+  GoalTracker t;
+  t.Start(goal, edge, {-0.04, 0.003});
+  for (double x = -0.04; x <= -turn_m; x += 0.0005) t.Add({x, 0.003});
+  // Inward normal of the second edge (object on the left of its direction).
+  const Point2 n{-std::sin(a), std::cos(a)};
+  const double along0 = turn_m / std::cos(M_PI - a);  // where the turn meets the second edge
+  for (double u = along0; u <= 0.06 && t.status() == GoalStatus::kPending; u += 0.0005) {
+    t.Add({u * std::cos(a) - 0.003 * n[0], u * std::sin(a) - 0.003 * n[1]});
+  }
+  return t.status();
+}
+
+// The apex passes under the cup body (within the band): the corner is followed round however
+// sharp the turn; a cup that turns back with the apex beyond its body has not followed it.
+TEST(TrialGoalTest, ASharpCornerIsFollowedWhenItsApexPassesUnderTheBody) {
+  EXPECT_EQ(RoundSharpCorner(45, 0.0084), GoalStatus::kReached);  // apex 9 mm from the cup
+  EXPECT_EQ(RoundSharpCorner(15, 0.029), GoalStatus::kLost);      // apex 29 mm away
+  EXPECT_EQ(RoundSharpCorner(30, 0.0134), GoalStatus::kLost);     // apex 13.7 mm away
+}
+
 TEST(TrialGoalTest, ADiskSmallerThanTheOpeningIsNeverFollowed) {
   const Point2 c{0.65, 0};
   // 10 mm disk, opening 11 mm: the cup sits over it and turns about its centre, 1 mm off it.
