@@ -141,15 +141,16 @@ std::string SimCostCsv(const std::vector<SimCostRow>& rows) {
 std::vector<SimTier> SimTiers() {
   using K = ObjectSceneKind;
   return {
-      {"arm", "UR-10, 16-segment lip (the reference)", "disk_benchmark", "probe_edge", true,
+      {"arm", "UR-10, 16-segment lip (the reference)", "disk_benchmark", "probe_edge", 1.0, true,
        K::kArm},
-      {"gantry", "gantry, 16-segment lip", "disk_benchmark_gantry", "probe_edge", true, K::kGantry},
+      {"gantry", "gantry, 16-segment lip", "disk_benchmark_gantry", "probe_edge", 1.0, true,
+       K::kGantry},
       {"light", "gantry, single-point lip contacts, rigid carrier", "disk_benchmark_light",
-       "probe_edge", false, K::kGantry},
-      {"fast", "the light tier at a 4 ms step", "disk_benchmark_fast", "probe_edge", false,
+       "probe_edge", 1.0, false, K::kGantry},
+      {"fast", "the light tier at a 4 ms step", "disk_benchmark_fast", "probe_edge", 1.0, false,
        K::kGantry},
       {"flex", "gantry, the lip a flex skirt MuJoCo deforms", "disk_benchmark_flex",
-       "probe_edge_flex", true, K::kFlex},
+       "probe_edge_flex", 0.3, true, K::kFlex},
   };
 }
 
@@ -204,13 +205,14 @@ bool RunSimTierTable(const SimTierSpec& spec,
   for (const SimTier& tier : spec.tiers) {
     SimTierRow row;
     row.tier = tier.name;
-    // The straight-edge static curve: the cup held 1 mm into the plate at each offset.
+    // The straight-edge static curve: the cup held into the plate as its approach presses it
+    // (the segment lip about 1 mm, the skirt 0.3 mm: docs/pneumatics.md).
     auto probe = EdgeProbe3d::Create(ResolveScenePath(tier.probe_scene), error);
     if (!probe) return false;
     ProbeStudySpec ps;
     for (int k = 0; k < 3; ++k) {
       const ProbeReading r = probe->Read(-kStaticOffsetsMm[k] * 1e-3, 0, 0, 0.010,
-                                         ps.compression_mm * 1e-3, ps.settle_s);
+                                         tier.probe_press_mm * 1e-3, ps.settle_s);
       row.static_pbar_pa[k] = r.pbar_pa;
       if (k == 1) row.static_diff_pa = std::hypot(r.dpx_pa, r.dpy_pa);
     }

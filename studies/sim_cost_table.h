@@ -59,10 +59,11 @@ std::string SimCostCsv(const std::vector<SimCostRow>& rows);
 // The fidelity tiers side by side (ssc charts --tiers): per tier, its cost per step, the
 // straight-edge static curve, the Fig. 6 targets on the disk and outcomes on a few test objects.
 struct SimTier {
-  std::string name;         // picked by this name
-  std::string what;         // one line for the table
-  std::string disk_scene;   // the disk benchmark (name under scenes/)
-  std::string probe_scene;  // the straight-edge probe (mocap cup; name under scenes/)
+  std::string name;             // picked by this name
+  std::string what;             // one line for the table
+  std::string disk_scene;       // the disk benchmark (name under scenes/)
+  std::string probe_scene;      // the straight-edge probe (mocap cup; name under scenes/)
+  double probe_press_mm = 1.0;  // the lip's press in the probe: what the tier's approach gives
   bool has_object_scenes = false;
   ObjectSceneKind object_kind = ObjectSceneKind::kGantry;
 };
@@ -88,7 +89,8 @@ struct SimTierRow {
   std::string tier;
   double us_per_step = 0;                  // disk trials: wall time per physics step, this run
   double approach_compression_mm = 0;      // disk trials: lip plane below the top after approach
-  std::array<double, 3> static_pbar_pa{};  // probe at kStaticOffsetsMm inside the edge
+  std::array<double, 3> static_pbar_pa{};  // probe at kStaticOffsetsMm inside the edge, pressed
+                                           // probe_press_mm
   double static_diff_pa = 0;               // |(dPx, dPy)| at 2.5 mm inside
   std::array<double, 3> sigma_r_mm{}, s_c{}, dr_mm{};  // per kFig6Beta, mean over successes
   std::array<int, 3> successes{}, trials{};

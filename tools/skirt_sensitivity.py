@@ -5,7 +5,7 @@ of the flex lip").
 Each variant is the skirt of tools/make_flex_tool.py with one parameter at an end of its argued
 range (the SKIRT table), the others at their values; the baseline is the model as it stands. Per
 variant, seed 1, the flex tier:
-  - the straight-edge static reading: the cup held 1 mm into a plate, its centre 2.5 mm inside
+  - the straight-edge static reading: the cup held 0.3 mm into a plate, its centre 2.5 mm inside
     the edge (`ssc probe --scene probe_edge_flex`, 0.1 s to settle): mean P and |(dPx, dPy)|;
   - the approach compression: the lip plane below the top face when following starts;
   - one concave corner (corner_a270) and the fillet (`ssc objects --scene-kind flex`): outcome,
@@ -14,6 +14,7 @@ variant, seed 1, the flex tier:
 
 Usage: tools/skirt_sensitivity.py [--ssc build/bin/ssc] [--out out/skirt_sensitivity]
                                   [--threads 2] [--params height_mm,friction,...]
+                                  [--static-only]  (the probe only: seconds per variant)
 Writes OUT/sensitivity.md (a Markdown table) and OUT/<variant>/ (its runs). Variants run in a
 copy of the resources (SSC_RESOURCE_DIR) whose models/ssc_tool_flex.xml is the variant.
 """
@@ -38,6 +39,7 @@ RANGES = {
     "friction": (0.5, 1.0),
 }
 OBJECTS = "corner_a270,fillet"
+PRESS_MM = 0.3  # the approach's press with the skirt (docs/pneumatics.md)
 
 
 def resources(variant_dir, overrides):
@@ -65,20 +67,28 @@ def run(cmd, env, log):
         sys.exit(f"{' '.join(cmd)} failed (exit {r.returncode}); see {log}")
 
 
-def measure(ssc, variant_dir, overrides, threads):
+def measure(ssc, variant_dir, overrides, threads, static_only):
     res = resources(variant_dir, overrides)
     env = dict(os.environ, SSC_RESOURCE_DIR=str(res))
     c0 = os.times()
     run([ssc, "probe", "--scene", "probe_edge_flex", "--from", "2.5", "--to", "2.5",
+         "--compression", str(PRESS_MM),
          "--disk-step", "360", "--no-plot", "--out", str(variant_dir / "probe")], env,
         variant_dir / "probe.log")
+    with open(variant_dir / "probe" / "edge.csv") as f:
+        edge = next(csv.DictReader(f))
+    if static_only:
+        c1 = os.times()
+        return {"pbar": float(edge["pbar_pa"]), "diff": float(edge["diff_pa"]),
+                "compression": float("nan"), "corner": "not run", "sharp": float("nan"),
+                "fillet": "not run",
+                "cpu_s": (c1.children_user + c1.children_system) -
+                         (c0.children_user + c0.children_system)}
     run([ssc, "objects", "--scene-kind", "flex", "--objects", OBJECTS, "--seeds", "1", "--seed",
          "1", "--threads", str(threads), "--no-plot", "--out", str(variant_dir / "objects")], env,
         variant_dir / "objects.log")
     c1 = os.times()
     cpu_s = (c1.children_user + c1.children_system) - (c0.children_user + c0.children_system)
-    with open(variant_dir / "probe" / "edge.csv") as f:
-        edge = next(csv.DictReader(f))
     with open(variant_dir / "objects" / "objects.csv") as f:
         rows = {r["object"]: r for r in csv.DictReader(f)}
     sharp = []
@@ -105,6 +115,8 @@ def main():
     p.add_argument("--threads", type=int, default=2, choices=range(1, 65), metavar="1-64")
     p.add_argument("--params", default=",".join(RANGES),
                    help="parameters to vary, among " + ", ".join(RANGES))
+    p.add_argument("--static-only", action="store_true",
+                   help="only the straight-edge static reading (seconds per variant); no trials")
     a = p.parse_args()
     params = a.params.split(",")
     for k in params:
@@ -121,15 +133,21 @@ def main():
     lines = ["| variant | P̄ / \\|ΔP\\| at 2.5 mm (Pa) | approach compression (mm) | "
              "corner_a270 | fillet \\|ΔP\\| at 10-20 mm (Pa) | fillet | CPU s |",
              "| --- | --- | --- | --- | --- | --- | --- |"]
+    if a.static_only:
+        lines = ["| variant | P̄ / \\|ΔP\\| at 2.5 mm (Pa) |", "| --- | --- |"]
     total = 0.0
     for name, overrides in variants:
-        m = measure(a.ssc, out / name.replace("=", "_"), overrides, a.threads)
+        m = measure(a.ssc, out / name.replace("=", "_"), overrides, a.threads, a.static_only)
         total += m["cpu_s"]
         base = make_flex_tool.SKIRT
         label = name if not overrides else \
             f"`{name}` (is {base[next(iter(overrides))][0]:g})"
-        lines.append(f"| {label} | {m['pbar']:.0f} / {m['diff']:.0f} | {m['compression']:.2f} | "
-                     f"{m['corner']} | {m['sharp']:.0f} | {m['fillet']} | {m['cpu_s']:.0f} |")
+        if a.static_only:
+            lines.append(f"| {label} | {m['pbar']:.0f} / {m['diff']:.0f} |")
+        else:
+            lines.append(f"| {label} | {m['pbar']:.0f} / {m['diff']:.0f} | "
+                         f"{m['compression']:.2f} | {m['corner']} | {m['sharp']:.0f} | "
+                         f"{m['fillet']} | {m['cpu_s']:.0f} |")
         print(lines[-1], flush=True)
     lines.append(f"\n{len(variants)} variants, {total:.0f} s of CPU.")
     (out / "sensitivity.md").write_text("\n".join(lines) + "\n")
