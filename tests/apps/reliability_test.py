@@ -94,14 +94,16 @@ class ReliabilityTest(unittest.TestCase):
 
     def test_two_sweeps_on_one_folder_and_sigterm_mid_sweep(self):
         out = os.path.join(self.tmp, "shared")
-        args = [SSC] + SWEEP + ["--repeats", "4", "--out", out]
+        # Enough trials that the signal lands mid-sweep however fast the default scene runs.
+        repeats = 16
+        args = [SSC] + SWEEP + ["--repeats", str(repeats), "--out", out]
         first = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         csv_path = os.path.join(out, "sweep.csv")
         deadline = time.time() + 120
         while time.time() < deadline and not (os.path.exists(csv_path + ".lock") and
                                               os.path.exists(csv_path)):
             time.sleep(0.05)
-        second = run(SWEEP + ["--repeats", "4", "--out", out])
+        second = run(SWEEP + ["--repeats", str(repeats), "--out", out])
         self.assertEqual(second.returncode, 1, second.stderr)
         self.assertIn("being written by another sweep (pid %d" % first.pid, second.stderr)
         # SIGTERM once a row is in: the finished rows stay, whole; the lock goes.
@@ -112,14 +114,14 @@ class ReliabilityTest(unittest.TestCase):
         self.assertEqual(first.returncode, 130, err)
         kept = rows(csv_path)
         self.assertGreaterEqual(len(kept), 1)
-        self.assertLess(len(kept), 4, "the sweep ended before SIGTERM: no interruption tested")
+        self.assertLess(len(kept), repeats, "the sweep ended before SIGTERM: no interruption tested")
         with open(csv_path) as f:
             self.assertTrue(f.read().endswith("\n"))
         self.assertEqual(leftovers(out), [])
-        r = run(SWEEP + ["--repeats", "4", "--out", out])
+        r = run(SWEEP + ["--repeats", str(repeats), "--out", out])
         self.assertEqual(r.returncode, 0, r.stderr)
         final = rows(csv_path)
-        self.assertEqual(sorted(int(x["repeat"]) for x in final), [0, 1, 2, 3])
+        self.assertEqual(sorted(int(x["repeat"]) for x in final), list(range(repeats)))
         self.assertEqual([x["seed"] for x in final[:len(kept)]], [x["seed"] for x in kept])
 
     # Writes fail whole.
