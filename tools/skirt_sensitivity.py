@@ -56,7 +56,10 @@ def resources(variant_dir, overrides):
     for k, v in overrides.items():
         args += ["--set", f"{k}={v}"]
     subprocess.run(args, check=True)
-    (res / "scenes").symlink_to(ROOT / "scenes")
+    # A copy, not a link: scenes written from these templates (ssc objects) resolve the tool's
+    # path through the template's real folder, and a linked folder leads back to the repository's
+    # own skirt.
+    shutil.copytree(ROOT / "scenes", res / "scenes")
     return res
 
 
