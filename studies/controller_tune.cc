@@ -10,11 +10,13 @@
 #include <nlopt.hpp>
 #include <sstream>
 
+#include "common/output_file.h"
 #include "controller/pure/trial_outcome.h"
 #include "studies/equivalence.h"
 #include "studies/map_scores.h"
 #include "studies/sweep_io.h"
 #include "studies/trial_io.h"
+#include "studies/unit_box_search.h"
 
 namespace ssc {
 namespace {
@@ -321,42 +323,20 @@ bool RunTune(const mjModel* m, const TuneSpec& spec,
     }
     return -e.score;
   };
-  const nlopt::algorithm algorithm = spec.algorithm == "sbplx"    ? nlopt::LN_SBPLX
-                                     : spec.algorithm == "cobyla" ? nlopt::LN_COBYLA
-                                                                  : nlopt::LN_BOBYQA;
-  nlopt::opt opt(algorithm, static_cast<unsigned>(n));
-  opt.set_lower_bounds(std::vector<double>(n, 0.0));
-  opt.set_upper_bounds(std::vector<double>(n, 1.0));
-  opt.set_maxeval(spec.evaluations);
-  opt.set_initial_step(std::vector<double>(n, 0.25));
-  opt.set_min_objective([](const std::vector<double>& x, std::vector<double>&,
-                           void* data) { return (*static_cast<decltype(objective)*>(data))(x); },
-                        &objective);
-  std::vector<double> x = x0;
-  double f = 0;
-  try {
-    opt.optimize(x, f);
-  } catch (const nlopt::forced_stop&) {
-    if (!eval_error.empty()) {
-      *error = eval_error;
-      return false;
-    }
-  } catch (const std::exception&) {
-    // Budget reached or round-off: every evaluation is already in the result.
+  if (!MinimiseOnUnitBox({spec.algorithm, spec.evaluations, 0.25}, x0, objective) &&
+      !eval_error.empty()) {
+    *error = eval_error;
+    return false;
   }
   std::vector<std::array<double, 2>> points;
   for (const TuneEvaluation& e : result->evaluations) {
     points.push_back({e.speed_mm_s, e.trials ? static_cast<double>(e.successes) / e.trials : 0});
   }
   for (std::size_t i : ParetoFront(points)) result->evaluations[i].pareto = true;
-  const std::string csv = (std::filesystem::path(spec.out_dir) / "tune.csv").string();
-  std::ofstream out(csv);
-  out << TuneCsvHeader(spec.keys) << '\n';
-  for (const TuneEvaluation& e : result->evaluations) out << TuneCsvRow(e, n) << '\n';
-  if (!out) {
-    *error = "cannot write " + csv;
-    return false;
-  }
+  OutputFile csv((std::filesystem::path(spec.out_dir) / "tune.csv").string());
+  csv.stream() << TuneCsvHeader(spec.keys) << '\n';
+  for (const TuneEvaluation& e : result->evaluations) csv.stream() << TuneCsvRow(e, n) << '\n';
+  if (!csv.Commit(error)) return false;
   result->wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return true;
 }

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "calibration/published_targets.h"
+#include "studies/unit_box_search.h"
 #include "studies/validation.h"
 
 namespace ssc {
@@ -204,24 +205,9 @@ bool FitDynamic(const mjModel* m, const DynamicFitSpec& spec,
     }
     return cost;
   };
-  nlopt::opt opt(spec.algorithm == "sbplx" ? nlopt::LN_SBPLX : nlopt::LN_BOBYQA,
-                 static_cast<unsigned>(params.size()));
-  opt.set_lower_bounds(std::vector<double>(params.size(), 0.0));
-  opt.set_upper_bounds(std::vector<double>(params.size(), 1.0));
-  opt.set_maxeval(spec.max_evaluations);
-  opt.set_initial_step(std::vector<double>(params.size(), 0.25));
-  opt.set_min_objective([](const std::vector<double>& x, std::vector<double>&,
-                           void* data) { return (*static_cast<decltype(objective)*>(data))(x); },
-                        &objective);
-  std::vector<double> x = x0;
-  double f = 0;
-  try {
-    opt.optimize(x, f);
-  } catch (const nlopt::forced_stop&) {
+  if (!MinimiseOnUnitBox({spec.algorithm, spec.max_evaluations, 0.25}, x0, objective)) {
     *error = "dynamic fit: " + eval_error;
     return false;
-  } catch (const std::exception&) {
-    // Budget reached or roundoff: NLopt still leaves the best point found; ours is best_x.
   }
   result->best = config_at(best_x);
   result->values.clear();
