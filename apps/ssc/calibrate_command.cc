@@ -17,6 +17,7 @@
 #include "runtime/mujoco_model.h"
 #include "studies/loop_calibration.h"
 #include "studies/success_map_fit.h"
+#include "studies/sweep.h"
 #include "studies/tool_variants.h"
 #include "studies/validation.h"
 #include "studies/wander_fit.h"
@@ -224,7 +225,7 @@ int RunCalibrateCommand(int argc, char** argv) {
   TrialSettings settings;
   cmd.Flag("dynamic", &dynamic,
            "fit the real loop and the robot effects (docs/fidelity.md) to the published success "
-           "map at dL 5 mm and the Fig. 6 targets, on the gantry scene; skips the static fit");
+           "map at dL 5 mm and the Fig. 6 targets, on --scene; skips the static fit");
   cmd.Text("dynamic-keys", &dyn_keys, DynamicKeysHelp());
   cmd.Integer("dynamic-evals", &dyn_evals, "evaluation budget (each runs seeds x cells trials)",
               NumberRange::Closed(1, 100000));
@@ -242,12 +243,13 @@ int RunCalibrateCommand(int argc, char** argv) {
   cmd.Number("dynamic-metric-weight", &dyn_weight,
              "weight of the Fig. 6 targets against the map's log-loss", "",
              NumberRange::Closed(0, 100));
-  std::string scene = "disk_benchmark_gantry";
+  std::string scene = kDefaultScene;
   cmd.Text("scene", &scene,
-           "disk scene for --dynamic and --closed-loop (name under scenes/ or a path)");
+           "disk scene for --dynamic and --closed-loop (name under scenes/ or a path; the sweep "
+           "and validate default unless given)");
   long loop_iterations = 0, loop_seeds = 10;
   cmd.Integer("closed-loop", &loop_iterations,
-              "fit the static curve so that the twin's own loop (beta 1.5, dL 5 mm, gantry, "
+              "fit the static curve so that the twin's own loop (beta 1.5, dL 5 mm, --scene, "
               "--effects) rides at the published depths: this many iterations of static fit + "
               "loop trials (0 = the open-loop fit: the static probe reads P_ref there)",
               NumberRange::Closed(0, 50));
