@@ -72,19 +72,7 @@ std::string Fmt(const char* format, double a, double b = 0, double c = 0, double
   return buf;
 }
 
-}  // namespace
-
-bool WriteComparisonReport(const std::string& dir, const ComparisonSetup& setup,
-                           const ReplayComparison& c, const HistoryComparison* history,
-                           const ClosedLoopComparison* closed, std::string* error) {
-  namespace fs = std::filesystem;
-  if (!CreateRecordedDirectories(dir, error)) return false;
-  json report;
-  report["log"] = {{"path", setup.log_path},
-                   {"format", setup.format},
-                   {"samples", c.t_s.size()},
-                   {"duration_s", c.t_s.empty() ? 0.0 : c.t_s.back() - c.t_s.front()}};
-  report["frames"] = SetupJson(setup);
+json ReplayJson(const ReplayComparison& c) {
   json chambers = json::array();
   for (int k = 0; k < 4; ++k) {
     chambers.push_back({{"rms_pa", Num(c.rms_pa[k])},
@@ -92,20 +80,20 @@ bool WriteComparisonReport(const std::string& dir, const ComparisonSetup& setup,
                         {"correlation", Num(c.correlation[k])},
                         {"mean_ratio", Num(c.mean_ratio[k])}});
   }
-  report["replay"] = {{"chambers", chambers},
-                      {"pbar_rms_pa", Num(c.pbar_rms_pa)},
-                      {"pbar_bias_pa", Num(c.pbar_bias_pa)},
-                      {"direction_rms_deg", Num(c.direction_rms_deg)},
-                      {"direction_median_deg", Num(c.direction_median_deg)},
-                      {"direction_samples", c.direction_samples}};
+  return {{"chambers", chambers},
+          {"pbar_rms_pa", Num(c.pbar_rms_pa)},
+          {"pbar_bias_pa", Num(c.pbar_bias_pa)},
+          {"direction_rms_deg", Num(c.direction_rms_deg)},
+          {"direction_median_deg", Num(c.direction_median_deg)},
+          {"direction_samples", c.direction_samples}};
+}
 
-  // Each file whole or not at all (common/output_file.h), committed together at the end.
-  OutputFile md_file((fs::path(dir) / "report.md").string());
-  std::ostream& md = md_file.stream();
-  std::unique_ptr<OutputFile> hist_file;
+// report.md's head: the log, the frames and the replay's pressure table.
+void WriteReplayMarkdown(const ComparisonSetup& setup, const ReplayComparison& c, double duration_s,
+                         std::ostream& md) {
   md << "# Twin against robot log: " << setup.log_path << "\n\n"
      << "Format: " << setup.format << ". Replay of the logged tool path; " << c.t_s.size()
-     << " pressure samples over " << Fmt("%.1f", report["log"]["duration_s"].get<double>())
+     << " pressure samples over " << Fmt("%.1f", duration_s)
      << " s.\n\n## Frames\n\nLog frame: " << setup.log_frame << ". ";
   if (setup.object.known) {
     md << Fmt("Object in the log frame: centre (%.4f, %.4f) m, top z %.4f m, yaw %.1f deg",
@@ -131,79 +119,84 @@ bool WriteComparisonReport(const std::string& dir, const ComparisonSetup& setup,
      << Fmt("Direction the controller would compute (g): RMS angle error %.1f deg, median %.1f "
             "deg over %.0f samples with both differentials above P_n.\n",
             c.direction_rms_deg, c.direction_median_deg, c.direction_samples);
+}
 
-  if (history && history->ran) {
-    const HistoryComparison& h = *history;
-    report["history"] = {{"iterations", h.iterations},
-                         {"time_offset_s", h.time_offset_s},
-                         {"match_rms_mm", h.match_rms_mm},
-                         {"history_in_ur_base", h.history_in_ur_base},
-                         {"r_p_median_deg", Num(h.r_p_median_deg)},
-                         {"r_p_rms_deg", Num(h.r_p_rms_deg)},
-                         {"corr_p_median_deg", Num(h.corr_p_median_deg)},
-                         {"corr_p_samples", h.corr_p_samples},
-                         {"r_p_final_median_deg", Num(h.r_p_final_median_deg)},
-                         {"p_rms_pa", Array4(h.p_rms_pa)},
-                         {"p_correlation", Array4(h.p_correlation)},
-                         {"p_mean_ratio", Array4(h.p_mean_ratio)},
-                         {"f_normal_rms_n", Num(h.f_normal_rms_n)},
-                         {"f_normal_bias_n", Num(h.f_normal_bias_n)}};
-    md << "\n## Controller, iteration by iteration (edgeFollowing_history)\n\n"
-       << Fmt("%.0f iterations; log time = history time + %.3f s (x, y on the logged path to "
-              "%.2f mm RMS)",
-              h.iterations, h.time_offset_s, h.match_rms_mm)
-       << (h.history_in_ur_base ? "; the history's x, y are in the UR Base frame" : "")
-       << ".\n\n| quantity | twin vs lab |\n| --- | --- |\n"
-       << Fmt("| r_p direction | median %.1f deg, RMS %.1f deg |\n", h.r_p_median_deg,
-              h.r_p_rms_deg)
-       << Fmt("| corr_p direction | median %.1f deg over %.0f iterations |\n", h.corr_p_median_deg,
-              h.corr_p_samples)
-       << Fmt("| r_p_final direction | median %.1f deg |\n", h.r_p_final_median_deg)
-       << Fmt("| F_normal | RMS %.2f N, bias %.2f N |\n", h.f_normal_rms_n, h.f_normal_bias_n);
-    for (int k = 0; k < 4; ++k) {
-      md << Fmt("| P%.0f | RMS %.1f Pa, correlation ", k + 1, h.p_rms_pa[k])
-         << CorrelationText(h.p_correlation[k]) << Fmt(", mean ratio %.3f |\n", h.p_mean_ratio[k]);
-    }
-    hist_file = std::make_unique<OutputFile>((fs::path(dir) / "history.csv").string());
-    std::ostream& hist = hist_file->stream();
-    hist << "t_log_s,x_m,y_m,lab_r_p_y,lab_r_p_x,twin_r_p_y,twin_r_p_x,r_p_deg,corr_p_deg,"
-            "r_p_final_deg,lab_f_normal_n,twin_f_normal_n,lab_p1_pa,lab_p2_pa,lab_p3_pa,"
-            "lab_p4_pa,twin_p1_pa,twin_p2_pa,twin_p3_pa,twin_p4_pa\n";
-    for (const HistoryPair& p : h.rows) {
-      hist << p.t_log_s << ',' << p.lab.x_m << ',' << p.lab.y_m << ',' << p.lab.r_p[0] << ','
-           << p.lab.r_p[1] << ',' << p.twin.r_p[0] << ',' << p.twin.r_p[1] << ',' << p.r_p_deg
-           << ',' << p.corr_p_deg << ',' << p.r_p_final_deg << ',' << p.lab.f_normal_n << ','
-           << p.twin_f_normal_n;
-      for (int k = 0; k < 4; ++k) hist << ',' << -p.lab.p_pa[k];
-      for (int k = 0; k < 4; ++k) hist << ',' << p.twin_vacuum_pa[k];
-      hist << '\n';
-    }
+json HistoryJson(const HistoryComparison& h) {
+  return {{"iterations", h.iterations},
+          {"time_offset_s", h.time_offset_s},
+          {"match_rms_mm", h.match_rms_mm},
+          {"history_in_ur_base", h.history_in_ur_base},
+          {"r_p_median_deg", Num(h.r_p_median_deg)},
+          {"r_p_rms_deg", Num(h.r_p_rms_deg)},
+          {"corr_p_median_deg", Num(h.corr_p_median_deg)},
+          {"corr_p_samples", h.corr_p_samples},
+          {"r_p_final_median_deg", Num(h.r_p_final_median_deg)},
+          {"p_rms_pa", Array4(h.p_rms_pa)},
+          {"p_correlation", Array4(h.p_correlation)},
+          {"p_mean_ratio", Array4(h.p_mean_ratio)},
+          {"f_normal_rms_n", Num(h.f_normal_rms_n)},
+          {"f_normal_bias_n", Num(h.f_normal_bias_n)}};
+}
+
+void WriteHistoryMarkdown(const HistoryComparison& h, std::ostream& md) {
+  md << "\n## Controller, iteration by iteration (edgeFollowing_history)\n\n"
+     << Fmt("%.0f iterations; log time = history time + %.3f s (x, y on the logged path to "
+            "%.2f mm RMS)",
+            h.iterations, h.time_offset_s, h.match_rms_mm)
+     << (h.history_in_ur_base ? "; the history's x, y are in the UR Base frame" : "")
+     << ".\n\n| quantity | twin vs lab |\n| --- | --- |\n"
+     << Fmt("| r_p direction | median %.1f deg, RMS %.1f deg |\n", h.r_p_median_deg, h.r_p_rms_deg)
+     << Fmt("| corr_p direction | median %.1f deg over %.0f iterations |\n", h.corr_p_median_deg,
+            h.corr_p_samples)
+     << Fmt("| r_p_final direction | median %.1f deg |\n", h.r_p_final_median_deg)
+     << Fmt("| F_normal | RMS %.2f N, bias %.2f N |\n", h.f_normal_rms_n, h.f_normal_bias_n);
+  for (int k = 0; k < 4; ++k) {
+    md << Fmt("| P%.0f | RMS %.1f Pa, correlation ", k + 1, h.p_rms_pa[k])
+       << CorrelationText(h.p_correlation[k]) << Fmt(", mean ratio %.3f |\n", h.p_mean_ratio[k]);
   }
-  if (closed && closed->ran) {
-    const DiskTrialMetrics& a = closed->log;
-    const DiskTrialMetrics& b = closed->twin;
-    report["closed_loop"] = {{"twin_outcome", closed->twin_outcome},
-                             {"start_t_s", closed->start_t_s},
-                             {"parameters", closed->parameters},
-                             {"log", Metrics(a)},
-                             {"twin", Metrics(b)},
-                             {"path_distance_mean_mm", Num(closed->path_distance_mean_mm)},
-                             {"path_distance_max_mm", Num(closed->path_distance_max_mm)}};
-    md << "\n## Closed loop\n\nThe twin's controller from the log's start (t = "
-       << Fmt("%.2f", closed->start_t_s) << " s) with " << closed->parameters << "; outcome "
-       << closed->twin_outcome << ".\n\n| metric | robot log | twin |\n| --- | --- | --- |\n"
-       << Fmt("| dr (mm) | %.2f | %.2f |\n", a.dr_mm, b.dr_mm)
-       << Fmt("| sigma_r (mm) | %.2f | %.2f |\n", a.sigma_r_mm, b.sigma_r_mm)
-       << Fmt("| s_c | %.3f | %.3f |\n", a.s_c, b.s_c)
-       << Fmt("| duration (s) | %.1f | %.1f |\n", a.duration_s, b.duration_s)
-       << Fmt("| speed (mm/s) | %.1f | %.1f |\n", a.speed_mm_s, b.speed_mm_s)
-       << Fmt("\nTwin path to logged path: mean %.2f mm, max %.2f mm.\n",
-              closed->path_distance_mean_mm, closed->path_distance_max_mm);
+}
+
+void WriteHistoryCsv(const HistoryComparison& h, std::ostream& hist) {
+  hist << "t_log_s,x_m,y_m,lab_r_p_y,lab_r_p_x,twin_r_p_y,twin_r_p_x,r_p_deg,corr_p_deg,"
+          "r_p_final_deg,lab_f_normal_n,twin_f_normal_n,lab_p1_pa,lab_p2_pa,lab_p3_pa,"
+          "lab_p4_pa,twin_p1_pa,twin_p2_pa,twin_p3_pa,twin_p4_pa\n";
+  for (const HistoryPair& p : h.rows) {
+    hist << p.t_log_s << ',' << p.lab.x_m << ',' << p.lab.y_m << ',' << p.lab.r_p[0] << ','
+         << p.lab.r_p[1] << ',' << p.twin.r_p[0] << ',' << p.twin.r_p[1] << ',' << p.r_p_deg << ','
+         << p.corr_p_deg << ',' << p.r_p_final_deg << ',' << p.lab.f_normal_n << ','
+         << p.twin_f_normal_n;
+    for (int k = 0; k < 4; ++k) hist << ',' << -p.lab.p_pa[k];
+    for (int k = 0; k < 4; ++k) hist << ',' << p.twin_vacuum_pa[k];
+    hist << '\n';
   }
-  OutputFile js_file((fs::path(dir) / "report.json").string());
-  js_file.Write(report.dump(2) + "\n");
-  OutputFile series_file((fs::path(dir) / "series.csv").string());
-  std::ostream& series = series_file.stream();
+}
+
+json ClosedLoopJson(const ClosedLoopComparison& closed) {
+  return {{"twin_outcome", closed.twin_outcome},
+          {"start_t_s", closed.start_t_s},
+          {"parameters", closed.parameters},
+          {"log", Metrics(closed.log)},
+          {"twin", Metrics(closed.twin)},
+          {"path_distance_mean_mm", Num(closed.path_distance_mean_mm)},
+          {"path_distance_max_mm", Num(closed.path_distance_max_mm)}};
+}
+
+void WriteClosedLoopMarkdown(const ClosedLoopComparison& closed, std::ostream& md) {
+  const DiskTrialMetrics& a = closed.log;
+  const DiskTrialMetrics& b = closed.twin;
+  md << "\n## Closed loop\n\nThe twin's controller from the log's start (t = "
+     << Fmt("%.2f", closed.start_t_s) << " s) with " << closed.parameters << "; outcome "
+     << closed.twin_outcome << ".\n\n| metric | robot log | twin |\n| --- | --- | --- |\n"
+     << Fmt("| dr (mm) | %.2f | %.2f |\n", a.dr_mm, b.dr_mm)
+     << Fmt("| sigma_r (mm) | %.2f | %.2f |\n", a.sigma_r_mm, b.sigma_r_mm)
+     << Fmt("| s_c | %.3f | %.3f |\n", a.s_c, b.s_c)
+     << Fmt("| duration (s) | %.1f | %.1f |\n", a.duration_s, b.duration_s)
+     << Fmt("| speed (mm/s) | %.1f | %.1f |\n", a.speed_mm_s, b.speed_mm_s)
+     << Fmt("\nTwin path to logged path: mean %.2f mm, max %.2f mm.\n",
+            closed.path_distance_mean_mm, closed.path_distance_max_mm);
+}
+
+void WriteSeriesCsv(const ReplayComparison& c, std::ostream& series) {
   series << "t_s,x_m,y_m,z_m,sim_p1_pa,sim_p2_pa,sim_p3_pa,sim_p4_pa,log_p1_pa,log_p2_pa,"
             "log_p3_pa,log_p4_pa\n";
   char buf[512];
@@ -214,6 +207,42 @@ bool WriteComparisonReport(const std::string& dir, const ComparisonSetup& setup,
                   c.log_pa[i][2], c.log_pa[i][3]);
     series << buf;
   }
+}
+
+}  // namespace
+
+bool WriteComparisonReport(const std::string& dir, const ComparisonSetup& setup,
+                           const ReplayComparison& c, const HistoryComparison* history,
+                           const ClosedLoopComparison* closed, std::string* error) {
+  namespace fs = std::filesystem;
+  if (!CreateRecordedDirectories(dir, error)) return false;
+  const double duration_s = c.t_s.empty() ? 0.0 : c.t_s.back() - c.t_s.front();
+  json report;
+  report["log"] = {{"path", setup.log_path},
+                   {"format", setup.format},
+                   {"samples", c.t_s.size()},
+                   {"duration_s", duration_s}};
+  report["frames"] = SetupJson(setup);
+  report["replay"] = ReplayJson(c);
+
+  // Each file whole or not at all (common/output_file.h), committed together at the end.
+  OutputFile md_file((fs::path(dir) / "report.md").string());
+  WriteReplayMarkdown(setup, c, duration_s, md_file.stream());
+  std::unique_ptr<OutputFile> hist_file;
+  if (history && history->ran) {
+    report["history"] = HistoryJson(*history);
+    WriteHistoryMarkdown(*history, md_file.stream());
+    hist_file = std::make_unique<OutputFile>((fs::path(dir) / "history.csv").string());
+    WriteHistoryCsv(*history, hist_file->stream());
+  }
+  if (closed && closed->ran) {
+    report["closed_loop"] = ClosedLoopJson(*closed);
+    WriteClosedLoopMarkdown(*closed, md_file.stream());
+  }
+  OutputFile js_file((fs::path(dir) / "report.json").string());
+  js_file.Write(report.dump(2) + "\n");
+  OutputFile series_file((fs::path(dir) / "series.csv").string());
+  WriteSeriesCsv(c, series_file.stream());
   return md_file.Commit(error) && js_file.Commit(error) && series_file.Commit(error) &&
          (!hist_file || hist_file->Commit(error));
 }

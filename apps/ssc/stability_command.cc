@@ -7,6 +7,7 @@
 
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
+#include "apps/ssc/trial_options.h"
 #include "common/output_file.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/trial.h"
@@ -33,7 +34,7 @@ int RunStabilityCommand(int argc, char** argv) {
   cmd.Number("s-tol", &s_tol, "relative tolerance on the path length", "",
              NumberRange::Closed(0, 10));
   long threads = 2;
-  cmd.Integer("threads", &threads, "worker threads", NumberRange::Closed(1, 256));
+  AddThreadsOption(&cmd, &threads);
   cmd.OutputDir("out", &out_dir, "output directory");
   if (int rc = 0; !cmd.Parse(argc, argv, &rc)) return rc;
   std::string error;
