@@ -280,8 +280,10 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
     return t < 0 ? kNoSurfaceGapM : t - config_.ray_start_m;
   };
 
-  // The lip's rim: contacts first, rays for the rest. Gaps are from each rim point's tip.
+  // The lip's rim: contacts first, rays for the rest. Gaps are from each rim point's tip (a
+  // skirt's: its column's seal point, the rim or a crease).
   const int n_rim = lip_.num_rim_points();
+  lip_.FindSealPoints(d, origin_lip, axis_z);
   std::fill(lip_touching_.begin(), lip_touching_.end(), 0);
   lip_.MarkContacts(m, d, lip_touching_.data());
   double tip_sum = 0.0;

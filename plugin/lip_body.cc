@@ -242,10 +242,8 @@ bool LipBody::BindSkirt(const mjModel* m, int root, std::string* error) {
   }
   const double ceiling_radius_m = pinned_radius_sum / pinned;
   ceiling_area_m2_ = 0.25 * M_PI * ceiling_radius_m * ceiling_radius_m;
-  rim_of_vertex_.assign(n, -1);
   double radius_sum = 0.0;
   for (int v : RimVertices(depth, kRimToleranceM)) {
-    rim_of_vertex_[v] = static_cast<int>(rim_vertex_.size());
     rim_vertex_.push_back(adr + v);
     rim_angle_rad_.push_back(std::atan2(local[v][1], local[v][0]));
     radius_sum += std::hypot(local[v][0], local[v][1]);
@@ -256,14 +254,53 @@ bool LipBody::BindSkirt(const mjModel* m, int root, std::string* error) {
                   " vertices; need 4 to " + std::to_string(kMaxLipSegments));
     return false;
   }
+  // Each rim point's column: the free vertices above it.
+  std::vector<int> free_vertex;
+  std::vector<double> free_angle;
+  for (int v = 0; v < n; ++v) {
+    if (m->flex_vertbodyid[adr + v] == root) continue;
+    free_vertex.push_back(adr + v);
+    free_angle.push_back(std::atan2(local[v][1], local[v][0]));
+  }
+  size_t longest = 0;
+  column_start_.assign(1, 0);
+  for (const std::vector<int>& column : SkirtColumns(free_angle, rim_angle_rad_)) {
+    for (int k : column) column_vertex_.push_back(free_vertex[k]);
+    column_start_.push_back(static_cast<int>(column_vertex_.size()));
+    longest = std::max(longest, column.size());
+  }
+  seal_vertex_ = rim_vertex_;
+  column_depth_.assign(longest, 0.0);
+  column_radius_.assign(longest, 0.0);
+  tool_geom_.assign(m->ngeom, 0);
+  for (int g = 0; g < m->ngeom; ++g) tool_geom_[g] = IsInSubtree(m, m->geom_bodyid[g], root);
   rim_radius_m_ = radius_sum / static_cast<double>(rim_vertex_.size());
   carrier_body_ = root;
   return BindCarrier(m, error);
 }
 
+void LipBody::FindSealPoints(const mjData* d, const mjtNum origin[3],
+                             const mjtNum axis_z[3]) const {
+  if (kind_ != Kind::kSkirt) return;
+  for (int i = 0; i < num_rim_points(); ++i) {
+    const int first = column_start_[i], n = column_start_[i + 1] - first;
+    if (n == 0) continue;  // the rim vertex alone
+    for (int k = 0; k < n; ++k) {
+      const mjtNum* p = d->flexvert_xpos + 3 * column_vertex_[first + k];
+      const mjtNum rel[3] = {p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]};
+      const mjtNum along = mju_dot3(rel, axis_z);
+      column_depth_[k] = along;
+      column_radius_[k] = std::sqrt(std::max(0.0, mju_dot3(rel, rel) - along * along));
+    }
+    seal_vertex_[i] =
+        column_vertex_[first + ColumnSealPoint(column_depth_.data(), column_radius_.data(), n,
+                                               kRimToleranceM)];
+  }
+}
+
 const mjtNum* LipBody::RimPos(const mjData* d, int i) const {
   return kind_ == Kind::kSegments ? d->geom_xpos + 3 * segment_geom_[i]
-                                  : d->flexvert_xpos + 3 * rim_vertex_[i];
+                                  : d->flexvert_xpos + 3 * seal_vertex_[i];
 }
 
 void LipBody::MarkContacts(const mjModel* m, const mjData* d, unsigned char* touching) const {
@@ -280,28 +317,34 @@ void LipBody::MarkContacts(const mjModel* m, const mjData* d, unsigned char* tou
     }
     for (int side = 0; side < 2; ++side) {
       if (con.flex[side] != flex_ || con.flex[1 - side] == flex_) continue;
+      const int other = con.geom[1 - side];
+      if (other >= 0 && tool_geom_[other]) continue;  // the skirt on its own walls seals nothing
+      // The seal point touching: the vertex itself, or an element's seal point nearest the
+      // contact.
       const int adr = m->flex_vertadr[flex_];
+      int vertex = -1;
       if (con.vert[side] >= 0) {
-        const int r = rim_of_vertex_[con.vert[side]];
-        if (r >= 0) touching[r] = 1;
+        vertex = adr + con.vert[side];
       } else if (con.elem[side] >= 0) {
-        // An element touches: its rim vertex nearest the contact point carries the contact.
         const int* elem = m->flex_elem + m->flex_elemdataadr[flex_] + 3 * con.elem[side];
-        int best = -1;
         mjtNum best_d2 = 0;
         for (int k = 0; k < 3; ++k) {
-          const int r = rim_of_vertex_[elem[k]];
-          if (r < 0) continue;
-          const mjtNum* p = d->flexvert_xpos + 3 * (adr + elem[k]);
+          const int v = adr + elem[k];
+          if (std::find(seal_vertex_.begin(), seal_vertex_.end(), v) == seal_vertex_.end()) {
+            continue;
+          }
+          const mjtNum* p = d->flexvert_xpos + 3 * v;
           const mjtNum d2 = (p[0] - con.pos[0]) * (p[0] - con.pos[0]) +
                             (p[1] - con.pos[1]) * (p[1] - con.pos[1]) +
                             (p[2] - con.pos[2]) * (p[2] - con.pos[2]);
-          if (best < 0 || d2 < best_d2) {
-            best = r;
+          if (vertex < 0 || d2 < best_d2) {
+            vertex = v;
             best_d2 = d2;
           }
         }
-        if (best >= 0) touching[best] = 1;
+      }
+      for (int r = 0; vertex >= 0 && r < num_rim_points(); ++r) {
+        if (seal_vertex_[r] == vertex) touching[r] = 1;
       }
     }
   }

@@ -5,8 +5,9 @@
 //     and tilt hinges get springs from the lip_* keys;
 //   - skirt: a 2-D MuJoCo flex whose vertices hang under the site's body
 //     (models/ssc_tool_flex.xml): the engine's own elasticity deforms it; its deepest vertices
-//     are the rim; each chamber's vacuum loads the skirt's triangles and the cup's ceiling inside
-//     the skirt's pinned ring.
+//     at rest are the rim points; each rim point reads its column's seal point (the column's
+//     deepest vertex now: the rim, or the crease of a lip folded in on itself); each chamber's
+//     vacuum loads the skirt's triangles and the cup's ceiling inside the skirt's pinned ring.
 // A model with lip geoms uses them; otherwise the first 2-D flex under the site's body.
 // MuJoCo adapter: the physics it calls lives in pneumatics/ (lip_ring.h, lip_rim.h).
 #ifndef SSC_PLUGIN_LIP_BODY_H_
@@ -42,10 +43,16 @@ class LipBody {
   const mjtNum* opening_offset_pos() const { return opening_offset_pos_; }
   const mjtNum* opening_offset_mat() const { return opening_offset_mat_; }
 
-  // World position of rim point i now, and how far its surface reaches beyond that point.
+  // A skirt's seal points now: each column's deepest vertex along `axis_z` below `origin` (the
+  // opening's frame, world). Call once per sample before RimPos and MarkContacts; segments
+  // have none (a no-op). Allocates nothing.
+  void FindSealPoints(const mjData* d, const mjtNum origin[3], const mjtNum axis_z[3]) const;
+  // World position of rim point i now (a skirt's: its column's seal point), and how far its
+  // surface reaches beyond that point.
   const mjtNum* RimPos(const mjData* d, int i) const;
   double rim_tip_radius_m(int i) const { return rim_tip_radius_m_[i]; }
-  // Sets touching[i] to 1 for each rim point that MuJoCo reports in contact with a non-lip geom.
+  // Sets touching[i] to 1 for each rim point that MuJoCo reports in contact with a non-lip geom
+  // (a skirt's: its seal point touching a geom that is not the tool's own, e.g. a wall).
   void MarkContacts(const mjModel* m, const mjData* d, unsigned char* touching) const;
   // Whether the skirt's fold can move the rim across the opening (the sensor then follows the
   // rim's radius per wedge); segments stay on their circle by construction.
@@ -95,8 +102,13 @@ class LipBody {
 
   // Skirt.
   int flex_ = -1;
-  std::vector<int> rim_vertex_;     // flex vertex (global id) of each rim point
-  std::vector<int> rim_of_vertex_;  // rim point of each of the flex's vertices, -1 if none
+  std::vector<int> rim_vertex_;  // flex vertex (global id) of each rim point
+  // The free vertices (global ids) above each rim point, column i in
+  // column_vertex_[column_start_[i] .. column_start_[i + 1]).
+  std::vector<int> column_start_, column_vertex_;
+  mutable std::vector<int> seal_vertex_;  // per sample: each column's seal point (global id)
+  mutable std::vector<double> column_depth_, column_radius_;  // scratch, longest column's size
+  std::vector<unsigned char> tool_geom_;  // geoms carried by the tool (walls): never a seal
   double ceiling_area_m2_ = 0.0;
 };
 

@@ -46,6 +46,39 @@ std::vector<int> RimVertices(const std::vector<double>& depth_m, double toleranc
   return rim;
 }
 
+std::vector<std::vector<int>> SkirtColumns(const std::vector<double>& vertex_angles_rad,
+                                           const std::vector<double>& rim_angles_rad) {
+  std::vector<std::vector<int>> columns(rim_angles_rad.size());
+  if (rim_angles_rad.empty()) return columns;
+  constexpr double kTieRad = 1e-3;  // model files round coordinates: angles tie only roughly
+  const int n_rim = static_cast<int>(rim_angles_rad.size());
+  for (int v = 0; v < static_cast<int>(vertex_angles_rad.size()); ++v) {
+    double nearest = 1e9;
+    for (int i = 0; i < n_rim; ++i) {
+      nearest = std::min(
+          nearest, std::abs(std::remainder(vertex_angles_rad[v] - rim_angles_rad[i], 2.0 * M_PI)));
+    }
+    for (int i = 0; i < n_rim; ++i) {
+      const double delta =
+          std::abs(std::remainder(vertex_angles_rad[v] - rim_angles_rad[i], 2.0 * M_PI));
+      if (delta <= nearest + kTieRad) columns[i].push_back(v);
+    }
+  }
+  return columns;
+}
+
+int ColumnSealPoint(const double* depth_m, const double* radius_m, int n, double tolerance_m) {
+  if (n <= 0) return -1;
+  double deepest = depth_m[0];
+  for (int k = 1; k < n; ++k) deepest = std::max(deepest, depth_m[k]);
+  int seal = -1;
+  for (int k = 0; k < n; ++k) {
+    if (depth_m[k] < deepest - tolerance_m) continue;
+    if (seal < 0 || radius_m[k] < radius_m[seal]) seal = k;
+  }
+  return seal;
+}
+
 std::array<double, 3> TrianglePressureForce(const double p0[3], const double p1[3],
                                             const double p2[3], double vacuum_pa,
                                             const double cavity_point[3]) {

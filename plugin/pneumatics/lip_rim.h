@@ -31,6 +31,20 @@ inline double AtWedge(const WedgeRim& rim, const double* per_point) {
 // object). Indices in ascending order.
 std::vector<int> RimVertices(const std::vector<double>& depth_m, double tolerance_m);
 
+// A skirt's columns: the vertices that hang above each rim point, from the axis down to the rim.
+// A vertex joins the rim point(s) nearest to it in angle (two when it lies midway between them).
+// `vertex_angles_rad` are the skirt's free vertices' angles, `rim_angles_rad` the rim points'
+// (any order, at least one); column i lists indices into vertex_angles_rad, ascending.
+std::vector<std::vector<int>> SkirtColumns(const std::vector<double>& vertex_angles_rad,
+                                           const std::vector<double>& rim_angles_rad);
+
+// Where a skirt column meets the surface first: its deepest vertex along the cup axis (depth_m,
+// + into the object), whichever ring it belongs to: the rim on an unfolded skirt, the crease of
+// one folded in on itself. Vertices within `tolerance_m` of the deepest are a stretch lying flat
+// at that depth; the innermost of them (smallest radius_m from the axis) is the seal point, the
+// lip covering the opening beyond it. Returns an index into the n values, -1 when n is 0.
+int ColumnSealPoint(const double* depth_m, const double* radius_m, int n, double tolerance_m);
+
 // The force (N) of a pressure difference on a flat triangle p0 p1 p2 (world, m): `vacuum_pa`
 // (positive: the cavity side is at lower pressure) times the triangle's area, along its normal
 // turned toward `cavity_point` (a point inside the cavity, e.g. on the cup axis). Each vertex

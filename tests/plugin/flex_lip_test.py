@@ -135,6 +135,35 @@ class Rig:
         """World positions of the skirt's free rim (its last ring)."""
         return self.rings()[-1]
 
+    def hold_vertices(self, targets, seconds=0.2):
+        """Holds the cup where it is and skirt vertices at world positions (a dict: index in
+        rings().reshape(-1, 3) -> xyz) while the rest of the skirt moves as the engine makes it:
+        a shape the test chooses, read by the pressure plugin as it reads any other."""
+        adr = self.m.flex_vertadr[0]
+        cup = self.m.body_parentid[self.m.flex_vertbodyid[adr + next(iter(targets))]]
+        qadr, dof = {}, {}
+        for v in targets:
+            body = self.m.flex_vertbodyid[adr + v]
+            assert self.m.body_jntnum[body] == 3, "a free skirt vertex: 3 slides"
+            qadr[v] = self.m.jnt_qposadr[self.m.body_jntadr[body]]
+            dof[v] = self.m.jnt_dofadr[self.m.body_jntadr[body]]
+        for _ in range(3):  # the slides run along the cup's axes: a few corrections converge
+            mujoco.mj_fwdPosition(self.m, self.d)
+            rotation = self.d.xmat[cup].reshape(3, 3)
+            for v, target in targets.items():
+                shift = rotation.T @ (np.asarray(target) - self.d.flexvert_xpos[adr + v])
+                self.d.qpos[qadr[v]:qadr[v] + 3] += shift
+        qpos = {v: (qadr[v], self.d.qpos[qadr[v]:qadr[v] + 3].copy()) for v in targets}
+        cup_qpos = self.d.qpos[:3].copy()  # the cup held too: the vacuum would lift the rest
+        for _ in range(int(round(seconds / self.m.opt.timestep))):
+            self.d.qpos[:3] = cup_qpos
+            self.d.qvel[:3] = 0
+            for v, (q, value) in qpos.items():
+                self.d.qpos[q:q + 3] = value
+                self.d.qvel[dof[v]:dof[v] + 3] = 0
+            mujoco.mj_step(self.m, self.d)
+        return self
+
     def middle_sag_mm(self):
         """How far the skirt's middle ring stands below half-way between its top and its rim."""
         rings = self.rings()
@@ -261,6 +290,86 @@ class SkirtSensorTest(unittest.TestCase):
         lowered = Rig(concave_corner()).press(deep.d.qpos[0], 1.0, y_m=inset)
         self.assertLess(abs(deep.pressures()[2] - lowered.pressures()[2]),
                         0.3 * lowered.pressures()[2] + 10.0)
+
+    def quadrant_columns(self, rig):
+        """The skirt vertices (flat indices) of the chamber whose rim points lie at world angles
+        0-90 deg about the cup: its rim vertices and the middle ring's strictly inside."""
+        rings = rig.rings()
+        c = rig.d.qpos[:2]
+        angle = np.degrees(np.arctan2(rings[..., 1] - c[1], rings[..., 0] - c[0]))
+        inside = (angle > 1) & (angle < 89)
+        sectors = rings.shape[1]
+        flat = lambda ring, which: [ring * sectors + j for j in np.flatnonzero(which[ring])]
+        return flat(len(rings) - 1, inside), flat(len(rings) // 2, inside), flat(
+            len(rings) - 1, ~inside)
+
+    def hold_the_rest(self, rig, rest):
+        """The rest of the rim held where it is (on the plate), so only the chosen chamber's
+        stretch of lip changes."""
+        flat = rig.rings().reshape(-1, 3)
+        return {v: flat[v].copy() for v in rest}
+
+    def test_a_crease_that_touches_the_surface_seals_while_a_lifted_rim_leaks(self):
+        # One chamber's stretch of lip held 1 mm up: the chamber leaks under it. Folded in on
+        # itself, the same rim held up and curled in, its crease (the middle ring) on the plate:
+        # the crease seals (each column is read at its lowest point, not only at its rim).
+        radius = skirt_parameters()["contact_radius_mm"] * 1e-3
+        shapes = {}
+        for shape in ("lifted", "creased"):
+            rig = Rig(PLATE).press(0.0, 0.3)
+            rim, middle, rest = self.quadrant_columns(rig)
+            flat = rig.rings().reshape(-1, 3)
+            targets = self.hold_the_rest(rig, rest)
+            for v in rim:
+                p = flat[v].copy()
+                p[2] += 1e-3
+                if shape == "creased":
+                    p[:2] *= 4.5e-3 / np.hypot(p[0], p[1])
+                targets[v] = p
+            if shape == "creased":
+                for v in middle:
+                    p = flat[v].copy()
+                    p[:2] *= 5.0e-3 / np.hypot(p[0], p[1])
+                    p[2] = radius
+                    targets[v] = p
+            shapes[shape] = rig.hold_vertices(targets).pressures()
+        lifted, creased = shapes["lifted"], shapes["creased"]
+        held = np.argmin(lifted)
+        self.assertLess(lifted[held], 0.5 * SEALED_PA, lifted)
+        self.assertGreater(creased[held], 0.9 * SEALED_PA, creased)
+
+    def test_a_stretch_of_lip_folded_over_an_open_chamber_blocks_it(self):
+        # The cup 1.5 mm inside a straight edge (the plate covers y < 0): the chambers facing +y
+        # stand half over the drop and leak. One of them with its stretch of lip folded in across
+        # its opening onto the plate (the rim at 1 mm from the axis) is blocked: its vacuum rises
+        # to the sealed chambers' while the other one facing the drop stays open.
+        edge = box((0.05, 0.025, 0.005), (0, -0.025, -0.005))
+        radius = skirt_parameters()["contact_radius_mm"] * 1e-3
+        open_cup = Rig(edge).press(0.0, 0.3, y_m=-1.5e-3)
+        folded = Rig(edge).press(0.0, 0.3, y_m=-1.5e-3)
+        rim, _, rest = self.quadrant_columns(folded)
+        c = folded.d.qpos[:2]
+        flat = folded.rings().reshape(-1, 3)
+        targets = self.hold_the_rest(folded, rest)
+        for v in rim:
+            p = flat[v].copy()
+            p[:2] = c + (p[:2] - c) * 1.0e-3 / np.hypot(*(p[:2] - c))
+            p[2] = radius
+            self.assertLess(p[1], 0.0)  # on the plate
+            targets[v] = p
+        folded.hold_vertices(targets)
+        before, after = open_cup.pressures(), folded.pressures()
+        facing = np.flatnonzero(before < 0.1 * before.max())  # the two chambers over the drop
+        self.assertEqual(len(facing), 2, before)
+        blocked = facing[np.argmax(after[facing])]
+        other = facing[facing != blocked][0]
+        on_plate = np.setdiff1d(np.arange(4), facing)
+        # The blocked chamber reads what the chambers on the plate read (the cup as a whole
+        # still leaks through the other one, and the chambers share the supply) ...
+        self.assertGreater(after[blocked], 0.9 * after[on_plate].min(), after)
+        self.assertGreater(after[blocked], 10 * before[blocked], (before, after))
+        # ... the other stays open.
+        self.assertLess(after[other], 0.1 * after[on_plate].min(), after)
 
     def test_the_same_run_twice_is_the_same(self):
         a = Rig(groove(0.003, 0.003)).press(0.001, 1.0, seconds=0.2)

@@ -57,6 +57,31 @@ TEST(LipRimTest, RimIsTheDeepestRingWithinTolerance) {
   EXPECT_TRUE(RimVertices({}, 1e-3).empty());
 }
 
+TEST(LipRimTest, ColumnsGatherTheVerticesAboveEachRimPointAndShareTheOnesMidway) {
+  // Four rim points at 0, 90, 180, 270 deg; vertices at 10 deg, 45 deg (midway), 350 deg, 180 deg.
+  const double deg = M_PI / 180;
+  const std::vector<std::vector<int>> columns =
+      SkirtColumns({10 * deg, 45 * deg, 350 * deg, -180 * deg}, {0, 90 * deg, M_PI, -90 * deg});
+  ASSERT_EQ(columns.size(), 4u);
+  EXPECT_EQ(columns[0], (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(columns[1], (std::vector<int>{1}));
+  EXPECT_EQ(columns[2], (std::vector<int>{3}));
+  EXPECT_TRUE(columns[3].empty());
+}
+
+TEST(LipRimTest, AColumnSealsAtItsDeepestPointAndAFlatStretchAtItsInnermost) {
+  // An unfolded skirt: the rim (the outermost, deepest) seals.
+  const double cone_depth[3] = {-3e-3, -1.5e-3, 0.0}, cone_radius[3] = {4e-3, 4.75e-3, 5.5e-3};
+  EXPECT_EQ(ColumnSealPoint(cone_depth, cone_radius, 3, 0.1e-3), 2);
+  // Folded in on itself: the crease (middle vertex) is deepest, the rim curls up inside it.
+  const double crease_depth[3] = {-3e-3, 0.0, -0.8e-3}, crease_radius[3] = {4e-3, 5e-3, 3e-3};
+  EXPECT_EQ(ColumnSealPoint(crease_depth, crease_radius, 3, 0.1e-3), 1);
+  // A stretch lying flat on the surface from the crease in to the rim: the rim, innermost, seals.
+  const double flat_depth[3] = {-3e-3, 0.0, -0.05e-3}, flat_radius[3] = {4e-3, 5e-3, 2.5e-3};
+  EXPECT_EQ(ColumnSealPoint(flat_depth, flat_radius, 3, 0.1e-3), 2);
+  EXPECT_EQ(ColumnSealPoint(flat_depth, flat_radius, 0, 0.1e-3), -1);
+}
+
 TEST(LipRimTest, VacuumPullsATriangleTowardTheCavityWithPressureTimesArea) {
   // A 2 mm x 2 mm right triangle (area 2e-6 m^2) in the plane x = 1 mm, cavity on the axis.
   const double p0[3] = {1e-3, 0, 0}, p1[3] = {1e-3, 2e-3, 0}, p2[3] = {1e-3, 0, 2e-3};
