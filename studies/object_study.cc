@@ -78,14 +78,17 @@ bool RunObjectStudy(const ObjectStudySpec& spec,
   set.cost = [&](size_t j) {  // the follow timeout grows with the edge to follow
     TrialConfig base;
     base.law = spec.law;
-    return ObjectTrialConfig(spec.objects[jobs[j].object], base).timeout_s;
+    const ObjectSpec& object = spec.objects[jobs[j].object];
+    // A flex step costs about 14 segment steps (docs/objects.md): the flex trials start first.
+    const double tier_weight =
+        ObjectTier(spec.scene_kind, object) == ObjectSceneKind::kFlex ? 14.0 : 1.0;
+    return tier_weight * ObjectTrialConfig(object, base).timeout_s;
   };
   // One job: its table row, after a line for the progress report.
   set.run = [&](size_t j) {
     const ObjectSpec& object = spec.objects[jobs[j].object];
-    const ObjectFiles files = ObjectFileNames(object.name);
     const std::string scene =
-        (fs::path(scene_dir) / ObjectSceneFile(files, spec.scene_kind)).string();
+        (fs::path(scene_dir) / ObjectSceneFile(object, spec.scene_kind)).string();
     std::string load_error;
     ModelPtr model = LoadModel(scene, &load_error);
     ObjectTrialRow row;
@@ -116,6 +119,7 @@ bool RunObjectStudy(const ObjectStudySpec& spec,
         std::fprintf(stderr, "ssc objects: %s\n", write_error.c_str());
       }
     }
+    row.tier = ObjectSceneKindName(ObjectTier(spec.scene_kind, object));
     char line[256];
     std::snprintf(line, sizeof(line), "  %-18s seed %-3llu %-11s end %.1f (%s) %.1f s wall",
                   object.name.c_str(), static_cast<unsigned long long>(jobs[j].seed),

@@ -6,11 +6,13 @@
 #include <sstream>
 #include <utility>
 
+#include "geometry/dimensions.h"
+
 namespace ssc {
 
 bool ObjectSceneKindByName(const std::string& name, ObjectSceneKind* kind, std::string* error) {
-  for (ObjectSceneKind k :
-       {ObjectSceneKind::kGantry, ObjectSceneKind::kArm, ObjectSceneKind::kFlex}) {
+  for (ObjectSceneKind k : {ObjectSceneKind::kGantry, ObjectSceneKind::kArm, ObjectSceneKind::kFlex,
+                            ObjectSceneKind::kAuto}) {
     if (name == ObjectSceneKindName(k)) {
       *kind = k;
       return true;
@@ -26,19 +28,30 @@ const char* ObjectSceneKindName(ObjectSceneKind kind) {
       return "arm";
     case ObjectSceneKind::kFlex:
       return "flex";
+    case ObjectSceneKind::kAuto:
+      return "auto";
     case ObjectSceneKind::kGantry:
       break;
   }
   return "gantry";
 }
 
-std::string ObjectSceneFile(const ObjectFiles& files, ObjectSceneKind kind) {
-  switch (kind) {
+ObjectSceneKind ObjectTier(ObjectSceneKind kind, const ObjectSpec& spec) {
+  if (kind != ObjectSceneKind::kAuto) return kind;
+  const bool segment_agrees = spec.kind == ObjectKind::kHole ||
+                              (spec.kind == ObjectKind::kDisk && spec.param >= kCupBodyDiameterMm);
+  return segment_agrees ? ObjectSceneKind::kGantry : ObjectSceneKind::kFlex;
+}
+
+std::string ObjectSceneFile(const ObjectSpec& spec, ObjectSceneKind kind) {
+  const ObjectFiles files = ObjectFileNames(spec.name);
+  switch (ObjectTier(kind, spec)) {
     case ObjectSceneKind::kArm:
       return files.arm_scene;
     case ObjectSceneKind::kFlex:
       return files.flex_scene;
     case ObjectSceneKind::kGantry:
+    case ObjectSceneKind::kAuto:  // resolved above
       break;
   }
   return files.gantry_scene;
@@ -110,7 +123,7 @@ ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,
 std::string ObjectTableHeader() {
   return "object,kind,param,seed,outcome,contour_mean_mm,contour_max_mm,end_arc_mm,"
          "end_swept_deg,end_fillet_radius_mm,s_mm,follow_s,speed_mm_s,iterations,step_cost_us,"
-         "approach_compression_mm,detail";
+         "approach_compression_mm,tier,detail";
 }
 
 std::string ObjectTableRow(const ObjectTrialRow& r) {
@@ -119,13 +132,14 @@ std::string ObjectTableRow(const ObjectTrialRow& r) {
   for (char& ch : detail) {
     if (ch == ',' || ch == '"') ch = ';';
   }
-  std::snprintf(
-      buf, sizeof(buf), "%s,%s,%g,%llu,%s,%.3f,%.3f,%.2f,%.2f,%.2f,%.1f,%.1f,%.2f,%d,%.1f,%.3f,%s",
-      r.object.c_str(), r.kind.c_str(), r.param, static_cast<unsigned long long>(r.seed),
-      OutcomeName(r.result.outcome), r.result.metrics.contour_mean_mm,
-      r.result.metrics.contour_max_mm, r.end_arc_mm, r.end_swept_deg, r.end_fillet_radius_mm,
-      r.result.metrics.s_mm, r.result.follow_time_s, r.result.metrics.speed_mm_s,
-      r.result.iterations, r.step_cost_us, r.approach_compression_mm, detail.c_str());
+  std::snprintf(buf, sizeof(buf),
+                "%s,%s,%g,%llu,%s,%.3f,%.3f,%.2f,%.2f,%.2f,%.1f,%.1f,%.2f,%d,%.1f,%.3f,%s,%s",
+                r.object.c_str(), r.kind.c_str(), r.param, static_cast<unsigned long long>(r.seed),
+                OutcomeName(r.result.outcome), r.result.metrics.contour_mean_mm,
+                r.result.metrics.contour_max_mm, r.end_arc_mm, r.end_swept_deg,
+                r.end_fillet_radius_mm, r.result.metrics.s_mm, r.result.follow_time_s,
+                r.result.metrics.speed_mm_s, r.result.iterations, r.step_cost_us,
+                r.approach_compression_mm, r.tier.c_str(), detail.c_str());
   return buf;
 }
 

@@ -14,14 +14,20 @@ namespace ssc {
 
 // The scene an object's trial runs in, picked by name in every command that runs objects
 // (ssc objects/view --scene-kind, Python's scene): the light gantry with the 16-segment lip, the
-// UR-10 with it, or the gantry with the flex skirt lip (docs/pneumatics.md).
-enum class ObjectSceneKind { kGantry, kArm, kFlex };
-inline constexpr const char* kObjectSceneKindNames = "gantry, arm, flex";
+// UR-10 with it, the gantry with the flex skirt lip (docs/pneumatics.md), or per object the
+// tier its geometry needs (kAuto, ObjectTier).
+enum class ObjectSceneKind { kGantry, kArm, kFlex, kAuto };
+inline constexpr const char* kObjectSceneKindNames = "gantry, arm, flex, auto";
 // False + *error naming the valid names for an unknown one.
 bool ObjectSceneKindByName(const std::string& name, ObjectSceneKind* kind, std::string* error);
 const char* ObjectSceneKindName(ObjectSceneKind kind);
-// The object's scene file (no directory) of that kind.
-std::string ObjectSceneFile(const ObjectFiles& files, ObjectSceneKind kind);
+// The tier an object runs in for `kind`: `kind` itself, except kAuto: the flex tier where the
+// lip's shape decides the outcome (corners, compound shapes, the fillet, disks narrower than the
+// cup body), the gantry where the two tiers agree (holes, disks at least the body wide;
+// measured in docs/objects.md, "Tiers").
+ObjectSceneKind ObjectTier(ObjectSceneKind kind, const ObjectSpec& spec);
+// The object's scene file (no directory) of that kind (kAuto: ObjectTier's).
+std::string ObjectSceneFile(const ObjectSpec& spec, ObjectSceneKind kind);
 // The kind matching a disk scene's name or path: the flex tier for a scene named *flex*, the
 // gantry for *gantry*, *light* and *fast*, else the arm.
 ObjectSceneKind ObjectSceneKindOfScene(const std::string& scene);
@@ -41,6 +47,7 @@ struct ObjectTrialRow {
   double end_fillet_radius_mm = -1;    // fillet only: radius where tracking ended, mm
   double step_cost_us = 0;             // wall time per physics step of this trial
   double approach_compression_mm = 0;  // the lip plane below the top face after the approach
+  std::string tier;                    // the scene kind it ran in (ObjectSceneKindName)
 };
 
 // Runs one object trial on `model` (a scene written by WriteObjectScenes) with `effects` (the

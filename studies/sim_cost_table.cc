@@ -262,7 +262,7 @@ bool RunSimTierTable(const SimTierSpec& spec,
         const std::string dir = spec.object_dir + "/" + tier.name;
         ModelPtr m;
         if (WriteObjectFiles(o, dir, SourceDir(), &e)) {
-          m = LoadModel(dir + "/" + ObjectSceneFile(ObjectFileNames(o.name), tier.object_kind), &e);
+          m = LoadModel(dir + "/" + ObjectSceneFile(o, tier.object_kind), &e);
         }
         if (!m) {
           outcomes[i] = o.name + " not run: " + e;

@@ -30,9 +30,10 @@ int RunObjectsCommand(int argc, char** argv) {
               NumberRange::Closed(1, 1000));
   cmd.Seed("seed", &seed, "base seed");
   cmd.Choice("scene-kind", &kind,
-             "'gantry' (light, for tables), 'arm' (the UR-10 scenes) or 'flex' (the gantry with "
-             "the deformable skirt lip, docs/objects.md)",
-             {"gantry", "arm", "flex"});
+             "'gantry' (light, for tables), 'arm' (the UR-10 scenes), 'flex' (the gantry with "
+             "the deformable skirt lip) or 'auto' (per object: flex where the lip's shape decides, "
+             "gantry where the two agree; docs/objects.md)",
+             {"gantry", "arm", "flex", "auto"});
   AddLawOptions(&cmd, &law);
   ObjectStudySpec spec;
   std::string effects_text = "default";

@@ -86,9 +86,9 @@ int RunViewCommand(int argc, char** argv) {
       std::fprintf(stderr, "ssc view: %s\n", error.c_str());
       return 1;
     }
-    v.scene_path = std::filesystem::absolute(std::filesystem::path(dir) /
-                                             ObjectSceneFile(ObjectFileNames(spec.name), kind))
-                       .string();
+    v.scene_path =
+        std::filesystem::absolute(std::filesystem::path(dir) / ObjectSceneFile(spec, kind))
+            .string();
     v.config = ObjectTrialConfig(spec, v.config);  // the options hold on objects too
   }
   v.create_outputs = [&cmd]() { return cmd.CreateOutputs(); };

@@ -131,10 +131,9 @@ TrialConfig MakeConfig(double pref, double beta, double step_mm, std::uint64_t s
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "ssc_twin_objects";
     std::string error;
     if (!WriteObjectFiles(spec, dir.string(), ResourceDir(), &error)) Fail(error);
-    const ObjectFiles files = ObjectFileNames(spec.name);
     // The object's scene of the scene's tier: flex for *flex*, the gantry for *gantry*,
     // *light* and *fast*, else the arm.
-    *scene = (dir / ObjectSceneFile(files, ObjectSceneKindOfScene(*scene))).string();
+    *scene = (dir / ObjectSceneFile(spec, ObjectSceneKindOfScene(*scene))).string();
     config = ObjectTrialConfig(spec, config);
   }
   if (std::string e; !ParseRobotEffects(effects, &config.effects, &e)) Invalid(e);

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 
+#include "geometry/dimensions.h"
 #include "objects/object_mjcf.h"
 #include "objects/object_spec.h"
 #include "runtime/mujoco_model.h"
@@ -263,6 +264,32 @@ TEST(FilletProfileTest, PassesThePublishedCrossSectionsSmoothlyAndMonotonically)
 
 // ---------------------------------------------------------------------------------------------
 // Written files.
+
+TEST(ObjectTierTest, AutoRunsTheFlexLipWhereItsShapeDecides) {
+  ObjectSceneKind kind = ObjectSceneKind::kGantry;
+  std::string error;
+  ASSERT_TRUE(ObjectSceneKindByName("auto", &kind, &error)) << error;
+  EXPECT_EQ(kind, ObjectSceneKind::kAuto);
+  for (const ObjectSpec& spec : AllObjects()) {
+    const ObjectSceneKind tier = ObjectTier(ObjectSceneKind::kAuto, spec);
+    const bool segment = spec.kind == ObjectKind::kHole ||
+                         (spec.kind == ObjectKind::kDisk && spec.param >= kCupBodyDiameterMm);
+    EXPECT_EQ(tier, segment ? ObjectSceneKind::kGantry : ObjectSceneKind::kFlex) << spec.name;
+    const ObjectFiles f = ObjectFileNames(spec.name);
+    EXPECT_EQ(ObjectSceneFile(spec, ObjectSceneKind::kAuto),
+              segment ? f.gantry_scene : f.flex_scene)
+        << spec.name;
+    // A named tier is every object's.
+    for (ObjectSceneKind named :
+         {ObjectSceneKind::kGantry, ObjectSceneKind::kArm, ObjectSceneKind::kFlex}) {
+      EXPECT_EQ(ObjectTier(named, spec), named) << spec.name;
+    }
+  }
+  EXPECT_EQ(ObjectTier(ObjectSceneKind::kAuto, ObjectByName("disk_d14")), ObjectSceneKind::kFlex);
+  EXPECT_EQ(ObjectTier(ObjectSceneKind::kAuto, ObjectByName("disk_r35")), ObjectSceneKind::kGantry);
+  EXPECT_EQ(ObjectTier(ObjectSceneKind::kAuto, ObjectByName("corner_a270")),
+            ObjectSceneKind::kFlex);
+}
 
 TEST(ObjectFilesTest, EveryFileLoadsAndOutputIsDeterministic) {
   for (const ObjectSpec& spec : AllObjects()) {

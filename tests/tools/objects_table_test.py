@@ -1,0 +1,84 @@
+"""tools/objects_table.py on small synthetic objects.csv files: rows of one object gathered over
+files and sorted by seed, outcome counts, mean +- sd of where the trials ended (mm along the
+edge, degrees swept, the fillet's radius), the other tier beside, and a file that is not an
+objects.csv refused."""
+import contextlib
+import csv
+import io
+import os
+import sys
+import tempfile
+import unittest
+
+ROOT = os.environ.get("SSC_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import objects_table  # noqa: E402
+
+COLUMNS = ["object", "kind", "seed", "outcome", "end_arc_mm", "end_swept_deg",
+           "end_fillet_radius_mm", "detail"]
+
+
+def write(path, rows):
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(COLUMNS)
+        w.writerows(rows)
+    return path
+
+
+def run(argv):
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        objects_table.main(argv)
+    return out.getvalue().splitlines()
+
+
+class ObjectsTableTest(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.TemporaryDirectory()
+        d = self.dir.name
+        self.seed2 = write(os.path.join(d, "s2.csv"), [
+            ["corner_a270", "corner", 2, "success", 83.2, 0, -1, ""],
+            ["fillet", "fillet", 2, "lost_edge", 140.0, 0, 14.8, ""],
+        ])
+        self.seed1 = write(os.path.join(d, "s1.csv"), [
+            ["corner_a270", "corner", 1, "lost_edge", 60.0, 0, -1, ""],
+            ["fillet", "fillet", 1, "lost_edge", 130.0, 0, 14.4, ""],
+            ["hole_d02", "hole", 1, "success", -1, -400.0, -1, ""],
+        ])
+        self.other = write(os.path.join(d, "g.csv"), [
+            ["fillet", "fillet", 1, "success", 170.2, 0, 15.7, ""],
+        ])
+
+    def tearDown(self):
+        self.dir.cleanup()
+
+    def test_rows_over_files_with_counts_and_spread(self):
+        lines = run([self.seed2, self.seed1])
+        rows = {line.split(" | ")[0].lstrip("| "): line for line in lines[2:]}
+        self.assertEqual(list(rows), ["corner_a270", "fillet", "hole_d02"])
+        self.assertIn("`lost_edge` 1/2, `success` 1/2", rows["corner_a270"])
+        # Per-seed values in seed order (seed 1 first though read second).
+        self.assertIn("71.6 ± 16.4 mm (60.0, 83.2)", rows["corner_a270"])
+        self.assertIn("135.0 ± 7.1 mm (130.0, 140.0); radius 14.60 ± 0.28 mm", rows["fillet"])
+        self.assertIn("| 1 | `success` | -400.0 deg |", rows["hole_d02"])
+
+    def test_the_other_tier_beside(self):
+        lines = run([self.seed1, "--against", self.other, "--against-label", "gantry"])
+        self.assertIn("gantry: outcome", lines[0])
+        fillet = next(line for line in lines if line.startswith("| fillet"))
+        self.assertTrue(fillet.endswith("| `success` | 170.2 mm; radius 15.70 mm |"), fillet)
+        hole = next(line for line in lines if line.startswith("| hole_d02"))
+        self.assertIn("not run", hole)
+
+    def test_a_file_that_is_not_an_objects_csv_is_refused(self):
+        bad = os.path.join(self.dir.name, "bad.csv")
+        with open(bad, "w") as f:
+            f.write("x_m,y_m\n1,2\n")
+        with self.assertRaises(SystemExit) as e:
+            run([bad])
+        self.assertIn("not an objects.csv", str(e.exception.code))
+
+
+if __name__ == "__main__":
+    unittest.main()
