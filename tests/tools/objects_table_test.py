@@ -71,6 +71,30 @@ class ObjectsTableTest(unittest.TestCase):
         hole = next(line for line in lines if line.startswith("| hole_d02"))
         self.assertIn("not run", hole)
 
+    def test_fillet_profile_per_stretch_over_seeds(self):
+        d = self.dir.name
+        paths = []
+        for k, (diff, end) in enumerate([(200.0, 140.0), (180.0, 120.0)]):
+            path = os.path.join(d, f"profile{k}.csv")
+            with open(path, "w", newline="") as f:
+                w = csv.writer(f)
+                w.writerow(["x_mm", "fillet_radius_mm", "pbar_pa", "diff_pa", "y_mm"])
+                x = 10.0
+                while x <= end:
+                    # |dP| falls by 1 Pa per mm along the edge from `diff` at 10 mm
+                    w.writerow([x, x / 10, 100.0, diff - (x - 10), 3.0])
+                    x += 1.0
+            paths.append(path)
+        lines = run(["--fillet-profile"] + paths)
+        first = next(line for line in lines if line.startswith("| 10–40 "))
+        # seed means over 10..39 mm: 185.5 and 165.5 Pa
+        self.assertIn("| 2 | 2.5 ± 0.0 | 100 ± 0 | 176 ± 14 |", first)
+        late = next(line for line in lines if line.startswith("| 130–160 "))
+        self.assertIn("| 1 |", late)  # the second seed ended at 120 mm
+        last = next(line for line in lines if line.startswith("| the last 10"))
+        # the last 10 mm before each end: 130..140 and 110..120 mm, |dP| 80..70 Pa in both
+        self.assertIn("| 2 | 12.5 ± 1.4 | 100 ± 0 | 75 ± 0 |", last)
+
     def test_a_file_that_is_not_an_objects_csv_is_refused(self):
         bad = os.path.join(self.dir.name, "bad.csv")
         with open(bad, "w") as f:
