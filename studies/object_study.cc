@@ -139,7 +139,7 @@ bool RunObjectStudy(const ObjectStudySpec& spec,
   std::vector<std::string> table_rows(jobs.size());
   JobRunnerOptions options;
   options.threads = spec.threads;
-  RunJobs(set, options, [&](size_t j, const std::string& result) {
+  const JobRunStats stats = RunJobs(set, options, [&](size_t j, const std::string& result) {
     const size_t a = result.find('\n'), b = result.find('\n', a + 1);
     table_rows[j] = result.substr(a + 1, b == std::string::npos ? b : b - a - 1);
     if (b != std::string::npos) {
@@ -150,10 +150,15 @@ bool RunObjectStudy(const ObjectStudySpec& spec,
   });
   if (JobRunnerRank() != 0) return true;
   summary->trials = static_cast<int>(jobs.size());
+  summary->interrupted = stats.interrupted;
   summary->table_csv = (out / "objects.csv").string();
   OutputFile table(summary->table_csv);
   table.stream() << ObjectTableHeader() << '\n';
-  for (const std::string& r : table_rows) table.stream() << r << '\n';
+  for (const std::string& r : table_rows) {
+    if (r.empty()) continue;  // not run: interrupted
+    table.stream() << r << '\n';
+    ++summary->finished;
+  }
   return table.Commit(error);
 }
 

@@ -32,13 +32,16 @@ struct ObjectStudySpec {
 };
 
 struct ObjectStudySummary {
-  int trials = 0;
+  int trials = 0;            // trials asked for
+  int finished = 0;          // trials whose rows are in the table (all but on an interruption)
+  bool interrupted = false;  // SIGINT/SIGTERM: the table holds the finished rows only
   std::string table_csv, paths_dir, fillet_profile_csv;  // paths written ("" if none)
   std::string fillet_line;  // where the fillet trial ended, in words ("" without a fillet)
 };
 
 // `progress` (optional) gets one line per finished trial, in the runner's delivery order.
-// False + *error when a file cannot be written.
+// False + *error when a file cannot be written. Interrupted (studies/job_runner.h), the table
+// is written with the finished trials' rows and summary->interrupted is set; it does not resume.
 bool RunObjectStudy(const ObjectStudySpec& spec,
                     const std::function<void(const std::string&)>& progress,
                     ObjectStudySummary* summary, std::string* error);

@@ -48,7 +48,8 @@ StabilityResult RunStabilityStudy(const mjModel* model, const StabilitySpec& spe
   };
   JobRunnerOptions options;
   options.threads = std::max(1, spec.threads);
-  const std::vector<std::string> out = RunJobsCollect(set, options);
+  JobRunStats stats;
+  const std::vector<std::string> out = RunJobsCollect(set, options, &stats);
   auto row = [&](std::size_t i) {
     StabilityRow r;
     r.integrator = jobs[i].integrator.name;
@@ -60,13 +61,18 @@ StabilityResult RunStabilityStudy(const mjModel* model, const StabilitySpec& spe
     return r;
   };
   StabilityResult result;
+  result.trials = static_cast<int>(jobs.size());
   if (out.size() != jobs.size()) return result;  // not rank 0 under MPI
+  result.interrupted = stats.interrupted;
+  // An interrupted run leaves jobs without a result: rows only for finished ones, and only when
+  // the reference they are judged against finished.
+  if (out[0].empty()) return result;
   result.reference = row(0);
   const StabilityRow& ref = result.reference;
   for (const Integrator& in : kIntegrators) {
     double largest_ok = 0;
     for (std::size_t i = 1; i < jobs.size(); ++i) {
-      if (jobs[i].integrator.id != in.id) continue;
+      if (jobs[i].integrator.id != in.id || out[i].empty()) continue;
       StabilityRow r = row(i);
       r.unchanged = r.stable && r.outcome == ref.outcome &&
                     std::fabs(r.r_mean_mm - ref.r_mean_mm) <= spec.dr_tol_mm &&
@@ -74,7 +80,7 @@ StabilityResult RunStabilityStudy(const mjModel* model, const StabilitySpec& spe
       if (r.unchanged) largest_ok = std::max(largest_ok, r.timestep_ms);
       result.rows.push_back(r);
     }
-    result.largest_unchanged_ms.emplace_back(in.name, largest_ok);
+    if (!result.interrupted) result.largest_unchanged_ms.emplace_back(in.name, largest_ok);
   }
   return result;
 }

@@ -31,6 +31,10 @@ struct StabilityResult {
   StabilityRow reference;          // RK4, 0.5 ms
   std::vector<StabilityRow> rows;  // integrator by integrator, steps in the given order
   std::vector<std::pair<std::string, double>> largest_unchanged_ms;  // per integrator
+  // SIGINT/SIGTERM (studies/job_runner.h): `rows` holds the finished trials, judged when the
+  // reference finished (none otherwise); largest_unchanged_ms is empty (it needs every step).
+  bool interrupted = false;
+  int trials = 0;  // asked for, with the reference
 };
 
 StabilityResult RunStabilityStudy(const mjModel* model, const StabilitySpec& spec);

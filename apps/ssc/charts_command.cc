@@ -17,6 +17,7 @@
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
+#include "apps/ssc/trial_options.h"
 #include "common/output_file.h"
 #include "runtime/mujoco_model.h"
 #include "studies/object_study.h"
@@ -80,7 +81,7 @@ int RunChartsCommand(int argc, char** argv) {
   cmd.NumberList("step", &spec.step_mm, "step lengths", "mm",
                  NumberRange::Closed(kMinStepMm, kMaxStepMm));
   cmd.Integer("repeats", &repeats, "trials per point", NumberRange::Closed(1, 1000));
-  cmd.Integer("threads", &threads, "threads for the sweep", NumberRange::Closed(1, 256));
+  AddThreadsOption(&cmd, &threads);
   cmd.OutputDir("out", &out_dir, "output directory");
   std::string tier_names = "gantry,flex", tier_objects = "corner_a090,corner_a270,hole_d06,fillet";
   SimTierSpec tiers;

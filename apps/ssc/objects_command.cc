@@ -71,6 +71,13 @@ int RunObjectsCommand(int argc, char** argv) {
   const std::filesystem::path out = out_dir;
   std::printf("wrote %zu objects' scenes into %s\n", spec.objects.size(), (out / "scenes").c_str());
   if (write_only) return 0;
+  if (summary.interrupted) {
+    std::fprintf(stderr,
+                 "ssc objects: interrupted; %d of %d trials finished, their rows are in %s (the "
+                 "study does not resume: run it again whole)\n",
+                 summary.finished, summary.trials, summary.table_csv.c_str());
+    return 130;
+  }
   std::printf("wrote %s\n", summary.table_csv.c_str());
   if (!summary.fillet_line.empty()) {
     std::printf("%s; wrote %s\n", summary.fillet_line.c_str(), summary.fillet_profile_csv.c_str());

@@ -15,6 +15,32 @@
 
 namespace ssc {
 
+namespace {
+
+// The reference, then per integrator its rows and (when every trial finished) its largest step.
+void PrintStabilityTable(const StabilityResult& result) {
+  const StabilityRow& ref = result.reference;
+  std::printf("reference (RK4, 0.5 ms): %s, r_mean %.2f mm, s %.1f mm\n", OutcomeName(ref.outcome),
+              ref.r_mean_mm, ref.s_mm);
+  std::printf("%-13s %8s %-11s %9s %8s %7s  stable unchanged\n", "integrator", "dt (ms)", "outcome",
+              "r_mean", "s (mm)", "wall s");
+  const std::vector<StabilityRow>& rows = result.rows;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const StabilityRow& r = rows[i];
+    std::printf("%-13s %8.2f %-11s %9.2f %8.1f %7.2f  %-6s %s\n", r.integrator.c_str(),
+                r.timestep_ms, OutcomeName(r.outcome), r.r_mean_mm, r.s_mm, r.wall_s,
+                r.stable ? "yes" : "NO", r.unchanged ? "yes" : "no");
+    if (i + 1 < rows.size() && rows[i + 1].integrator == r.integrator) continue;
+    for (const auto& [name, largest_ms] : result.largest_unchanged_ms) {
+      if (name != r.integrator) continue;
+      std::printf("%s: largest time step with unchanged results: %.2f ms\n", name.c_str(),
+                  largest_ms);
+    }
+  }
+}
+
+}  // namespace
+
 int RunStabilityCommand(int argc, char** argv) {
   cli::Command cmd(
       "stability",
@@ -55,27 +81,27 @@ int RunStabilityCommand(int argc, char** argv) {
   }
   if (int rc = cmd.CreateOutputs(); rc != 0) return rc;
   const StabilityResult result = RunStabilityStudy(base.get(), spec);
-  const StabilityRow& ref = result.reference;
-  std::printf("reference (RK4, 0.5 ms): %s, r_mean %.2f mm, s %.1f mm\n", OutcomeName(ref.outcome),
-              ref.r_mean_mm, ref.s_mm);
-  std::printf("%-13s %8s %-11s %9s %8s %7s  stable unchanged\n", "integrator", "dt (ms)", "outcome",
-              "r_mean", "s (mm)", "wall s");
-  for (const auto& [name, largest_ms] : result.largest_unchanged_ms) {
-    for (const StabilityRow& r : result.rows) {
-      if (r.integrator != name) continue;
-      std::printf("%-13s %8.2f %-11s %9.2f %8.1f %7.2f  %-6s %s\n", r.integrator.c_str(),
-                  r.timestep_ms, OutcomeName(r.outcome), r.r_mean_mm, r.s_mm, r.wall_s,
-                  r.stable ? "yes" : "NO", r.unchanged ? "yes" : "no");
-    }
-    std::printf("%s: largest time step with unchanged results: %.2f ms\n", name.c_str(),
-                largest_ms);
-  }
   const std::filesystem::path csv = std::filesystem::path(out_dir) / "stability.csv";
+  if (result.interrupted && result.rows.empty()) {
+    std::fprintf(stderr,
+                 "ssc stability: interrupted before the reference trial finished; "
+                 "nothing written\n");
+    return 130;
+  }
+  PrintStabilityTable(result);
   if (std::string e; !WriteWholeFile(csv.string(), StabilityCsv(result), &e)) {
     std::fprintf(stderr, "ssc stability: %s\n", e.c_str());
     return 1;
   }
   std::printf("wrote %s\n", csv.c_str());
+  if (result.interrupted) {
+    std::fprintf(stderr,
+                 "ssc stability: interrupted after %zu of %d trials (the reference above, the "
+                 "others in %s), without the largest steps (they need every trial; the study "
+                 "does not resume)\n",
+                 result.rows.size() + 1, result.trials, csv.c_str());
+    return 130;
+  }
   return 0;
 }
 

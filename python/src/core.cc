@@ -100,6 +100,12 @@ nb::dict Dict(std::initializer_list<std::pair<const char*, nb::object>> items) {
 // A bad argument: ValueError in Python. The message comes from the same C++ check the command
 // line uses (one validation home per input).
 [[noreturn]] void Invalid(const std::string& what) { throw std::invalid_argument(what); }
+// A study stopped by SIGINT/SIGTERM (the job runner takes the signal while it runs and keeps
+// the finished results): KeyboardInterrupt, as Python's own Ctrl-C, saying what was kept.
+[[noreturn]] void Interrupted(const std::string& what) {
+  PyErr_SetString(PyExc_KeyboardInterrupt, what.c_str());
+  throw nb::python_error();
+}
 
 // timeout_s as the bindings take it: 0 = the default, else the trial's own range check.
 void SetTimeout(double timeout_s, TrialConfig* config) {
@@ -934,6 +940,10 @@ NB_MODULE(_core, m) {
         }
         reporter.Raise();
         if (!ok) Fail(error);
+        if (summary.interrupted) {
+          Interrupted("sweep interrupted: " + std::to_string(summary.ran) +
+                      " finished rows kept in " + out_csv + "; call it again to resume");
+        }
         return Dict({{"csv", nb::cast(out_csv)},
                      {"total", nb::cast(summary.total)},
                      {"ran", nb::cast(summary.ran)},
@@ -994,6 +1004,7 @@ NB_MODULE(_core, m) {
                              nullptr, &ceilings);
         }
         reporter.Raise();
+        if (summary.interrupted) Interrupted("validate " + error);
         if (!ok) Fail(error);
         nb::dict d;
         d["scores"] = Dict({{"cells", nb::cast(score.cells_scored)},
@@ -1083,6 +1094,11 @@ NB_MODULE(_core, m) {
           ok = RunObjectStudy(spec, nullptr, &summary, &error);
         }
         if (!ok) Fail(error);
+        if (summary.interrupted) {
+          Interrupted("objects interrupted: " + std::to_string(summary.finished) + " of " +
+                      std::to_string(summary.trials) + " trials finished, their rows are in " +
+                      summary.table_csv + " (the study does not resume)");
+        }
         return Dict({{"csv", nb::cast(summary.table_csv)},
                      {"paths_dir", nb::cast(summary.paths_dir)},
                      {"trials", nb::cast(summary.trials)}});

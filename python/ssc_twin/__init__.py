@@ -76,6 +76,7 @@ def read_sweep(csv_path):
                               invalid_raise=True)
     except ValueError as e:
         raise ValueError(f"{path}: cannot read as a sweep CSV: {e}") from None
+    table = np.atleast_1d(table)  # one row: arrays of length 1, not 0-d scalars
     return {name: table[name] for name in table.dtype.names}
 
 

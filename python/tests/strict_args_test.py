@@ -89,6 +89,31 @@ class StrictArgumentsTest(unittest.TestCase):
                                out_dir=os.path.join(self.tmp, "v"))
         self.assertTrue(message.isprintable(), message)
 
+    def test_an_interrupted_sweep_raises_keyboard_interrupt_and_resumes(self):
+        # SIGINT while the study runs (Ctrl-C, a notebook's interrupt) is taken by the job
+        # runner, which keeps the finished rows; the call must not return as if complete.
+        import signal
+        csv = os.path.join(self.tmp, "interrupted.csv")
+        grid = dict(pref=[100], beta=[2], step_mm=[7.5], repeats=4, threads=1, out_csv=csv)
+
+        def interrupt_after_the_first(done, total, elapsed_s):
+            if done == 1:
+                os.kill(os.getpid(), signal.SIGINT)
+
+        with self.assertRaises(KeyboardInterrupt) as cm:
+            ssc_twin.sweep(progress=interrupt_after_the_first, **grid)
+        self.assertIn("finished rows kept in " + csv, str(cm.exception))
+        kept = len(ssc_twin.read_sweep(csv)["seed"])
+        self.assertLess(kept, 4)
+        self.assertEqual(ssc_twin.sweep(**grid)["skipped"], kept)
+
+    def test_a_sweep_of_one_row_reads_as_arrays(self):
+        csv = os.path.join(self.tmp, "one_row.csv")
+        ssc_twin.sweep(pref=[100], beta=[2], step_mm=[7.5], repeats=1, out_csv=csv)
+        table = ssc_twin.read_sweep(csv)
+        self.assertEqual(table["seed"].shape, (1,))
+        self.assertEqual(len(table["outcome"]), 1)
+
     def test_compare_tcp_offset_in_mm(self):
         rec = os.path.join(self.tmp, "rec")
         ssc_twin.write_robot_log(rec)

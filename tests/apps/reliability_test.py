@@ -180,6 +180,43 @@ class ReliabilityTest(unittest.TestCase):
         self.assertEqual(p.returncode, -signal.SIGTERM)
         self.assertFalse(os.path.exists(os.path.dirname(out)))
 
+    def test_sigterm_mid_objects_keeps_the_finished_rows_and_says_so(self):
+        out = os.path.join(self.tmp, "term_objects")
+        names = ["disk_d14", "disk_d12", "hole_d14", "hole_d12", "corner_a090", "corner_a270"]
+        p = subprocess.Popen([SSC, "objects", "--objects", ",".join(names), "--threads", "1",
+                              "--no-plot", "--out", out], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True)
+        first = p.stdout.readline()  # a trial's line: one row finished
+        self.assertIn("seed 1", first)
+        p.send_signal(signal.SIGTERM)
+        rest, err = p.communicate(timeout=120)
+        self.assertEqual(p.returncode, 130, err)
+        finished = 1 + rest.count(" seed 1 ")
+        self.assertLess(finished, len(names), "every trial ended before SIGTERM")
+        self.assertIn("interrupted; %d of %d trials finished" % (finished, len(names)), err)
+        with open(os.path.join(out, "objects.csv")) as f:
+            lines = f.read().splitlines()
+        self.assertEqual(len(lines), 1 + finished)  # the header and whole rows, no blank ones
+        self.assertTrue(all(line.count(",") == lines[0].count(",") for line in lines), lines)
+        self.assertEqual(leftovers(out), [])
+
+    def test_sigterm_mid_stability_keeps_only_judged_rows(self):
+        out = os.path.join(self.tmp, "term_stability")
+        p = subprocess.Popen([SSC, "stability", "--scene", "disk_benchmark_fast", "--steps-ms",
+                              "4,8", "--threads", "1", "--out", out], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True)
+        time.sleep(1)  # the 0.5 ms reference alone takes longer
+        p.send_signal(signal.SIGTERM)
+        printed, err = p.communicate(timeout=120)
+        self.assertEqual(p.returncode, 130, err)
+        self.assertIn("interrupted", err)
+        self.assertNotIn("largest time step", printed)
+        csv_path = os.path.join(out, "stability.csv")
+        if os.path.exists(csv_path):  # the reference finished: only its judged rows
+            self.assertNotIn("running", "".join(r["outcome"] for r in rows(csv_path)))
+        else:
+            self.assertIn("before the reference trial finished", err)
+
     def test_a_full_disk_fails_compare_whole(self):
         disk = os.path.join(self.tmp, "full")
         os.makedirs(disk)
