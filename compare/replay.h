@@ -6,6 +6,7 @@
 
 #include <array>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -18,7 +19,10 @@ namespace ssc {
 struct ReplayComparison {
   std::array<double, 4> rms_pa{}, rms_log10{}, correlation{}, mean_ratio{};
   double pbar_rms_pa = 0, pbar_bias_pa = 0;
-  double direction_rms_deg = 0, direction_median_deg = 0;  // g from sim vs from the log
+  // g from sim vs from the log, over the samples where both exceed P_n; NaN without any (a
+  // replay off the object), never a 0 that reads as perfect agreement.
+  double direction_rms_deg = std::numeric_limits<double>::quiet_NaN();
+  double direction_median_deg = std::numeric_limits<double>::quiet_NaN();
   int direction_samples = 0;
   std::vector<double> t_s;
   std::vector<std::array<double, 4>> sim_pa, log_pa;

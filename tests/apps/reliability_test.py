@@ -350,6 +350,13 @@ class CompareOptionsTest(unittest.TestCase):
         self.assertIn("the replay disagrees with the log", off.stderr)
         for option in ("--tcp-offset", "--log-frame", "--object-pose"):
             self.assertIn(option, off.stderr)
+        # No sample where both sides read a differential: no direction error, not a perfect 0.
+        with open(os.path.join(self.tmp, "cmp", "report.json")) as f:
+            replay = json.load(f)["replay"]
+        self.assertEqual(replay["direction_samples"], 0)
+        self.assertIsNone(replay["direction_rms_deg"])
+        self.assertIsNone(replay["direction_median_deg"])
+        self.assertIn("direction error RMS nan deg", off.stdout)
 
     def test_windows_longer_than_the_log_are_refused(self):
         r = self.compare("--offset-window", "59")
