@@ -88,7 +88,10 @@ class EdgeFollowingEnv(gym.Env):
         self._renderer = None  # mujoco.Renderer for rgb_array, per model
         self._viewer = None    # mujoco.viewer handle for human
         self._last_frame_wall_s = None
-        # None: the disk benchmark scene; else test objects by name, one drawn per episode.
+        # None: the disk benchmark scene; else test objects by name, one drawn per episode: a
+        # list, or one string of comma-separated names as ``ssc objects --objects`` takes them.
+        if isinstance(objects, str):
+            objects = objects.split(",")
         self.objects = [None] if not objects else list(objects)
         for name in self.objects:
             if name is not None and name not in _core.object_names() and not _parametric(name):
@@ -99,6 +102,9 @@ class EdgeFollowingEnv(gym.Env):
         self.max_step_mm = float(max_step_mm)
         self.pref, self.beta = float(pref), float(beta)
         self.failure_penalty, self.terminal_reward = float(failure_penalty), float(terminal_reward)
+        if not (math.isfinite(self.failure_penalty) and math.isfinite(self.terminal_reward)):
+            raise ValueError("failure_penalty and terminal_reward must be finite, got "
+                             f"{failure_penalty} and {terminal_reward}")
         self.timeout_s = float(timeout_s) if timeout_s else 0.0
         # The robot effects (docs/fidelity.md): "default" (the fitted set: each step lands off
         # target), "off" (the ideal loop) or "key=value,...".
@@ -119,6 +125,16 @@ class EdgeFollowingEnv(gym.Env):
         self._trial = None
         self._object = None
         self._progress_mm = 0.0
+        # The first object's trial now, not at the first reset(): the law, the effects, the
+        # timeout and the scene are refused here, with the C++ checks the command line runs.
+        first = self._trial_for(self.objects[0])
+        if render_mode is not None and self.camera not in ("cup", "free"):
+            import mujoco
+            model = first.model
+            if mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_CAMERA, self.camera) < 0:
+                names = [model.camera(k).name for k in range(model.ncam)]
+                raise ValueError(f"camera {self.camera!r}: use 'cup', 'free' or a camera of the "
+                                 f"model {names}")
 
     # -- helpers ---------------------------------------------------------------------------
     def _trial_for(self, name):

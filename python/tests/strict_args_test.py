@@ -123,6 +123,26 @@ class StrictArgumentsTest(unittest.TestCase):
 
 
 class EnvironmentActionsTest(unittest.TestCase):
+    def test_bad_arguments_are_refused_at_make_with_the_cli_checks(self):
+        try:
+            import gymnasium as gym
+        except ImportError:
+            self.skipTest("gymnasium not installed")
+        env_id = "ssc_twin/EdgeFollowing-v0"
+        for kw, text in ((dict(pref=5), "pref_pa (P_ref) = 5"),
+                         (dict(effects="foo=1"), "unknown key 'foo'"),
+                         (dict(timeout_s=-5), "timeout_s = -5"),
+                         (dict(failure_penalty=float("nan")), "finite"),
+                         (dict(render_mode="rgb_array", camera="nope"), "camera 'nope'")):
+            with self.subTest(**kw), self.assertRaises(ValueError) as cm:
+                gym.make(env_id, **kw)
+            self.assertIn(text, str(cm.exception))
+        # One string of names, as ssc objects --objects takes them (not one name per letter).
+        env = gym.make(env_id, objects="volute")
+        self.assertEqual(env.reset(seed=1)[1]["object"], "volute")
+        env.close()
+
+
     def test_non_finite_actions_are_refused_finite_ones_clipped(self):
         try:
             import gymnasium as gym
