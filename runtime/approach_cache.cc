@@ -94,7 +94,8 @@ TrialResult RunTrialShared(const mjModel* m, const TrialConfig& config, Approach
   // Callbacks that could read the pressures into the physics (mjcb_control is the trials').
   const bool callbacks = mjcb_passive || mjcb_act_dyn || mjcb_act_gain || mjcb_act_bias ||
                          mjcb_sensor || mjcb_contactfilter;
-  if (!cache->unshareable_reason().empty() || callbacks) {
+  // A controller that reads the approach needs it simulated with its own seed's readings.
+  if (!cache->unshareable_reason().empty() || callbacks || trial->ControllerObservesApproach()) {
     cache->Count(&ApproachCache::Counts::unshared);
     return trial->Run();
   }

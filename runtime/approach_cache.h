@@ -12,7 +12,8 @@
 //
 // A trial runs from scratch instead (counted as `unshared`) when its model has a plugin other
 // than the one pressure sensor, or a MuJoCo callback other than mjcb_control is installed (either
-// could feed the seed-dependent pressures back into the physics).
+// could feed the seed-dependent pressures back into the physics), or its controller reads the
+// sensors before following (Controller::ObservesBeforeFollowing: its readings are its seed's).
 #ifndef SSC_RUNTIME_APPROACH_CACHE_H_
 #define SSC_RUNTIME_APPROACH_CACHE_H_
 

@@ -169,6 +169,7 @@ void ContourTrial::Reset() {
   next_log_s_ = 0;
   next_log_time_s_ = 0;
   follow_start_s_ = 0;
+  next_observe_s_ = 0;
   goal_ = GoalTracker();
   goal_start_ = {};
   path_xy_.clear();
@@ -277,6 +278,14 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
     Log(false);
     next_log_time_s_ = t + config_.log_period_s;
   }
+  if ((phase_ == TrialPhase::kApproach || phase_ == TrialPhase::kMoveToStart) &&
+      t + 1e-9 >= next_observe_s_ && ControllerObservesApproach()) {
+    next_observe_s_ = t + config_.control_period_s;
+    ControllerInput in = InputAt(t, tool, effects_.HostReading(t, Pressures()));
+    in.iteration = 0;
+    in.follow_s = 0;
+    controller_->ObserveBeforeFollowing(in);
+  }
   switch (phase_) {
     case TrialPhase::kApproach:
       TareAndApproach(t, tool);
@@ -291,6 +300,10 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
       break;
   }
   servo_->Track(m_, d_);
+}
+
+bool ContourTrial::ControllerObservesApproach() const {
+  return controller_ && controller_->ObservesBeforeFollowing();
 }
 
 void ContourTrial::TrackLipShear(const Vec3& tool) {

@@ -149,6 +149,9 @@ class ContourTrial : public ControlCallback {
   bool Step();
 
   TrialPhase phase() const { return phase_; }
+  // The controller reads the sensors before following (Controller::ObservesBeforeFollowing):
+  // such a trial cannot resume from a shared approach.
+  bool ControllerObservesApproach() const;
   const TrialResult& result() const { return result_; }
   const TrialConfig& config() const { return config_; }
   TrialConfig& mutable_config() { return config_; }
@@ -240,6 +243,7 @@ class ContourTrial : public ControlCallback {
   double lifted_since_s_ = -1;  // when the controller's current hop began (-1: on surface)
   std::unique_ptr<Controller> controller_;
   double next_iteration_s_ = 0, next_log_s_ = 0, follow_start_s_ = 0;
+  double next_observe_s_ = 0;   // the controller's next reading before following
   double next_log_time_s_ = 0;  // next row of the trial log (all phases)
   Vec3 start_point_{};
   double reach_wait_since_s_ = -1;  // when the tool began waiting to reach a set point

@@ -30,7 +30,7 @@ struct ControllerInput {
   std::array<double, 3> tool_m{};  // measured tool position, world, m
   // Tool frame -> world rotation, row-major (a world vector = R * a tool vector).
   std::array<double, 9> tool_rotation{1, 0, 0, 0, 1, 0, 0, 0, 1};
-  double hold_z_m = 0;  // the tool height the approach settled at, world, m
+  double hold_z_m = 0;  // the tool height the approach settled at, world, m (0 before)
 };
 
 // The next command.
@@ -59,6 +59,13 @@ class Controller {
   // Why the last command is out of range, when the controller knows (e.g. the exception a
   // Python callable raised); "" otherwise.
   virtual std::string FaultDetail() const { return ""; }
+  // A controller that reads the host's sensors before following (the approach from the air and
+  // the move to the start point: e.g. to re-tare the chambers in air at the following pump
+  // duty) says so here; it then gets ObserveBeforeFollowing once per control period of those
+  // phases, with iteration and follow_s 0. Its trials simulate their own approach (they are not
+  // resumed from a shared one, runtime/approach_cache.h).
+  virtual bool ObservesBeforeFollowing() const { return false; }
+  virtual void ObserveBeforeFollowing(const ControllerInput& in) { (void)in; }
 };
 
 }  // namespace ssc

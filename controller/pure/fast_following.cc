@@ -46,9 +46,19 @@ FastFollowingController::FastFollowingController(const ControllerContext& contex
                                                  const FastFollowingParams& p)
     : law_(context.law), period_s_(context.control_period_s), p_(p) {}
 
+void FastFollowingController::ObserveBeforeFollowing(const ControllerInput& in) {
+  air_tare_.Add(in.p_pa, in.tool_m[2]);
+}
+
 ControllerCommand FastFollowingController::Step(const ControllerInput& in) {
   ControllerCommand c;
-  const ContourStep law = ComputeContourStep(in.p_pa, law_);
+  if (p_.tare_in_air > 0 && !tared_) {  // the hold height is known from the first iteration on
+    tare_pa_ = air_tare_.Offsets(in.hold_z_m, p_.tare_clearance_mm * 1e-3);
+    tared_ = true;
+  }
+  std::array<double, 4> p_pa = in.p_pa;
+  for (std::size_t k = 0; k < 4; ++k) p_pa[k] -= tare_pa_[k];
+  const ContourStep law = ComputeContourStep(p_pa, law_);
   const std::array<double, 2> tool = {in.tool_m[0], in.tool_m[1]};
   const auto& R = in.tool_rotation;
   if (!law.moving) {  // the dead band: hold, and measure the turn afresh after it
@@ -125,7 +135,12 @@ ControllerType FastFollowingControllerType() {
        {"timing", "1", 0, 1, "1: scale the step by the measured loop period; 0: fixed", &P::timing},
        {"ramp_iterations", "1", 0, 50,
         "iterations over which the step grows from step_min_mm to step_max_mm at the start",
-        &P::ramp_iterations}});
+        &P::ramp_iterations},
+       {"tare_in_air", "1", 0, 1,
+        "1: re-tare the chambers in air on the way down and subtract the offsets", &P::tare_in_air},
+       {"tare_clearance_mm", "mm", 0.5, 50,
+        "the air re-tare uses the readings at least this far above the hold height",
+        &P::tare_clearance_mm}});
 }
 
 }  // namespace ssc

@@ -15,29 +15,33 @@
 // grow the step from step_min_mm (the turn estimate settles, the arm starts). The arm
 // lags its target (the servo's smoothing) and misses it (the landing error); the step adds
 // lag_gain times what separates the measured tool from the previous target, so the target, not
-// the lagging tool, advances by the step.
+// the lagging tool, advances by the step. With tare_in_air, the chambers' residual tare offsets
+// are measured in air on the way down (AirTare) and subtracted from every reading.
 #ifndef SSC_CONTROLLER_PURE_FAST_FOLLOWING_H_
 #define SSC_CONTROLLER_PURE_FAST_FOLLOWING_H_
 
 #include <array>
 #include <cstdint>
 
+#include "controller/pure/air_tare.h"
 #include "controller/pure/contour_law.h"
 #include "controller/pure/controller_registry.h"
 
 namespace ssc {
 
 struct FastFollowingParams {
-  double step_max_mm = 7.5;    // step on a straight edge with a strong differential
-  double step_min_mm = 5.0;    // step where the edge turns hard or the differential is weak
-  double strength_pa = 20.0;   // differential magnitude for the full step (0: always full)
-  double turn_slow_deg = 90;   // turn of the edge over one step that halves the step
-  double turn_filter = 0.5;    // weight of the newest turn measurement
-  double lead = 0.0;           // share of the edge's predicted turn the aim leads by
-  double lag_gain = 1.0;       // share of the arm's lag behind its target added to the step
-  double lateral_gain = 0.6;   // the move across the edge over the law's at its dL
-  double timing = 1.0;         // 1: scale the step by the measured period; 0: fixed
-  double ramp_iterations = 0;  // the step grows from step_min_mm over this many iterations
+  double step_max_mm = 7.5;      // step on a straight edge with a strong differential
+  double step_min_mm = 5.0;      // step where the edge turns hard or the differential is weak
+  double strength_pa = 20.0;     // differential magnitude for the full step (0: always full)
+  double turn_slow_deg = 90;     // turn of the edge over one step that halves the step
+  double turn_filter = 0.5;      // weight of the newest turn measurement
+  double lead = 0.0;             // share of the edge's predicted turn the aim leads by
+  double lag_gain = 1.0;         // share of the arm's lag behind its target added to the step
+  double lateral_gain = 0.6;     // the move across the edge over the law's at its dL
+  double timing = 1.0;           // 1: scale the step by the measured period; 0: fixed
+  double ramp_iterations = 0;    // the step grows from step_min_mm over this many iterations
+  double tare_in_air = 0;        // 1: re-tare the chambers in air on the way down (AirTare)
+  double tare_clearance_mm = 4;  // ... from the readings this far above the hold height
 };
 
 // The step length, mm: step_max_mm x min(1, strength / strength_pa) / (1 + turn_per_step /
@@ -58,6 +62,10 @@ class FastFollowingController : public Controller {
  public:
   FastFollowingController(const ControllerContext& context, const FastFollowingParams& p);
   ControllerCommand Step(const ControllerInput& in) override;
+  bool ObservesBeforeFollowing() const override { return p_.tare_in_air > 0; }
+  void ObserveBeforeFollowing(const ControllerInput& in) override;
+  // The chambers' offsets subtracted from every reading while following, Pa.
+  const std::array<double, 4>& tare_offsets_pa() const { return tare_pa_; }
   // The filtered turn of the edge, rad per metre (tool frame sense).
   double turn_per_m() const { return turn_per_m_; }
   double last_step_mm() const { return last_step_mm_; }
@@ -73,6 +81,9 @@ class FastFollowingController : public Controller {
   double last_t_s_ = 0;
   double turn_per_m_ = 0;
   double last_step_mm_ = 0;
+  AirTare air_tare_;
+  bool tared_ = false;
+  std::array<double, 4> tare_pa_{};
 };
 
 ControllerType FastFollowingControllerType();

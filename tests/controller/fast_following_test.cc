@@ -177,6 +177,39 @@ TEST(FastFollowingTest, TheFirstStepIsTheRampsShortestAndTheAimLeadsIntoTheTurn)
   EXPECT_GT(std::fabs(angle), 0.01);
 }
 
+TEST(FastFollowingTest, TheAirTareRemovesTheChambersOffsetsFromEveryReading) {
+  ControllerContext context;
+  FastFollowingParams p;
+  p.tare_in_air = 1;
+  p.tare_clearance_mm = 4;
+  FastFollowingController tared(context, p);
+  ASSERT_TRUE(tared.ObservesBeforeFollowing());
+  const std::array<double, 4> offsets = {8, -6, 3, -2};
+  // On the way down: two readings high in the air, one near the object (left out).
+  for (double z : {0.020, 0.016, 0.011}) {
+    ControllerInput air = At(0, 0, 0, offsets);
+    air.tool_m[2] = z;
+    if (z < 0.012) air.p_pa = {20, 10, 15, 12};
+    tared.ObserveBeforeFollowing(air);
+  }
+  const std::array<double, 4> edge = Straddling({std::sin(0.3), std::cos(0.3)}, 60, 5);
+  std::array<double, 4> read = edge;
+  for (std::size_t k = 0; k < 4; ++k) read[k] += offsets[k];
+  ControllerInput in = At(0, 0, 0, read);
+  in.hold_z_m = 0.008;  // the readings from 12 mm up count
+  const ControllerCommand cmd = tared.Step(in);
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_DOUBLE_EQ(tared.tare_offsets_pa()[k], offsets[k]);
+  p.tare_in_air = 0;
+  FastFollowingController ideal(context, p);
+  EXPECT_FALSE(ideal.ObservesBeforeFollowing());
+  const ControllerCommand truth = ideal.Step(At(0, 0, 0, edge));
+  EXPECT_NEAR(cmd.step_m[0], truth.step_m[0], 1e-12);
+  EXPECT_NEAR(cmd.step_m[1], truth.step_m[1], 1e-12);
+  FastFollowingController untared(context, p);
+  const ControllerCommand raw = untared.Step(At(0, 0, 0, read));
+  EXPECT_GT(std::hypot(raw.step_m[0] - truth.step_m[0], raw.step_m[1] - truth.step_m[1]), 1e-4);
+}
+
 TEST(FastFollowingTest, InTheDeadBandItHolds) {
   ControllerContext context;
   FastFollowingController c(context, FastFollowingParams{});
