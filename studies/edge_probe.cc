@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include "common/output_file.h"
 #include "common/strict_number.h"
@@ -59,6 +60,54 @@ std::string EdgeProbe3d::CheckPlacement(double x_m, double y_m, double yaw_rad, 
     return bad("settle_s", settle_s, "(0, 10] s (settling time, simulated)");
   }
   return "";
+}
+
+std::string EdgeProbe3d::CheckStudyLayout() {
+  const mjModel* m = model_.get();
+  mjData* d = data_.get();
+  // The tool out of the rays' way for the check, then back (kinematics only: no step taken).
+  mjtNum* mpos = d->mocap_pos + 3 * mocap_id_;
+  const mjtNum saved[3] = {mpos[0], mpos[1], mpos[2]};
+  mpos[2] += 10;
+  mj_kinematics(m, d);
+  constexpr double kRayStartZ = 0.2, kTolM = 5e-4;
+  auto top_z = [&](double x, double y) {  // -inf where nothing static is below
+    const mjtNum from[3] = {x, y, kRayStartZ}, down[3] = {0, 0, -1};
+    int geom = -1;
+    const mjtNum dist = mj_ray(m, d, from, down, nullptr, 1, -1, &geom, nullptr);
+    return dist < 0 ? -std::numeric_limits<double>::infinity() : kRayStartZ - dist;
+  };
+  const double r = kBenchmarkDiskRadiusM, cx = kProbeDiskCentreXM, in = 0.005;
+  struct Point {
+    double x, y;
+    bool surface;
+    const char* what;
+  };
+  const Point points[] = {{-in, 0, true, "the plate just inside its edge at x = 0"},
+                          {in, 0, false, "just outside the plate's edge at x = 0"},
+                          {cx, 0, true, "the disk's centre"},
+                          {cx + r - in, 0, true, "the disk just inside its rim"},
+                          {cx + r + in, 0, false, "just outside the disk's rim"}};
+  std::string error;
+  for (const Point& p : points) {
+    const double z = top_z(p.x, p.y);
+    const bool at_top = std::fabs(z - kProbeSurfaceTopM) <= kTolM;
+    if (at_top == p.surface) continue;
+    char buf[320];
+    std::snprintf(buf, sizeof(buf),
+                  "the probe's layout is not in this scene: at (%.3f, %.3f) m (%s) the top "
+                  "surface is %s, expected %s z = %.3f m (scenes/probe_edge.xml: a plate with its "
+                  "straight edge along y at x = 0, a %.0f mm-radius disk centred at (%.2f, 0) m)",
+                  p.x, p.y, p.what, std::isfinite(z) ? (FormatNumber(z) + " m").c_str() : "absent",
+                  p.surface ? "at" : "below", kProbeSurfaceTopM, r * 1e3, cx);
+    error = buf;
+    break;
+  }
+  mpos[0] = saved[0];
+  mpos[1] = saved[1];
+  mpos[2] = saved[2];
+  mj_kinematics(m, d);
+  return error;
 }
 
 ProbeReading EdgeProbe3d::Read(double x_m, double y_m, double yaw_rad, double surface_z_m,
@@ -141,8 +190,12 @@ bool RunProbeStudy(EdgeProbe3d* probe, const ProbeStudySpec& spec,
   const std::filesystem::path out = spec.out_dir;
   result->edge_csv = (out / "edge.csv").string();
   result->disk_csv = (out / "disk.csv").string();
+  if (std::string e = probe->CheckStudyLayout(); !e.empty()) {
+    *error = e;
+    return false;
+  }
   // Straight edge along world y at x = 0, plate at x < 0 with its top at z = 10 mm.
-  const double surface_z = 0.010, compression = spec.compression_mm * 1e-3;
+  const double surface_z = kProbeSurfaceTopM, compression = spec.compression_mm * 1e-3;
   OutputFile edge_file(result->edge_csv);
   std::ostream& edge = edge_file.stream();
   WriteHeader(edge);
@@ -156,7 +209,7 @@ bool RunProbeStudy(EdgeProbe3d* probe, const ProbeStudySpec& spec,
   OutputFile disk_file(result->disk_csv);
   std::ostream& disk = disk_file.stream();
   WriteHeader(disk);
-  const double cx = 0.15, radius = kBenchmarkDiskRadiusM;
+  const double cx = kProbeDiskCentreXM, radius = kBenchmarkDiskRadiusM;
   for (double a = 0; a < 360 - 1e-9; a += spec.disk_step_deg) {
     const double th = a * M_PI / 180;
     const double r_m = radius - spec.disk_inset_mm * 1e-3;

@@ -48,6 +48,13 @@ class EdgeProbe3d {
   static std::string CheckPlacement(double x_m, double y_m, double yaw_rad, double surface_z_m,
                                     double compression_m, double settle_s);
 
+  // "" when the scene has the layout RunProbeStudy probes (scenes/probe_edge.xml): the plate's
+  // straight edge along world y at x = 0 (plate at x < 0) and the benchmark disk centred at
+  // (kProbeDiskCentreXM, 0), both with their top at kProbeSurfaceTopM; else the first point
+  // where it differs. A scene without it (disk_replay, another probe scene) would be probed in
+  // air and give a table of sensor noise. Surfaces found by rays with the tool lifted away.
+  std::string CheckStudyLayout();
+
   const mjModel* model() const { return model_.get(); }
   mjData* data() const { return data_.get(); }
 
@@ -62,9 +69,15 @@ class EdgeProbe3d {
   double tool_length_m_ = kToolCentreOffsetM;  // measured from the model at Create
 };
 
+// The probe scene's layout (scenes/probe_edge.xml): the plate edge at x = 0 and the disk's
+// centre on the x axis, both surfaces' top height.
+constexpr double kProbeSurfaceTopM = 0.010;
+constexpr double kProbeDiskCentreXM = 0.15;
+
 // ssc probe as a library function: the cup placed across a straight edge (plate at world x < 0,
 // top at z = 10 mm) from from_mm to to_mm inside it, then round the 35 mm disk (centre
-// (0.15, 0) m) at a fixed inset; OUT/edge.csv and OUT/disk.csv, one row per placement.
+// (0.15, 0) m) at a fixed inset; OUT/edge.csv and OUT/disk.csv, one row per placement. False
+// with *error when the scene lacks that layout (EdgeProbe3d::CheckStudyLayout) or a file fails.
 struct ProbeStudySpec {
   double from_mm = -6, to_mm = 7, step_mm = 0.25;  // cup centre inside the edge
   double compression_mm = 1.0;                     // lip plane below the surface top

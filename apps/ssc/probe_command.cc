@@ -52,6 +52,10 @@ int RunProbe(int argc, char** argv) {
     std::fprintf(stderr, "ssc probe: %s\n", error.c_str());
     return 1;
   }
+  if (std::string e = probe->CheckStudyLayout(); !e.empty()) {
+    std::fprintf(stderr, "ssc probe: %s: %s\n", scene_name.c_str(), e.c_str());
+    return 1;
+  }
   if (int rc = cmd.CreateOutputs(); rc != 0) return rc;
   ProbeStudySpec spec;
   spec.from_mm = from;

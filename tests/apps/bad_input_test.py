@@ -210,6 +210,9 @@ CASES = [
     (["trial", "--scene", "no_such_scene", "--out", "new_out"], 1, "no_such_scene"),
     (["sweep", "--scene", "no_such_scene", "--out", "new_out"], 1, "no_such_scene"),
     (["probe", "--scene", "no_such_scene", "--out", "new_out"], 1, "no_such_scene"),
+    # A probe scene without the plate and disk where the study probes: not a table of noise.
+    (["probe", "--scene", "disk_replay", "--out", "new_out"], 1,
+     "disk_replay: the probe's layout is not in this scene"),
     (["stability", "--scene", "no_such_scene", "--out", "new_out"], 1, "no_such_scene"),
     (["validate", "--map", "missing.csv", "--out", "new_out"], 1, "missing.csv"),
     (["calibrate", "--dynamic", "--map", "missing.csv", "--out", "new_out"], 1, "missing.csv"),
