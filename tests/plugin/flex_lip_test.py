@@ -290,6 +290,17 @@ class SkirtSensorTest(unittest.TestCase):
         lowered = Rig(concave_corner()).press(deep.d.qpos[0], 1.0, y_m=inset)
         self.assertLess(abs(deep.pressures()[2] - lowered.pressures()[2]),
                         0.3 * lowered.pressures()[2] + 10.0)
+        # Pushed on toward a set point 2.5 mm past that wall, the wedged lip is dragged down into
+        # the corner's gap (its rim well below the top face) and holds the cup back; the cup then
+        # leaks more than one lowered straight onto the same spot: the wedge opens the lip, no
+        # stretch folds shut over the open chamber.
+        far_end = -2.5e-3
+        far = Rig(concave_corner()).press(start, 1.0, y_m=inset)
+        far.push_x(far_end)
+        self.assertGreater(far.d.qpos[0] - far_end, 0.5e-3)
+        self.assertLess(far.rim()[:, 2].min(), -0.5e-3)
+        lowered_far = Rig(concave_corner()).press(far.d.qpos[0], 1.0, y_m=inset)
+        self.assertLess(far.pressures().mean(), 0.8 * lowered_far.pressures().mean())
 
     def quadrant_columns(self, rig):
         """The skirt vertices (flat indices) of the chamber whose rim points lie at world angles

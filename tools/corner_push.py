@@ -1,0 +1,88 @@
+#!/usr/bin/env python3
+"""The scripted push into a concave corner (docs/pneumatics.md, "The flex skirt at a concave
+corner") for the flex skirt as it is or a variant of tools/make_flex_tool.py's parameters.
+
+The rig of tests/plugin/flex_lip_test.py: the tool on a stiff x/y/z servo, lowered 2 mm above a
+plate to --press-mm into it with its centre 2.5 mm inside the edge y = 0, at x = 8 mm; then its
+set point moves at 20 mm/s along the edge to --to-mm and holds 0.3 s. The plate has a 270-degree
+corner at the origin (the quadrant x > 0, y > 0 is a 10 mm drop), so the stretch of lip hanging
+over the drop meets the corner's other wall, x = 0. Printed per press: where the cup ended, the
+rim's closest approach to the axis, its lowest vertex against the top face, and the four chamber
+pressures pushed / lowered (the cup set straight down where the pushed one ended).
+
+Usage (from the repository, after a build):
+  SSC_PLUGIN_LIB=build/lib/libssc_plugin.so .venv/bin/python tools/corner_push.py \\
+      --press-mm 0.3,1.0 --to-mm 1 [--set contact_radius_mm=0.2 --set rings=5 ...]
+"""
+import argparse
+import os
+import pathlib
+import subprocess
+import sys
+import tempfile
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--press-mm", default="0.3,1.0", help="commanded presses, comma-separated")
+    p.add_argument("--to-mm", type=float, default=1.0,
+                   help="the set point's end along the edge, mm from the corner's wall")
+    p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                   help="a skirt parameter of tools/make_flex_tool.py (repeatable)")
+    a = p.parse_args()
+    try:
+        presses = [float(v) for v in a.press_mm.split(",")]
+    except ValueError:
+        p.error(f"--press-mm {a.press_mm!r}: expected numbers, comma-separated")
+    if not all(0 < v <= 2 for v in presses):
+        p.error("--press-mm: each in (0, 2] mm")
+    if not -5 <= a.to_mm <= 7:
+        p.error("--to-mm: in [-5, 7] mm")
+    if "SSC_PLUGIN_LIB" not in os.environ:
+        p.error("set SSC_PLUGIN_LIB to the built plugin (build/lib/libssc_plugin.so)")
+    os.environ.setdefault("SSC_SOURCE_DIR", str(ROOT))
+    sys.path.insert(0, str(ROOT / "tests" / "plugin"))
+    import mujoco
+    import numpy as np
+    import flex_lip_test as rig_module
+
+    mujoco.mj_loadPluginLibrary(os.environ["SSC_PLUGIN_LIB"])
+    tool, variant = "ssc_tool_flex.xml", None
+    sectors = int(rig_module.skirt_parameters()["sectors"])
+    if a.set:
+        # The rig names the tool inside models/ (and picks the flex integrator by its name).
+        fd, variant = tempfile.mkstemp(prefix="flex_push_", suffix=".xml", dir=ROOT / "models")
+        os.close(fd)
+        cmd = [sys.executable, str(ROOT / "tools" / "make_flex_tool.py"), "--out", variant]
+        for item in a.set:
+            cmd += ["--set", item]
+            if item.startswith("sectors="):
+                sectors = int(float(item.split("=", 1)[1]))
+        subprocess.run(cmd, check=True)
+        tool = os.path.basename(variant)
+    try:
+        inset, start, end = -2.5e-3, 8e-3, a.to_mm * 1e-3
+        for press in presses:
+            pushed = rig_module.Rig(rig_module.concave_corner(), tool=tool).press(
+                start, press, y_m=inset)
+            pushed.push_x(end)
+            adr, n = pushed.m.flex_vertadr[0], pushed.m.flex_vertnum[0]
+            rim = pushed.d.flexvert_xpos[adr:adr + n].reshape(-1, sectors, 3)[-1]
+            c = pushed.d.qpos[:2]
+            closest = np.hypot(rim[:, 0] - c[0], rim[:, 1] - c[1]).min()
+            lowered = rig_module.Rig(rig_module.concave_corner(), tool=tool).press(
+                pushed.d.qpos[0], press, y_m=inset)
+            print(f"press {press:.1f} mm: cup at x {1e3 * c[0]:.2f} mm (set {a.to_mm:.2f}); rim "
+                  f"closest {1e3 * closest:.2f} mm, lowest {1e3 * rim[:, 2].min():+.2f} mm "
+                  f"(vertex centre vs the top face); chambers pushed "
+                  f"{np.round(pushed.pressures()).astype(int).tolist()} / lowered "
+                  f"{np.round(lowered.pressures()).astype(int).tolist()} Pa", flush=True)
+    finally:
+        if variant:
+            os.remove(variant)
+
+
+if __name__ == "__main__":
+    main()
