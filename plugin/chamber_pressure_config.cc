@@ -6,6 +6,8 @@
 #include <regex>
 #include <sstream>
 
+#include "common/xml_text.h"
+
 namespace ssc {
 namespace {
 
@@ -181,20 +183,8 @@ namespace {
 
 std::string FindEmptyConfigValuesIn(const std::filesystem::path& file,
                                     const std::filesystem::path& main_dir, int depth) {
-  std::ifstream in(file);
-  if (!in || depth > 16) return "";
-  std::stringstream buf;
-  buf << in.rdbuf();
-  std::string text = buf.str();
-  // Blank out comments (keeping newlines, for line numbers).
-  for (size_t a = text.find("<!--"); a != std::string::npos; a = text.find("<!--", a)) {
-    const size_t b = text.find("-->", a);
-    const size_t end = b == std::string::npos ? text.size() : b + 3;
-    std::replace_if(
-        text.begin() + static_cast<long>(a), text.begin() + static_cast<long>(end),
-        [](char ch) { return ch != '\n'; }, ' ');
-    a = end;
-  }
+  std::string text;
+  if (depth > 16 || !ReadXmlWithoutComments(file, &text)) return "";
   static const std::regex config_tag(R"(<config\b[^>]*>)");
   static const std::regex empty_value(R"(\bvalue\s*=\s*(["'])\s*\1)");
   static const std::regex key_attr(R"(\bkey\s*=\s*["']([^"']*)["'])");

@@ -8,6 +8,7 @@
 #define SSC_ROBOTLOG_LOG_TYPES_H_
 
 #include <array>
+#include <cstddef>
 #include <limits>
 #include <string>
 #include <vector>
@@ -59,6 +60,23 @@ struct HistoryRow {
   double f_normal_n = 0;
   std::array<double, 4> p_pa{};
 };
+
+// A history row spread out into numbers, as the N x 14 matrix form holds it (and Python's
+// write_lab_mat rows): [t, x, y, r_p[0], r_p[1], corr_p[0], corr_p[1], r_p_final[0],
+// r_p_final[1], F_normal, P1, P2, P3, P4].
+inline constexpr std::size_t kHistoryRowNumbers = 14;
+inline HistoryRow HistoryRowFromNumbers(const double* v) {
+  HistoryRow h;
+  h.t_s = v[0];
+  h.x_m = v[1];
+  h.y_m = v[2];
+  h.r_p = {v[3], v[4]};
+  h.corr_p = {v[5], v[6]};
+  h.r_p_final = {v[7], v[8]};
+  h.f_normal_n = v[9];
+  h.p_pa = {v[10], v[11], v[12], v[13]};
+  return h;
+}
 
 // The experiment script's arguments that the lab's MAT saver stores as variables (the disk
 // benchmark's; NaN or empty when the file does not hold them). Units as the script has them.

@@ -336,7 +336,7 @@ bool ReadHistory(mat_t* mat, const std::string& path, std::vector<HistoryRow>* o
     }
   } else {
     std::vector<double> x;
-    if (!ToDoubles(v.get(), &x) || (cols != kHistoryColumns && cols != 14)) {
+    if (!ToDoubles(v.get(), &x) || (cols != kHistoryColumns && cols != kHistoryRowNumbers)) {
       text::SetError(e, path, 0, 0,
                      what + "is " + std::to_string(n) + " x " + std::to_string(cols) +
                          ", expected an N x 11 cell array or an N x 14 matrix");
@@ -350,22 +350,14 @@ bool ReadHistory(mat_t* mat, const std::string& path, std::vector<HistoryRow>* o
     }
   }
   for (size_t i = 0; i < n; ++i) {
-    const std::vector<double>& r = rows[i];  // 14 numbers
+    const std::vector<double>& r = rows[i];  // kHistoryRowNumbers
     for (size_t k = 0; k < r.size(); ++k) {
       if (!std::isfinite(r[k])) {
         text::SetError(e, path, text::ToInt(i + 1), 0, what + "non-finite value");
         return false;
       }
     }
-    HistoryRow h;
-    h.t_s = r[0];
-    h.x_m = r[1];
-    h.y_m = r[2];
-    h.r_p = {r[3], r[4]};
-    h.corr_p = {r[5], r[6]};
-    h.r_p_final = {r[7], r[8]};
-    h.f_normal_n = r[9];
-    h.p_pa = {r[10], r[11], r[12], r[13]};
+    const HistoryRow h = HistoryRowFromNumbers(r.data());
     if (!out->empty() && !(h.t_s > out->back().t_s)) {
       text::SetError(e, path, text::ToInt(i + 1), 1,
                      what + "time " + text::FormatDouble(h.t_s) + " s does not increase (row " +

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "common/input_file.h"
+#include "common/xml_text.h"
 #include "plugin/chamber_pressure_config.h"
 
 namespace ssc {
@@ -143,18 +144,8 @@ std::string CheckSceneFiles(const std::filesystem::path& file,
                             const std::filesystem::path& main_dir, int depth) {
   namespace fs = std::filesystem;
   if (depth > 16) return file.string() + ": includes nested deeper than 16 files";
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream buf;
-  buf << in.rdbuf();
-  std::string text = buf.str();
-  for (size_t a = text.find("<!--"); a != std::string::npos; a = text.find("<!--", a)) {
-    const size_t b = text.find("-->", a);
-    const size_t end = b == std::string::npos ? text.size() : b + 3;
-    for (size_t i = a; i < end; ++i) {
-      if (text[i] != '\n') text[i] = ' ';
-    }
-    a = end;
-  }
+  std::string text;
+  ReadXmlWithoutComments(file, &text);  // unreadable: left to MuJoCo's message
   static const std::regex file_attr(R"(<(\w+)\b[^>]*?\bfile\s*=\s*["']([^"']+)["'])");
   for (auto it = std::sregex_iterator(text.begin(), text.end(), file_attr);
        it != std::sregex_iterator(); ++it) {

@@ -767,22 +767,13 @@ std::string WriteLabMat(const std::string& recording, const std::string& mat_dir
   if (args.contains("edgeFollowing_history")) {
     for (nb::handle row : nb::iter(args["edgeFollowing_history"])) {
       const std::vector<double> v = nb::cast<std::vector<double>>(row);
-      if (v.size() != 14) {
+      if (v.size() != kHistoryRowNumbers) {
         Fail(
             "edgeFollowing_history: each row needs 14 numbers [t, x, y, r_p(2), corr_p(2), "
             "r_p_final(2), F_normal, P1..P4], got " +
             std::to_string(v.size()));
       }
-      HistoryRow h;
-      h.t_s = v[0];
-      h.x_m = v[1];
-      h.y_m = v[2];
-      h.r_p = {v[3], v[4]};
-      h.corr_p = {v[5], v[6]};
-      h.r_p_final = {v[7], v[8]};
-      h.f_normal_n = v[9];
-      h.p_pa = {v[10], v[11], v[12], v[13]};
-      a.history.push_back(h);
+      a.history.push_back(HistoryRowFromNumbers(v.data()));
     }
   }
   const std::string stamp = RecordingStamp(log.t0_ns);
