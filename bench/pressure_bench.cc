@@ -158,119 +158,86 @@ struct Scene {
   }
 };
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  std::string scenes_arg = "disk_benchmark,disk_benchmark_gantry";
-  long block_arg = 500, rounds_arg = 11;
-  ssc::cli::Command cmd(
-      "bench",
-      "Per scene (names under scenes/ or paths; the first is the reference): the cost of a step\n"
-      "and where it goes, in alternating blocks within one run; medians over rounds.");
-  cmd.Text("scenes", &scenes_arg, "comma-separated scenes, the first the reference");
-  cmd.Integer("block", &block_arg, "steps per block", ssc::NumberRange::Closed(100, 1e7));
-  cmd.Integer("rounds", &rounds_arg, "rounds of blocks (medians over them)",
-              ssc::NumberRange::Closed(1, 1000));
-  // Bounded work: each scene steps (rounds + 1) x 5 blocks (the trial twice, three variants);
-  // beyond 2e6 steps per variant a run takes hours on one core.
-  cmd.Check([&]() -> std::string {
-    const double per_variant = static_cast<double>(block_arg) * static_cast<double>(rounds_arg + 1);
-    if (per_variant > 2e6) {
-      return "--block " + std::to_string(block_arg) + " x (--rounds " + std::to_string(rounds_arg) +
-             " + 1 warm-up) = " + ssc::FormatNumber(per_variant) +
-             " steps per variant, more than 2e6 (hours of stepping): use fewer";
-    }
-    return "";
-  });
-  if (int rc = 0; !cmd.Parse(argc - 1, argv + 1, &rc)) return rc;
-  const int block = static_cast<int>(block_arg), rounds = static_cast<int>(rounds_arg);
-  std::vector<std::unique_ptr<Scene>> scenes;
-  for (const std::string& name : Split(scenes_arg)) {
-    auto s = std::make_unique<Scene>();
-    s->name = name;
-    s->path = ssc::ResolveScenePath(name);
-    std::string error;
-    s->model = ssc::LoadModel(s->path, &error);
-    if (s->model) s->data = ssc::MakeData(s->model.get(), &error);
-    if (s->data) {
-      s->trial = ssc::ContourTrial::Create(s->model.get(), s->data.get(), ssc::TrialConfig(), false,
-                                           &error);
-    }
-    if (s->trial) s->bare = CompileVariant(s->path, true, &error);
-    if (s->bare) s->floor = CompileVariant(s->path, false, &error);
-    if (!s->floor) {
-      std::fprintf(stderr, "ssc bench: %s: %s\n", s->path.c_str(), error.c_str());
-      return 1;
-    }
-    if (!s->ToFollowing()) {
-      std::fprintf(stderr, "ssc bench: %s: the trial never reached the follow phase\n",
-                   name.c_str());
-      return 1;
-    }
-    s->first_follow_s = s->data->time;
-    const mjModel* models[3] = {s->model.get(), s->bare, s->floor};
-    const char* labels[3] = {"held", "-sensor", "floor"};
-    for (int v = 0; v < 3; ++v) {
-      Variant var;
-      var.label = labels[v];
-      var.m = models[v];
-      var.d = mj_makeData(var.m);
-      CopyStateByName(s->model.get(), s->data.get(), var.m, var.d);
-      s->held.push_back(var);
-    }
-    scenes.push_back(std::move(s));
+// Loads a scene, its trial (brought to the follow phase) and the held variants from the same
+// state; null with the message printed.
+std::unique_ptr<Scene> OpenScene(const std::string& name) {
+  auto s = std::make_unique<Scene>();
+  s->name = name;
+  s->path = ssc::ResolveScenePath(name);
+  std::string error;
+  s->model = ssc::LoadModel(s->path, &error);
+  if (s->model) s->data = ssc::MakeData(s->model.get(), &error);
+  if (s->data) {
+    s->trial =
+        ssc::ContourTrial::Create(s->model.get(), s->data.get(), ssc::TrialConfig(), false, &error);
   }
+  if (s->trial) s->bare = CompileVariant(s->path, true, &error);
+  if (s->bare) s->floor = CompileVariant(s->path, false, &error);
+  if (!s->floor) {
+    std::fprintf(stderr, "ssc bench: %s: %s\n", s->path.c_str(), error.c_str());
+    return nullptr;
+  }
+  if (!s->ToFollowing()) {
+    std::fprintf(stderr, "ssc bench: %s: the trial never reached the follow phase\n", name.c_str());
+    return nullptr;
+  }
+  s->first_follow_s = s->data->time;
+  const mjModel* models[3] = {s->model.get(), s->bare, s->floor};
+  const char* labels[3] = {"held", "-sensor", "floor"};
+  for (int v = 0; v < 3; ++v) {
+    Variant var;
+    var.label = labels[v];
+    var.m = models[v];
+    var.d = mj_makeData(var.m);
+    CopyStateByName(s->model.get(), s->data.get(), var.m, var.d);
+    s->held.push_back(var);
+  }
+  return s;
+}
 
-  // Warm-up, then rounds of alternating blocks; progress on stderr (a terminal only).
-  const bool progress = isatty(STDERR_FILENO);
-  for (int r = -1; r < rounds; ++r) {
-    if (progress) {
-      std::fprintf(stderr, "\rbench: %s %d/%d ", r < 0 ? "warm-up" : "round", r < 0 ? 0 : r + 1,
-                   rounds);
-      std::fflush(stderr);
-    }
-    for (auto& s : scenes) {
-      // Trial variant: first plain (the headline cost), then with MuJoCo's timers on and the
-      // control callback timed (the breakdown; timing adds a little to each step).
-      mjData* d = s->data.get();
-      if (s->trial->phase() != ssc::TrialPhase::kFollow || d->time > s->first_follow_s + 15) {
-        s->ToFollowing();
-      }
-      const auto t0 = Clock::now();
-      int steps = 0;
-      while (steps < block && s->trial->Step()) ++steps;
-      const double us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
-      if (r >= 0 && steps > 0) s->trial_us.push_back(us / steps);
-      std::memset(d->timer, 0, sizeof(d->timer));
-      mjcb_time = NowMicros;
-      g_inner_control = mjcb_control;
-      mjcb_control = TimedControl;
-      g_control_us = 0;
-      steps = 0;
-      while (steps < block && s->trial->Step()) {
-        ++steps;
-        if (r >= 0) {
-          s->solver_iterations += d->solver_niter[0];
-          s->contacts += d->ncon;
-        }
-      }
-      mjcb_control = g_inner_control;
-      mjcb_time = nullptr;
-      if (r >= 0 && steps > 0) {
-        for (int t = 0; t < mjNTIMER; ++t) s->timer_us[t] += d->timer[t].duration;
-        s->control_us += g_control_us;
-        s->trial_steps += steps;
-      }
-      for (Variant& v : s->held) {
-        const auto t1 = Clock::now();
-        for (int i = 0; i < block; ++i) mj_step(v.m, v.d);
-        const double held_us = std::chrono::duration<double, std::micro>(Clock::now() - t1).count();
-        if (r >= 0) v.block_us.push_back(held_us / block);
-      }
+// One block of each of a scene's variants; `record` false for the warm-up.
+void RunBlocks(Scene* s, int block, bool record) {
+  // Trial variant: first plain (the headline cost), then with MuJoCo's timers on and the
+  // control callback timed (the breakdown; timing adds a little to each step).
+  mjData* d = s->data.get();
+  if (s->trial->phase() != ssc::TrialPhase::kFollow || d->time > s->first_follow_s + 15) {
+    s->ToFollowing();
+  }
+  const auto t0 = Clock::now();
+  int steps = 0;
+  while (steps < block && s->trial->Step()) ++steps;
+  const double us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
+  if (record && steps > 0) s->trial_us.push_back(us / steps);
+  std::memset(d->timer, 0, sizeof(d->timer));
+  mjcb_time = NowMicros;
+  g_inner_control = mjcb_control;
+  mjcb_control = TimedControl;
+  g_control_us = 0;
+  steps = 0;
+  while (steps < block && s->trial->Step()) {
+    ++steps;
+    if (record) {
+      s->solver_iterations += d->solver_niter[0];
+      s->contacts += d->ncon;
     }
   }
-  if (progress) std::fprintf(stderr, "\n");
+  mjcb_control = g_inner_control;
+  mjcb_time = nullptr;
+  if (record && steps > 0) {
+    for (int t = 0; t < mjNTIMER; ++t) s->timer_us[t] += d->timer[t].duration;
+    s->control_us += g_control_us;
+    s->trial_steps += steps;
+  }
+  for (Variant& v : s->held) {
+    const auto t1 = Clock::now();
+    for (int i = 0; i < block; ++i) mj_step(v.m, v.d);
+    const double held_us = std::chrono::duration<double, std::micro>(Clock::now() - t1).count();
+    if (record) v.block_us.push_back(held_us / block);
+  }
+}
 
+// The cost table: per scene the trial step, the held step and its variants, paired ratios.
+void PrintCostTable(const std::vector<std::unique_ptr<Scene>>& scenes, int rounds, int block) {
   const Scene& ref = *scenes.front();
   std::printf(
       "MuJoCo %s; %d rounds of %d-step blocks, scenes and variants alternating; "
@@ -302,6 +269,10 @@ int main(int argc, char** argv) {
       "sensor,\n  and also without the lip joints, / held. vs ref: / %s in the same "
       "round.\n",
       ref.name.c_str());
+}
+
+// Where a trial step goes, from MuJoCo's timers summed over the recorded rounds.
+void PrintStepBreakdown(const std::vector<std::unique_ptr<Scene>>& scenes) {
   std::printf("\nwhere a trial step goes (MuJoCo timers, share of the step):\n");
   std::printf("%-26s %7s %7s %7s %7s %7s %7s %7s %7s %6s %6s\n", "scene", "step us", "collide",
               "constr", "integr", "kin+M", "sensor*", "control", "other", "ncon", "iters");
@@ -331,5 +302,52 @@ int main(int argc, char** argv) {
       "integrator; kin+M: kinematics, inertia;\n  sensor*: the rest of mj_forward "
       "(sensors; the pressure plugin dominates); other: velocity, actuation, checks;\n  ncon: "
       "contacts per step; iters: constraint solver iterations per step\n");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string scenes_arg = "disk_benchmark,disk_benchmark_gantry";
+  long block_arg = 500, rounds_arg = 11;
+  ssc::cli::Command cmd(
+      "bench",
+      "Per scene (names under scenes/ or paths; the first is the reference): the cost of a step\n"
+      "and where it goes, in alternating blocks within one run; medians over rounds.");
+  cmd.Text("scenes", &scenes_arg, "comma-separated scenes, the first the reference");
+  cmd.Integer("block", &block_arg, "steps per block", ssc::NumberRange::Closed(100, 1e7));
+  cmd.Integer("rounds", &rounds_arg, "rounds of blocks (medians over them)",
+              ssc::NumberRange::Closed(1, 1000));
+  // Bounded work: each scene steps (rounds + 1) x 5 blocks (the trial twice, three variants);
+  // beyond 2e6 steps per variant a run takes hours on one core.
+  cmd.Check([&]() -> std::string {
+    const double per_variant = static_cast<double>(block_arg) * static_cast<double>(rounds_arg + 1);
+    if (per_variant > 2e6) {
+      return "--block " + std::to_string(block_arg) + " x (--rounds " + std::to_string(rounds_arg) +
+             " + 1 warm-up) = " + ssc::FormatNumber(per_variant) +
+             " steps per variant, more than 2e6 (hours of stepping): use fewer";
+    }
+    return "";
+  });
+  if (int rc = 0; !cmd.Parse(argc - 1, argv + 1, &rc)) return rc;
+  const int block = static_cast<int>(block_arg), rounds = static_cast<int>(rounds_arg);
+  std::vector<std::unique_ptr<Scene>> scenes;
+  for (const std::string& name : Split(scenes_arg)) {
+    std::unique_ptr<Scene> s = OpenScene(name);
+    if (!s) return 1;
+    scenes.push_back(std::move(s));
+  }
+  // Warm-up, then rounds of alternating blocks; progress on stderr (a terminal only).
+  const bool progress = isatty(STDERR_FILENO);
+  for (int r = -1; r < rounds; ++r) {
+    if (progress) {
+      std::fprintf(stderr, "\rbench: %s %d/%d ", r < 0 ? "warm-up" : "round", r < 0 ? 0 : r + 1,
+                   rounds);
+      std::fflush(stderr);
+    }
+    for (auto& s : scenes) RunBlocks(s.get(), block, r >= 0);
+  }
+  if (progress) std::fprintf(stderr, "\n");
+  PrintCostTable(scenes, rounds, block);
+  PrintStepBreakdown(scenes);
   return 0;
 }
