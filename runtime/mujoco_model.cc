@@ -386,15 +386,21 @@ ModelPtr LoadModelFromTexts(const ModelTexts& texts, const std::string& label, s
   return CheckedModel(m, label, error);
 }
 
+std::string CheckScenePath(const std::string& path) {
+  const std::string why = CheckInputFile(path);
+  if (why.empty()) return "";
+  // A bare name ResolveScenePath could not find: say where scenes were looked for.
+  if (path.find('/') == std::string::npos) {
+    return path + ": " + why + " here or in " + ResourceDir() +
+           "/scenes (SSC_RESOURCE_DIR names the folder that holds models/ and scenes/)";
+  }
+  return path + ": " + why;
+}
+
 ModelPtr LoadModel(const std::string& path, std::string* error) {
   InstallMuJoCoMessageHandlers();
-  if (const std::string why = CheckInputFile(path); !why.empty()) {
-    *error = path + ": " + why;
-    // A bare name ResolveScenePath could not find: say where scenes were looked for.
-    if (path.find('/') == std::string::npos) {
-      *error += " here or in " + ResourceDir() +
-                "/scenes (SSC_RESOURCE_DIR names the folder that holds models/ and scenes/)";
-    }
+  if (std::string e = CheckScenePath(path); !e.empty()) {
+    *error = e;
     return nullptr;
   }
   if (std::string e = CheckSceneFiles(path, std::filesystem::path(path).parent_path(), 0);

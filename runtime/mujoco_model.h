@@ -39,6 +39,11 @@ bool RemoveListedJoints(mjSpec* spec, std::string* error);
 // reported the same way instead of being printed.
 ModelPtr LoadModel(const std::string& path, std::string* error);
 
+// "" when `path` (from ResolveScenePath) is a readable regular file, else the message LoadModel
+// gives: the path, what it is instead and, for a bare name found nowhere, where scenes were
+// looked for. For readers of a scene other than LoadModel (tool variants).
+std::string CheckScenePath(const std::string& path);
+
 // The stability study (docs/stability.md): results unchanged up to 8 ms with every integrator,
 // unstable at 16 ms.
 inline constexpr double kLargestTestedTimestepS = 0.008;

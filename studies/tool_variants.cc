@@ -108,6 +108,10 @@ std::unique_ptr<ToolModelVariants> ToolModelVariants::Read(const std::string& sc
                                                            std::string* error) {
   std::unique_ptr<ToolModelVariants> v(new ToolModelVariants());
   v->label_ = scene_path;
+  if (std::string e = CheckScenePath(scene_path); !e.empty()) {
+    *error = e;
+    return nullptr;
+  }
   if (!ReadText(scene_path, &v->texts_.main_xml)) {
     *error = scene_path + ": cannot read";
     return nullptr;

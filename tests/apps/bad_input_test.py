@@ -67,6 +67,11 @@ with open(MAP_IN_M, "w") as f:
     f.write(MAP.replace("\n5.0,", "\n0.005,"))
 
 
+TINY_SCRIPT = os.path.join(TMP, "tiny_script.py")  # what ssc sil runs when its options pass
+with open(TINY_SCRIPT, "w") as f:
+    f.write("print('ran')\n")
+
+
 def lab_recording():
     """A twin trial written as the lab records it (ssc trial --robot-log), in TMP/rec."""
     rec = os.path.join(TMP, "rec")
@@ -176,6 +181,13 @@ CASES = [
     (["stability", "--steps-ms", "1,2,"], 2, "--steps-ms"),
     (["sil"], 2, "usage: ssc sil"),
     (["sil", "/nonexistent/script.py"], 2, "no such script"),
+    (["sil", "--seed", "-1", TINY_SCRIPT], 2, "--seed: '-1' is outside [0, 9007199254740991]"),
+    (["sil", "--max-sim", "nan", TINY_SCRIPT], 2, "--max-sim: 'nan'"),
+    (["sil", "--max-sim", "0", TINY_SCRIPT], 2, "(0, 86400]"),
+    (["sil", "--scene", "no_such_scene", TINY_SCRIPT], 1,
+     "--scene: no_such_scene: no such file here or in"),
+    (["sil", "--out", A_FILE, TINY_SCRIPT], 2, "--out: '%s' exists and is not a directory" % A_FILE),
+    (["sil", "--out", A_FILE + "/sub", TINY_SCRIPT], 2, "Not a directory"),
     (["bench", "--block", "0"], 2, "--block"),
     (["bench", "--rounds", "0"], 2, "--rounds"),
     (["compare"], 2, "LOG"),

@@ -39,7 +39,8 @@ def parse_args(argv):
         description="Run a lab script (ROS 1 + ur_rtde) against the twin, unchanged.")
     p.add_argument("--scene", default="disk_benchmark_gantry",
                    help="scene name or MJCF path (default: disk_benchmark_gantry)")
-    p.add_argument("--seed", type=int, default=1, help="sensor noise seed (default 1)")
+    p.add_argument("--seed", type=seed, default=1,
+                   help="sensor noise seed (default 1), a whole number in [0, %d]" % MAX_SEED)
     p.add_argument("--realtime", action="store_true",
                    help="pace the simulation to the wall clock (default: virtual time)")
     p.add_argument("--viewer", action="store_true", help="show the scene in MuJoCo's viewer")
@@ -51,7 +52,7 @@ def parse_args(argv):
                         "redraw the lab's loop paid (default %(default)s, measured: docs/sil.md), "
                         "or 'measured': the script's own CPU time building and drawing its plot "
                         "on this machine (with --plots: the real matplotlib draws)")
-    p.add_argument("--max-sim", type=float, default=600.0, metavar="S",
+    p.add_argument("--max-sim", type=max_sim, default=600.0, metavar="S",
                    help="shut the node down after S simulated seconds (default 600)")
     p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="run as if the script's knob line read NAME = VALUE (the first plain "
@@ -66,6 +67,31 @@ def parse_args(argv):
     p.add_argument("script", help="the lab script (.py)")
     p.add_argument("args", nargs=argparse.REMAINDER, help="the script's own arguments")
     return p.parse_args(argv)
+
+
+# ssc's seeds: whole numbers doubles hold exactly (common/strict_number.h), as every ssc --seed.
+MAX_SEED = 2**53 - 1
+MAX_SIM_S = 86400.0
+
+
+def seed(text):
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError("%r is not a whole number in [0, %d]" % (text, MAX_SEED))
+    if not 0 <= value <= MAX_SEED:
+        raise argparse.ArgumentTypeError("%r is outside [0, %d]" % (text, MAX_SEED))
+    return value
+
+
+def max_sim(text):
+    try:
+        value = float(text)
+    except ValueError:
+        value = float("nan")
+    if not 0.0 < value <= MAX_SIM_S:
+        raise argparse.ArgumentTypeError("%r: simulated seconds in (0, %g]" % (text, MAX_SIM_S))
+    return value
 
 
 def pause_cost(text):
@@ -192,7 +218,9 @@ def run(opts):
         return EXIT_BAD_INPUT
     out = os.path.abspath(opts.out)
     tmp_dir = os.path.join(out, "tmp")
-    os.makedirs(tmp_dir, exist_ok=True)
+    if os.path.exists(out) and not os.path.isdir(out):
+        print("ssc sil: --out: %r exists and is not a directory" % opts.out, file=sys.stderr)
+        return EXIT_BAD_INPUT
     with open(script) as f:
         source = f.read()
     try:
@@ -202,9 +230,17 @@ def run(opts):
         return EXIT_BAD_INPUT
     code = compile(tree, script, "exec")
 
-    w = world_mod.install(world_mod.World(scene=opts.scene, seed=opts.seed, realtime=opts.realtime,
-                                          tmp_dir=tmp_dir, pause_cost_s=opts.pause_cost,
-                                          verbose=opts.verbose))
+    try:  # the scene, checked before anything is written (the C++ loader's message)
+        w = world_mod.install(world_mod.World(scene=opts.scene, seed=opts.seed,
+                                              realtime=opts.realtime, tmp_dir=tmp_dir,
+                                              pause_cost_s=opts.pause_cost, verbose=opts.verbose))
+    except (RuntimeError, ValueError) as e:
+        print("ssc sil: --scene: %s" % e, file=sys.stderr)
+        return EXIT_ERROR
+    except OSError as e:  # the World makes OUT/tmp
+        print("ssc sil: --out: cannot create %s: %s" % (e.filename or tmp_dir, e.strerror),
+              file=sys.stderr)
+        return EXIT_BAD_INPUT
     if opts.viewer:
         from .viewer import Viewer
         try:
