@@ -1,10 +1,15 @@
 // Controllers in the trial: a custom controller follows the disk, a bad command ends the trial
-// with its own outcome, and a hop lifts the cup without ending the trial.
+// with its own outcome, a hop lifts the cup without ending the trial, and a controller may read
+// the sensors in air before following.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "controller/pure/controller_registry.h"
 #include "runtime/mujoco_model.h"
@@ -148,6 +153,77 @@ TEST(ControllerTrialTest, AHopLiftsTheCupWithoutEndingTheTrialButNotForEver) {
   const TrialResult stays_up = RunWith(Hop(4, 1000, true), config);
   EXPECT_EQ(stays_up.outcome, Outcome::kFailureOffEdge);
   EXPECT_NE(stays_up.detail.find("lifted"), std::string::npos) << stays_up.detail;
+}
+
+// Holds still while following and keeps what it read before following.
+struct Observed {
+  std::vector<ControllerInput> before;
+  double hold_z_m = std::nan("");
+};
+ControllerChoice Observer(std::shared_ptr<Observed> seen) {
+  ControllerChoice choice;
+  choice.name = "observer";
+  choice.custom =
+      std::make_shared<const std::function<std::unique_ptr<Controller>(const ControllerContext&)>>(
+          [seen](const ControllerContext&) -> std::unique_ptr<Controller> {
+            struct Watch : Controller {
+              explicit Watch(std::shared_ptr<Observed> s) : seen(std::move(s)) {}
+              bool ObservesBeforeFollowing() const override { return true; }
+              void ObserveBeforeFollowing(const ControllerInput& in) override {
+                seen->before.push_back(in);
+              }
+              ControllerCommand Step(const ControllerInput& in) override {
+                seen->hold_z_m = in.hold_z_m;
+                return {};
+              }
+              std::shared_ptr<Observed> seen;
+            };
+            return std::make_unique<Watch>(seen);
+          });
+  return choice;
+}
+
+// The mean reading of each chamber over the readings at least 4 mm above the hold height.
+std::array<double, 4> MeanInAir(const Observed& seen) {
+  std::array<double, 4> sum{};
+  int n = 0;
+  for (const ControllerInput& in : seen.before) {
+    if (in.tool_m[2] < seen.hold_z_m + 0.004) continue;
+    for (std::size_t k = 0; k < 4; ++k) sum[k] += in.p_pa[k];
+    ++n;
+  }
+  EXPECT_GE(n, 3);
+  for (double& v : sum) v /= std::max(n, 1);
+  return sum;
+}
+
+TEST(ControllerTrialTest, AControllerCanReadTheSensorsInAirBeforeFollowing) {
+  TrialConfig config;
+  config.timeout_s = 0.2;
+  config.effects = RobotEffectsParams();  // off: the open cup reads about 0 Pa in air
+  auto ideal = std::make_shared<Observed>();
+  RunWith(Observer(ideal), config);
+  ASSERT_TRUE(std::isfinite(ideal->hold_z_m));
+  // One reading per control period from the start of the approach to the start of following.
+  ASSERT_GE(ideal->before.size(), 10u);
+  EXPECT_EQ(ideal->before.front().t_s, 0.0);
+  EXPECT_NEAR(ideal->before[1].t_s - ideal->before[0].t_s, config.control_period_s, 0.002);
+  EXPECT_EQ(ideal->before.front().hold_z_m, 0.0);  // not known before the approach settles
+  EXPECT_EQ(ideal->before.back().hold_z_m, ideal->hold_z_m);
+  // Sealed on the object on the way to the start point: every chamber holds the vacuum.
+  EXPECT_TRUE(
+      std::any_of(ideal->before.begin(), ideal->before.end(), [](const ControllerInput& in) {
+        return *std::min_element(in.p_pa.begin(), in.p_pa.end()) > 1000.0;
+      }));
+  for (double v : MeanInAir(*ideal)) EXPECT_LT(std::fabs(v), 3.0);
+  // The sensors' tare offsets are in what the host reads, so the air readings show them.
+  config.effects.chambers.offset_spread_pa = 30;
+  auto offset = std::make_shared<Observed>();
+  RunWith(Observer(offset), config);
+  const std::array<double, 4> air = MeanInAir(*offset);
+  double spread = 0;
+  for (double v : air) spread = std::max(spread, std::fabs(v - air[0]));
+  EXPECT_GT(spread, 10.0);
 }
 
 TEST(ControllerTrialTest, AnUnknownControllerIsRefusedBeforeTheTrial) {
