@@ -150,4 +150,13 @@ std::array<double, 2> AgreementInterval(const std::vector<CellScore>& cells, int
   return {at(0.025), at(0.975)};
 }
 
+std::string AgreementIntervalNote(const MapScore& score) {
+  const double a = score.expected_agreement;
+  const std::array<double, 2>& i = score.agreement_interval;
+  if (!(a > i[1]) && !(a < i[0])) return "";
+  return std::string("the estimate lies ") + (a > i[1] ? "above" : "below") +
+         " its interval: it takes a cell at N/N or 0/N successes as certain, the interval's "
+         "posterior does not; more seeds per cell close the gap";
+}
+
 }  // namespace ssc

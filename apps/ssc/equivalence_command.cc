@@ -45,6 +45,9 @@ void PrintArm(const char* role, const EquivalenceArm& arm, const MapScore& score
       role, arm.scene_name.c_str(), plugin.c_str(), static_cast<unsigned long long>(arm.seed),
       score.expected_agreement, score.agreement_interval[0], score.agreement_interval[1],
       summary.ran, summary.wall_s, busy);
+  if (const std::string note = AgreementIntervalNote(score); !note.empty()) {
+    std::printf("%-10s (%s)\n", "", note.c_str());
+  }
 }
 
 }  // namespace

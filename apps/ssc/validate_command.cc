@@ -99,6 +99,9 @@ int RunValidateCommand(int argc, char** argv) {
   std::printf("  class match (3 trials/cell)   %.1f %%\n", 100 * score.class_match);
   std::printf("  expected agreement            %.3f (95 %% interval from the seeds %.3f-%.3f)\n",
               score.expected_agreement, score.agreement_interval[0], score.agreement_interval[1]);
+  if (const std::string note = AgreementIntervalNote(score); !note.empty()) {
+    std::printf("                                (%s)\n", note.c_str());
+  }
   std::printf("  opposite cells                %d\n", score.opposite);
   std::printf(
       "what any twin can expect here (each published class is one draw of 3 robot trials;\n"

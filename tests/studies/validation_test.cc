@@ -231,6 +231,27 @@ TEST(MapScoresTest, AgreementIntervalNarrowsWithSeedsAsOneOverRootN) {
   EXPECT_NE(AgreementInterval(cells_at(10), 4000, 2), small);
 }
 
+// At 3 seeds a cell at 3/3 is a certainty to the plug-in (agreement 1 for a published 3/3) but
+// not to the posterior, whose interval then lies below the estimate: the note says so; at a
+// rate the posterior brackets, no note.
+TEST(MapScoresTest, AnEstimateOutsideItsIntervalIsExplained) {
+  MapScore score;
+  score.cells.resize(1);
+  CellScore& c = score.cells[0];
+  c.cell.published = MapClass::kThreeOfThree;
+  c.trials = 3;
+  c.successes = 3;
+  score.expected_agreement = ClassProbability(MapClass::kThreeOfThree, 1.0);
+  score.agreement_interval = AgreementInterval(score.cells);
+  ASSERT_LT(score.agreement_interval[1], score.expected_agreement);
+  EXPECT_NE(AgreementIntervalNote(score).find("above its interval"), std::string::npos);
+  c.trials = 10;
+  c.successes = 7;
+  score.expected_agreement = ClassProbability(MapClass::kThreeOfThree, 0.7);
+  score.agreement_interval = AgreementInterval(score.cells);
+  EXPECT_EQ(AgreementIntervalNote(score), "");
+}
+
 TEST(MapCeilingTest, SurfaceOnThePublishedMapReachesAnIndependentSearch) {
   std::vector<MapCell> cells;
   std::string error;
