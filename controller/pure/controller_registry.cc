@@ -122,6 +122,12 @@ bool ParseControllerValues(const ControllerType& type, const std::string& params
     }
     pos = end + 1;
   }
+  if (type.check) {
+    if (std::string why = type.check(*values); !why.empty()) {
+      *error = "controller " + name + ": " + why;
+      return false;
+    }
+  }
   return true;
 }
 

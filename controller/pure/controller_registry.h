@@ -40,6 +40,9 @@ struct ControllerType {
   std::string name, what;
   std::vector<ControllerParamKey> keys;
   ControllerFactory make;
+  // "" when the values (one per key) agree with each other, else why not; null: no rule
+  // between keys. Each value's own range is checked by the keys.
+  std::function<std::string(const ControllerValues&)> check;
 };
 
 // A parameter of controller parameters struct P: its key table row, with the default read from
@@ -53,10 +56,12 @@ struct ParamField {
   double P::*field;
 };
 
-// The ControllerType of a controller class C constructed as C(context, P).
+// The ControllerType of a controller class C constructed as C(context, P); `check`, when given,
+// says why a P whose values are each in range still cannot run ("" when it can).
 template <typename C, typename P>
 ControllerType MakeControllerType(const char* name, const char* what,
-                                  std::initializer_list<ParamField<P>> fields) {
+                                  std::initializer_list<ParamField<P>> fields,
+                                  std::string (*check)(const P&) = nullptr) {
   ControllerType t;
   t.name = name;
   t.what = what;
@@ -66,11 +71,18 @@ ControllerType MakeControllerType(const char* name, const char* what,
     t.keys.push_back({f.key, f.unit, defaults.*(f.field), f.min, f.max, f.what});
     members.push_back(f.field);
   }
-  t.make = [members](const ControllerContext& context, const ControllerValues& values) {
+  const auto params_of = [members](const ControllerValues& values) {
     P p{};
     for (size_t i = 0; i < members.size() && i < values.size(); ++i) p.*(members[i]) = values[i];
-    return std::unique_ptr<Controller>(new C(context, p));
+    return p;
   };
+  t.make = [params_of](const ControllerContext& context, const ControllerValues& values) {
+    return std::unique_ptr<Controller>(new C(context, params_of(values)));
+  };
+  if (check != nullptr)
+    t.check = [params_of, check](const ControllerValues& values) {
+      return check(params_of(values));
+    };
   return t;
 }
 

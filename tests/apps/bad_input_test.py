@@ -257,6 +257,8 @@ CASES = [
     (["trial", "--controller", "fastest", "--out", "new_out"], 2, "unknown controller 'fastest'"),
     (["sweep", "--controller", "fast", "--controller-param", "step_max_mm=300", "--out",
       "new_out"], 2, "step_max_mm"),
+    (["sweep", "--controller", "fast", "--controller-param", "step_min_mm=9", "--out",
+      "new_out"], 2, "exceeds step_max_mm"),
     (["objects", "--controller", "fast", "--controller-param", "stepmax=3", "--out", "new_out"],
      2, "unknown key 'stepmax'"),
     (["validate", "--controller-param", "beta=2", "--out", "new_out"], 2, "takes no parameters"),

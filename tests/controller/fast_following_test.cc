@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+
+#include "controller/pure/controller_registry.h"
 
 namespace ssc {
 namespace {
@@ -216,6 +219,22 @@ TEST(FastFollowingTest, InTheDeadBandItHolds) {
   const ControllerCommand cmd = c.Step(At(0, 0, 0, {3, 3, 3, 3}));
   EXPECT_EQ(cmd.step_m[0], 0.0);
   EXPECT_EQ(cmd.step_m[1], 0.0);
+}
+
+TEST(FastFollowingTest, AShortestStepAboveTheLongestIsRefusedNamingBoth) {
+  ControllerChoice choice;
+  std::string error;
+  // The default longest step is 7.5 mm: a shortest step of 9 mm alone cannot hold.
+  EXPECT_FALSE(ParseControllerChoice("fast", "step_min_mm=9", &choice, &error));
+  EXPECT_NE(error.find("step_min_mm = 9 exceeds step_max_mm = 7.5"), std::string::npos) << error;
+  error.clear();
+  EXPECT_FALSE(ParseControllerChoice("fast", "step_max_mm=4", &choice, &error));
+  EXPECT_NE(error.find("step_max_mm = 4"), std::string::npos) << error;
+  ASSERT_TRUE(ParseControllerChoice("fast", "step_min_mm=9,step_max_mm=10", &choice, &error))
+      << error;
+  ASSERT_TRUE(ParseControllerChoice("fast", "step_min_mm=10,step_max_mm=10", &choice, &error))
+      << error;
+  EXPECT_TRUE(choice.Validate().empty());
 }
 
 }  // namespace
