@@ -81,7 +81,7 @@ std::array<double, 2> AgreementInterval(const std::vector<CellScore>& cells, int
 
 // "" when the plug-in expected agreement lies within its interval; else a note saying why it
 // does not (the plug-in takes a cell at N/N or 0/N as a certainty, the seeds' posterior does
-// not; at 3 seeds per cell on the published map it lands above the interval), so a printed
+// not; at 3 seeds per cell on the published map it lands at or above the top), so a printed
 // estimate outside its own interval is explained where it is printed.
 std::string AgreementIntervalNote(const MapScore& score);
 
