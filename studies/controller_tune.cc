@@ -128,6 +128,49 @@ bool ParseTuneSearch(const ControllerType& type, const std::string& text,
   return true;
 }
 
+std::string CheckTuneBox(const std::vector<TuneKey>& keys, const ControllerChoice& base) {
+  const ControllerType* type = base.custom ? nullptr : FindControllerType(base.name);
+  if (type == nullptr || type->orders.empty()) return "";
+  const ControllerValues values = FullValues(base);
+  std::vector<double> lo = values, hi = values;
+  std::vector<bool> searched(values.size(), false);
+  for (const TuneKey& k : keys) {
+    if (k.controller_index < 0) continue;
+    const auto i = static_cast<std::size_t>(k.controller_index);
+    lo[i] = k.lo;
+    hi[i] = k.hi;
+    searched[i] = true;
+  }
+  const std::vector<double> box_lo = lo, box_hi = hi;
+  // lower <= upper lifts upper's least value to lower's and drops lower's greatest to upper's; a
+  // chain of rules is settled after as many passes as there are rules.
+  for (std::size_t pass = 0; pass <= type->orders.size(); ++pass) {
+    for (const ControllerKeyOrder& o : type->orders) {
+      lo[o.upper] = std::max(lo[o.upper], lo[o.lower]);
+      hi[o.lower] = std::min(hi[o.lower], hi[o.upper]);
+    }
+  }
+  bool empty = false;
+  for (std::size_t i = 0; i < lo.size(); ++i) empty = empty || lo[i] > hi[i];
+  if (!empty) return "";
+  auto range = [&](std::size_t i) {
+    const std::string& key = type->keys[i].key;
+    return searched[i] ? key + " in " + Range(box_lo[i], box_hi[i])
+                       : key + " = " + Num(values[i]) + " (not searched: the base value)";
+  };
+  std::string rules;
+  auto add = [&](const ControllerKeyOrder& o) {
+    rules += (rules.empty() ? "" : "; ") + KeyOrderText(*type, o) + " with " + range(o.lower) +
+             " and " + range(o.upper);
+  };
+  for (const ControllerKeyOrder& o : type->orders)
+    if (box_lo[o.lower] > box_hi[o.upper]) add(o);
+  if (rules.empty()) {  // no single rule is broken everywhere: the chain of them is
+    for (const ControllerKeyOrder& o : type->orders) add(o);
+  }
+  return "no point of the search box keeps controller " + type->name + "'s rule: " + rules;
+}
+
 std::vector<double> TuneValues(const std::vector<TuneKey>& keys, const TrialConfig& config) {
   const ControllerValues all = FullValues(config.controller);
   std::vector<double> v;
@@ -190,17 +233,30 @@ std::string TuneCsvHeader(const std::vector<TuneKey>& keys) {
   for (const TuneKey& k : keys) h += "," + k.key;
   return h +
          ",trials,successes,success_rate,success_lo,success_hi,speed_mm_s,speed_ci_mm_s,score,"
-         "pareto";
+         "pareto,outcome";
 }
 
 std::string TuneCsvRow(const TuneEvaluation& e, std::size_t keys) {
   std::ostringstream os;
   os << e.label << ",\"" << e.controller << '"';
   for (std::size_t i = 0; i < keys; ++i) os << ',' << (i < e.values.size() ? Num(e.values[i]) : "");
-  os << ',' << e.trials << ',' << e.successes << ','
-     << Num(e.trials ? static_cast<double>(e.successes) / e.trials : 0) << ','
-     << Num(e.success_ci[0]) << ',' << Num(e.success_ci[1]) << ',' << Num(e.speed_mm_s) << ','
-     << Num(e.speed_ci_mm_s) << ',' << Num(e.score) << ',' << (e.pareto ? 1 : 0);
+  os << ',' << e.trials << ',' << e.successes << ',';
+  if (e.refused.empty()) {
+    os << Num(e.trials ? static_cast<double>(e.successes) / e.trials : 0) << ','
+       << Num(e.success_ci[0]) << ',' << Num(e.success_ci[1]) << ',' << Num(e.speed_mm_s) << ','
+       << Num(e.speed_ci_mm_s);
+  } else {
+    os << ",,,,";
+  }
+  os << ',' << Num(e.score) << ',' << (e.pareto ? 1 : 0) << ',';
+  if (e.refused.empty()) {
+    os << "ran";
+  } else {
+    std::string why = e.refused;
+    for (std::size_t at = why.find('"'); at != std::string::npos; at = why.find('"', at + 2))
+      why.insert(at, 1, '"');
+    os << "\"refused: " << why << '"';
+  }
   return os.str();
 }
 
@@ -265,8 +321,12 @@ bool Evaluate(const mjModel* m, const TuneSpec& spec, const TrialConfig& config,
 std::string EvaluationLine(const TuneEvaluation& e, const std::vector<TuneKey>& keys) {
   std::ostringstream os;
   os.precision(3);
-  os << e.label << ": " << e.successes << "/" << e.trials << " success, " << e.speed_mm_s
-     << " mm/s, score " << e.score;
+  if (!e.refused.empty()) {
+    os << e.label << ": refused, not run (" << e.refused << "), score " << e.score;
+  } else {
+    os << e.label << ": " << e.successes << "/" << e.trials << " success, " << e.speed_mm_s
+       << " mm/s, score " << e.score;
+  }
   for (std::size_t i = 0; i < e.values.size() && i < keys.size(); ++i)
     os << ' ' << keys[i].key << '=' << e.values[i];
   if (e.values.empty()) os << ' ' << e.controller;
@@ -281,6 +341,11 @@ bool RunTune(const mjModel* m, const TuneSpec& spec,
   const auto t0 = std::chrono::steady_clock::now();
   result->evaluations.clear();
   result->best = -1;
+  result->refused = 0;
+  if (const std::string why = CheckTuneBox(spec.keys, spec.sweep.base.controller); !why.empty()) {
+    *error = why;
+    return false;
+  }
   for (const auto& [name, config] : spec.references) {
     TuneEvaluation e;
     if (!Evaluate(m, spec, config, name, &e, error)) return false;
@@ -310,14 +375,22 @@ bool RunTune(const mjModel* m, const TuneSpec& spec,
     const std::vector<double> values = to_values(x);
     const TrialConfig config = WithTuneValues(spec.keys, values, spec.sweep.base);
     TuneEvaluation e;
-    if (!Evaluate(m, spec, config, "eval " + std::to_string(++count), &e, &eval_error)) {
+    const std::string label = "eval " + std::to_string(++count);
+    // A point breaking a rule between the controller's keys is neither run nor moved into the
+    // rule (the optimiser would be scoring a point it did not ask for): it is infeasible.
+    if (std::string why = config.controller.Validate(); !why.empty()) {
+      e.label = label;
+      e.refused = why;
+      e.score = TuneScore(0, spec.seeds, 0, spec.min_success);
+      ++result->refused;
+    } else if (!Evaluate(m, spec, config, label, &e, &eval_error)) {
       throw nlopt::forced_stop();
     }
     e.values = values;
     e.controller = ChoiceText(spec.keys, config);
     if (log) log(EvaluationLine(e, spec.keys));
     result->evaluations.push_back(e);
-    if (e.score > best_score) {
+    if (e.refused.empty() && e.score > best_score) {
       best_score = e.score;
       result->best = static_cast<int>(result->evaluations.size()) - 1;
     }
@@ -329,10 +402,14 @@ bool RunTune(const mjModel* m, const TuneSpec& spec,
     return false;
   }
   std::vector<std::array<double, 2>> points;
-  for (const TuneEvaluation& e : result->evaluations) {
+  std::vector<std::size_t> ran;
+  for (std::size_t i = 0; i < result->evaluations.size(); ++i) {
+    const TuneEvaluation& e = result->evaluations[i];
+    if (!e.refused.empty()) continue;
+    ran.push_back(i);
     points.push_back({e.speed_mm_s, e.trials ? static_cast<double>(e.successes) / e.trials : 0});
   }
-  for (std::size_t i : ParetoFront(points)) result->evaluations[i].pareto = true;
+  for (std::size_t i : ParetoFront(points)) result->evaluations[ran[i]].pareto = true;
   OutputFile csv((std::filesystem::path(spec.out_dir) / "tune.csv").string());
   csv.stream() << TuneCsvHeader(spec.keys) << '\n';
   for (const TuneEvaluation& e : result->evaluations) csv.stream() << TuneCsvRow(e, n) << '\n';

@@ -35,6 +35,13 @@ inline constexpr std::array<const char*, 3> kTuneLawKeys = {"pref_pa", "beta", "
 bool ParseTuneSearch(const ControllerType& type, const std::string& text,
                      std::vector<TuneKey>* keys, std::string* error);
 
+// "" when the box of `keys` (with the controller's other keys at `base`'s values) holds a point
+// that keeps every rule between the controller's keys (ControllerType::orders), else why not,
+// naming each rule broken, its keys and their ranges. Exact: the rules order pairs of keys, so
+// tightening each key's range along them until nothing moves leaves a range empty exactly when
+// no point keeps them all.
+std::string CheckTuneBox(const std::vector<TuneKey>& keys, const ControllerChoice& base);
+
 // Every search key's value as `config` holds it (the controller's values or the law's).
 std::vector<double> TuneValues(const std::vector<TuneKey>& keys, const TrialConfig& config);
 // `config` with the search keys set to `values` (one per key).
@@ -67,6 +74,10 @@ struct TuneEvaluation {
   double speed_ci_mm_s = 0;            // half-width, t 95 % (0 with fewer than 2 successes)
   double score = 0;
   bool pareto = false;
+  // Why the point was not run ("" when it ran): it breaks a rule between the controller's keys.
+  // Such a point has no trials, scores the worst a run point can (TuneScore with no success) for
+  // the optimiser, and is never the best nor on the Pareto front.
+  std::string refused;
 };
 
 struct TuneSpec {
@@ -83,18 +94,21 @@ struct TuneSpec {
 
 struct TuneResult {
   std::vector<TuneEvaluation> evaluations;  // the references first, then the search in order
-  int best = -1;                            // index of the best search evaluation by score
+  int best = -1;    // index of the best search evaluation by score (-1: none ran)
+  int refused = 0;  // search points not run (TuneEvaluation::refused)
   double wall_s = 0;
 };
 
 // Runs the references and the search; writes tune.csv (one row per evaluation). `log` gets one
-// line per evaluation. False + *error on I/O or an invalid point.
+// line per evaluation. False + *error, before anything runs, when CheckTuneBox refuses the box;
+// on I/O or an invalid point.
 bool RunTune(const mjModel* m, const TuneSpec& spec,
              const std::function<void(const std::string&)>& log, TuneResult* result,
              std::string* error);
 
 // tune.csv's header and the row of one evaluation (values of the keys searched, blank for a
-// reference).
+// reference; a refused point's rate, intervals and speed blank; the last column, outcome, is
+// "ran" or "refused: " and why).
 std::string TuneCsvHeader(const std::vector<TuneKey>& keys);
 std::string TuneCsvRow(const TuneEvaluation& e, std::size_t keys);
 

@@ -21,6 +21,9 @@ def main():
     table, out, target = sys.argv[1], sys.argv[2], float(sys.argv[3])
     with open(table, newline="") as f:
         rows = list(csv.DictReader(f))
+    # A refused point (it broke a rule between the controller's keys) was not run: no speed.
+    refused = [r for r in rows if r.get("outcome", "ran").startswith("refused")]
+    rows = [r for r in rows if r not in refused]
     search = [r for r in rows if r["label"].startswith("eval ")]
     refs = [r for r in rows if not r["label"].startswith("eval ")]
     num = lambda r, k: float(r[k])
@@ -49,7 +52,8 @@ def main():
     ax.set_ylabel("success, % (95 % Wilson interval)")
     ax.set_ylim(-5, 115)
     n = rows[0]["trials"] if rows else "?"
-    ax.set_title(f"ssc tune: speed and success, {n} seeds per point")
+    note = f"; {len(refused)} points refused, not run" if refused else ""
+    ax.set_title(f"ssc tune: speed and success, {n} seeds per point{note}")
     ax.grid(alpha=0.3)
     # Outside the axes: the points may fill any corner.
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8, borderaxespad=0)

@@ -75,6 +75,9 @@ int RunTuneCommand(int argc, char** argv) {
     }
     std::string error;
     if (!ParseTuneSearch(*type, search, &spec.keys, &error)) return "--search: " + error;
+    // AddControllerOptions' check, registered earlier, has set the base controller's values.
+    if (error = CheckTuneBox(spec.keys, spec.sweep.base.controller); !error.empty())
+      return "--search: " + error;
     spec.references.clear();
     if (references != "none") {
       std::stringstream names(references);
@@ -110,6 +113,12 @@ int RunTuneCommand(int argc, char** argv) {
   std::printf("tune: %zu evaluations x %d seeds in %.1f s wall; wrote %s\n",
               result.evaluations.size(), spec.seeds, result.wall_s,
               (out / "tune.csv").string().c_str());
+  if (result.refused > 0) {
+    std::printf(
+        "refused: %d of the search's points broke a rule between the controller's keys (not "
+        "run, scored as infeasible; outcome in tune.csv)\n",
+        result.refused);
+  }
   if (result.best >= 0) {
     const TuneEvaluation& b = result.evaluations[static_cast<std::size_t>(result.best)];
     std::printf("best score: %s, %d/%d success, %.1f mm/s: %s\n", b.label.c_str(), b.successes,

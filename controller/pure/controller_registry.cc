@@ -54,6 +54,26 @@ std::string ControllerChoice::Validate() const {
       return os.str();
     }
   }
+  if (std::string why = CheckKeyOrders(*type, values); !why.empty())
+    return "controller " + name + ": " + why;
+  return "";
+}
+
+std::string KeyOrderText(const ControllerType& type, const ControllerKeyOrder& order) {
+  return type.keys[order.lower].key + " <= " + type.keys[order.upper].key;
+}
+
+std::string CheckKeyOrders(const ControllerType& type, const ControllerValues& values) {
+  for (const ControllerKeyOrder& o : type.orders) {
+    if (o.lower >= values.size() || o.upper >= values.size()) continue;
+    if (values[o.lower] <= values[o.upper]) continue;
+    const ControllerParamKey& lower = type.keys[o.lower];
+    std::ostringstream os;
+    os << lower.key << " = " << values[o.lower] << " exceeds " << type.keys[o.upper].key << " = "
+       << values[o.upper] << " (" << (lower.unit.empty() ? "" : lower.unit + "; ")
+       << "set both: " << KeyOrderText(type, o) << ")";
+    return os.str();
+  }
   return "";
 }
 
@@ -122,11 +142,9 @@ bool ParseControllerValues(const ControllerType& type, const std::string& params
     }
     pos = end + 1;
   }
-  if (type.check) {
-    if (std::string why = type.check(*values); !why.empty()) {
-      *error = "controller " + name + ": " + why;
-      return false;
-    }
+  if (std::string why = CheckKeyOrders(type, *values); !why.empty()) {
+    *error = "controller " + name + ": " + why;
+    return false;
   }
   return true;
 }

@@ -36,14 +36,26 @@ using ControllerValues = std::vector<double>;  // one per key, in key order
 using ControllerFactory =
     std::function<std::unique_ptr<Controller>(const ControllerContext&, const ControllerValues&)>;
 
+// A rule between two keys of a controller: the value of keys[lower] may not exceed that of
+// keys[upper]. Rules are data, not code, so a search box can be checked against them exactly
+// (studies/controller_tune.h) as well as a single set of values.
+struct ControllerKeyOrder {
+  size_t lower = 0, upper = 0;  // indices in the keys
+};
+
 struct ControllerType {
   std::string name, what;
   std::vector<ControllerParamKey> keys;
   ControllerFactory make;
-  // "" when the values (one per key) agree with each other, else why not; null: no rule
-  // between keys. Each value's own range is checked by the keys.
-  std::function<std::string(const ControllerValues&)> check;
+  // The rules between keys (each value's own range is checked by the keys).
+  std::vector<ControllerKeyOrder> orders;
 };
+
+// The rule as text: "step_min_mm <= step_max_mm".
+std::string KeyOrderText(const ControllerType& type, const ControllerKeyOrder& order);
+// "" when `values` (one per key of `type`) keep every rule between keys, else the first rule
+// broken: "step_min_mm = 9 exceeds step_max_mm = 7.5 (mm; set both: step_min_mm <= step_max_mm)".
+std::string CheckKeyOrders(const ControllerType& type, const ControllerValues& values);
 
 // A parameter of controller parameters struct P: its key table row, with the default read from
 // P{} (the struct's initialisers are the one home of the defaults).
@@ -56,12 +68,19 @@ struct ParamField {
   double P::*field;
 };
 
-// The ControllerType of a controller class C constructed as C(context, P); `check`, when given,
-// says why a P whose values are each in range still cannot run ("" when it can).
+// A rule between two fields of P: the first may not exceed the second.
+template <typename P>
+struct ParamOrder {
+  double P::*lower;
+  double P::*upper;
+};
+
+// The ControllerType of a controller class C constructed as C(context, P); `orders` are the
+// rules between its fields (each field of a rule must be one of `fields`).
 template <typename C, typename P>
 ControllerType MakeControllerType(const char* name, const char* what,
                                   std::initializer_list<ParamField<P>> fields,
-                                  std::string (*check)(const P&) = nullptr) {
+                                  std::initializer_list<ParamOrder<P>> orders = {}) {
   ControllerType t;
   t.name = name;
   t.what = what;
@@ -79,10 +98,12 @@ ControllerType MakeControllerType(const char* name, const char* what,
   t.make = [params_of](const ControllerContext& context, const ControllerValues& values) {
     return std::unique_ptr<Controller>(new C(context, params_of(values)));
   };
-  if (check != nullptr)
-    t.check = [params_of, check](const ControllerValues& values) {
-      return check(params_of(values));
-    };
+  const auto index_of = [&members](double P::*field) {
+    size_t i = 0;
+    while (i < members.size() && members[i] != field) ++i;
+    return i;
+  };
+  for (const ParamOrder<P>& o : orders) t.orders.push_back({index_of(o.lower), index_of(o.upper)});
   return t;
 }
 

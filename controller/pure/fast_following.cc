@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace ssc {
 namespace {
@@ -112,20 +111,6 @@ ControllerCommand FastFollowingController::Step(const ControllerInput& in) {
   return c;
 }
 
-namespace {
-
-// The adaptive step lives in [step_min_mm, step_max_mm]: a minimum above the maximum would be
-// read as the maximum without a word.
-std::string CheckFastFollowingParams(const FastFollowingParams& p) {
-  if (p.step_min_mm <= p.step_max_mm) return "";
-  std::ostringstream os;
-  os << "step_min_mm = " << p.step_min_mm << " exceeds step_max_mm = " << p.step_max_mm
-     << " (mm; set both: step_min_mm <= step_max_mm)";
-  return os.str();
-}
-
-}  // namespace
-
 ControllerType FastFollowingControllerType() {
   using P = FastFollowingParams;
   return MakeControllerType<FastFollowingController, P>(
@@ -156,7 +141,9 @@ ControllerType FastFollowingControllerType() {
        {"tare_clearance_mm", "mm", 0.5, 50,
         "the air re-tare uses the readings at least this far above the hold height",
         &P::tare_clearance_mm}},
-      CheckFastFollowingParams);
+      // The adaptive step lives in [step_min_mm, step_max_mm]: a minimum above the maximum
+      // would be read as the maximum without a word.
+      {{&P::step_min_mm, &P::step_max_mm}});
 }
 
 }  // namespace ssc

@@ -268,6 +268,9 @@ CASES = [
      "unknown key 'stepmax'"),
     (["tune", "--controller", "fast", "--search", "step_max_mm=3:99", "--out", "new_out"], 2,
      "[0.5, 30]"),
+    (["tune", "--controller", "fast", "--search", "step_min_mm=9:12,step_max_mm=5:8", "--out",
+      "new_out"], 2, "rule: step_min_mm <= step_max_mm with step_min_mm in [9, 12] and "
+     "step_max_mm in [5, 8]"),
     (["tune", "--controller", "example", "--out", "new_out"], 2, "give the keys to search"),
     (["tune", "--reference", "fastest", "--out", "new_out"], 2, "unknown controller 'fastest'"),
     (["compare", FIFO, "--out", "new_out"], 1, "not a regular file"),

@@ -217,6 +217,36 @@ class ReliabilityTest(unittest.TestCase):
         else:
             self.assertIn("before the reference trial finished", err)
 
+    # A search point that breaks a rule between the controller's keys is refused, not run.
+
+    def test_tune_refuses_points_that_break_a_rule_between_keys(self):
+        out = os.path.join(self.tmp, "tune_rule")
+        # Part of this box keeps step_min_mm <= step_max_mm; BOBYQA's first points straddle it.
+        r = run(["tune", "--controller", "fast", "--search", "step_min_mm=6:12,step_max_mm=5:8",
+                 "--seeds", "1", "--evals", "6", "--timeout", "4", "--threads", "1",
+                 "--reference", "none", "--no-plot", "--out", out])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        table = rows(os.path.join(out, "tune.csv"))
+        self.assertEqual(len(table), 6)
+        refused = [x for x in table if x["outcome"].startswith("refused")]
+        ran = [x for x in table if x["outcome"] == "ran"]
+        self.assertEqual(len(refused) + len(ran), len(table))
+        self.assertTrue(refused and ran, "the search did not straddle the rule: nothing tested")
+        for x in refused:
+            self.assertGreater(float(x["step_min_mm"]), float(x["step_max_mm"]), x)
+            self.assertIn("step_min_mm <= step_max_mm", x["outcome"])
+            self.assertEqual((x["trials"], x["speed_mm_s"], x["pareto"]), ("0", "", "0"))
+            self.assertFalse(os.path.exists(
+                os.path.join(out, "evals", x["label"].replace(" ", "_"))), "a refused point ran")
+        for x in ran:
+            self.assertLessEqual(float(x["step_min_mm"]), float(x["step_max_mm"]), x)
+            self.assertEqual(x["trials"], "1")
+        self.assertIn("refused: %d of the search's points" % len(refused), r.stdout)
+        best = [line for line in r.stdout.splitlines() if line.startswith("best score: ")]
+        if best:
+            self.assertIn(best[0].split(",")[0][len("best score: "):],
+                          [x["label"] for x in ran])
+
     def test_a_full_disk_fails_compare_whole(self):
         disk = os.path.join(self.tmp, "full")
         os.makedirs(disk)

@@ -111,10 +111,37 @@ TEST(ControllerRegistryTest, ThePublishedLawIsTheDefaultAndTakesNoParameters) {
   EXPECT_EQ(choice.Make({}), nullptr);
 }
 
+// The rule between keys holds however the values arrive: parsed, or set directly (a search's
+// point, a binding), so a choice that breaks it never validates nor builds a controller.
+TEST(ControllerRegistryTest, ARuleBetweenKeysHoldsForValuesSetDirectly) {
+  const ControllerType* fast = FindControllerType("fast");
+  ASSERT_NE(fast, nullptr);
+  ASSERT_EQ(fast->orders.size(), 1u);
+  EXPECT_EQ(KeyOrderText(*fast, fast->orders[0]), "step_min_mm <= step_max_mm");
+  ControllerChoice choice;
+  std::string error;
+  ASSERT_TRUE(ParseControllerChoice("fast", "step_min_mm=6,step_max_mm=6", &choice, &error));
+  EXPECT_EQ(choice.Validate(), "");
+  choice.values[fast->orders[0].lower] = 9;  // above step_max_mm = 6
+  const std::string why = choice.Validate();
+  EXPECT_NE(why.find("step_min_mm = 9 exceeds step_max_mm = 6"), std::string::npos) << why;
+  EXPECT_NE(why.find("step_min_mm <= step_max_mm"), std::string::npos) << why;
+  EXPECT_EQ(choice.Make({}), nullptr);
+  EXPECT_EQ(CheckKeyOrders(*fast, choice.values), why.substr(why.find("step_min_mm")));
+}
+
 TEST(ControllerRegistryTest, EveryRegisteredKeyHasAUnitARangeAndADefaultInIt) {
   for (const ControllerType& t : ControllerTypes()) {
     EXPECT_FALSE(t.what.empty()) << t.name;
     ASSERT_TRUE(t.make) << t.name;
+    ControllerValues defaults;
+    for (const ControllerParamKey& k : t.keys) defaults.push_back(k.default_value);
+    EXPECT_EQ(CheckKeyOrders(t, defaults), "") << t.name;  // the defaults keep the rules
+    for (const ControllerKeyOrder& o : t.orders) {         // each rule names two of the type's keys
+      EXPECT_LT(o.lower, t.keys.size()) << t.name;
+      EXPECT_LT(o.upper, t.keys.size()) << t.name;
+      EXPECT_NE(o.lower, o.upper) << t.name;
+    }
     for (const ControllerParamKey& k : t.keys) {
       EXPECT_FALSE(k.unit.empty()) << t.name << "." << k.key;
       EXPECT_LT(k.min, k.max) << t.name << "." << k.key;

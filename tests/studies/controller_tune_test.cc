@@ -53,6 +53,41 @@ TEST(ParseTuneSearch, ControllerAndLawKeysWithinTheirRanges) {
   EXPECT_FALSE(ParseTuneSearch(*fast, "", &keys, &error));
 }
 
+// fast keeps step_min_mm <= step_max_mm: a box with no such point is refused naming the rule,
+// the keys and their ranges (a key not searched at the base value); a box with one is not.
+TEST(CheckTuneBox, RefusesABoxWhereNoPointKeepsTheRuleBetweenKeys) {
+  const ControllerType* fast = FindControllerType("fast");
+  ASSERT_NE(fast, nullptr);
+  std::vector<TuneKey> keys;
+  std::string error;
+  ControllerChoice base;
+  ASSERT_TRUE(ParseControllerChoice("fast", "", &base, &error));
+  ASSERT_TRUE(ParseTuneSearch(*fast, "step_min_mm=9:12,step_max_mm=5:8", &keys, &error));
+  std::string why = CheckTuneBox(keys, base);
+  EXPECT_NE(why.find("step_min_mm <= step_max_mm"), std::string::npos) << why;
+  EXPECT_NE(why.find("step_min_mm in [9, 12]"), std::string::npos) << why;
+  EXPECT_NE(why.find("step_max_mm in [5, 8]"), std::string::npos) << why;
+  // Points where the ranges touch keep it (step_min_mm = step_max_mm = 8).
+  ASSERT_TRUE(ParseTuneSearch(*fast, "step_min_mm=8:12,step_max_mm=5:8", &keys, &error));
+  EXPECT_EQ(CheckTuneBox(keys, base), "");
+  // The default box and the documented one hold such points.
+  for (const char* box : {"step_max_mm=7.5:14,step_min_mm=3:10,strength_pa=0:300",
+                          "step_max_mm=7.5:13,step_min_mm=3:10,strength_pa=0:300,"
+                          "lateral_gain=0.3:1.5,lag_gain=0:1,pref_pa=70:200"}) {
+    ASSERT_TRUE(ParseTuneSearch(*fast, box, &keys, &error)) << error;
+    EXPECT_EQ(CheckTuneBox(keys, base), "") << box;
+  }
+  // step_max_mm not searched: its base value (7.5 by default, 10 as given) is the range.
+  ASSERT_TRUE(ParseTuneSearch(*fast, "step_min_mm=9:12", &keys, &error));
+  why = CheckTuneBox(keys, base);
+  EXPECT_NE(why.find("step_max_mm = 7.5 (not searched"), std::string::npos) << why;
+  ASSERT_TRUE(ParseControllerChoice("fast", "step_max_mm=10", &base, &error));
+  EXPECT_EQ(CheckTuneBox(keys, base), "");
+  // A controller without rules, or only law keys: nothing to refuse.
+  ASSERT_TRUE(ParseTuneSearch(*fast, "beta=1:3", &keys, &error));
+  EXPECT_EQ(CheckTuneBox(keys, base), "");
+}
+
 TEST(TuneValues, SetAndReadBackTheSearchedKeys) {
   const ControllerType* fast = FindControllerType("fast");
   ASSERT_NE(fast, nullptr);

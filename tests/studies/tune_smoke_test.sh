@@ -15,7 +15,8 @@ head -1 "$CSV" | grep -q '^label,controller,step_max_mm,trials,successes,' \
   || { echo "FAIL: header"; exit 1; }
 sed -n 2p "$CSV" | grep -q '^published,' || { echo "FAIL: the reference first"; exit 1; }
 [ "$(grep -c '^eval [12],' "$CSV")" -eq 2 ] || { echo "FAIL: two evaluations"; exit 1; }
-awk -F, 'NR > 1 && $(NF) == 1 { n++ } END { exit !(n >= 1) }' "$CSV" \
+# pareto is the column before outcome (the quoted controller holds commas: count from the end)
+awk -F, 'NR > 1 && $(NF - 1) == 1 { n++ } END { exit !(n >= 1) }' "$CSV" \
   || { echo "FAIL: no Pareto point"; exit 1; }
 [ -d "$DIR/tune/evals/eval_1" ] || { echo "FAIL: evals/eval_1 missing"; exit 1; }
 if grep -q "wrote .*pareto.png" "$DIR/log"; then [ -s "$DIR/tune/pareto.png" ]; fi
