@@ -6,6 +6,7 @@
 
 #include "common/strict_number.h"
 #include "controller/pure/crimp_hop.h"
+#include "controller/pure/edge_track.h"
 #include "controller/pure/example_controller.h"
 #include "controller/pure/fast_following.h"
 #include "controller/pure/force_height.h"
@@ -16,8 +17,8 @@ namespace ssc {
 const std::vector<ControllerType>& ControllerTypes() {
   // A new controller: its ControllerType here (the published law stays first: the default).
   static const std::vector<ControllerType> kTypes = {
-      PublishedControllerType(), FastFollowingControllerType(), ForceHeightControllerType(),
-      CrimpHopControllerType(), ExampleControllerType()};
+      PublishedControllerType(),   FastFollowingControllerType(), EdgeTrackControllerType(),
+      ForceHeightControllerType(), CrimpHopControllerType(),      ExampleControllerType()};
   return kTypes;
 }
 

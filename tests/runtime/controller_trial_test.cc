@@ -226,6 +226,21 @@ TEST(ControllerTrialTest, AControllerCanReadTheSensorsInAirBeforeFollowing) {
   EXPECT_GT(spread, 10.0);
 }
 
+// Edge tracking steers by its fit of the tool's past positions once `fast` has started it: on
+// the ideal loop it completes the disk at its target speed (the landing misses of the default
+// effects are the subject of the sweeps in docs/controllers.md).
+TEST(ControllerTrialTest, EdgeTrackingFollowsTheDiskRoundFromItsFitOfThePositions) {
+  ControllerChoice choice;
+  std::string error;
+  ASSERT_TRUE(ParseControllerChoice("edge_track", "", &choice, &error)) << error;
+  TrialConfig config;
+  config.effects = RobotEffectsParams{};  // the ideal loop
+  const TrialResult r = RunWith(choice, config);
+  EXPECT_EQ(r.outcome, Outcome::kSuccess) << r.detail;
+  EXPECT_GT(r.swept_deg, 350);
+  EXPECT_GT(r.metrics.speed_mm_s, 40);  // `fast` at its defaults: about 37 mm/s
+}
+
 TEST(ControllerTrialTest, AnUnknownControllerIsRefusedBeforeTheTrial) {
   TrialConfig config;
   config.controller.name = "nonesuch";
