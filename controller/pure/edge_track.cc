@@ -64,6 +64,15 @@ bool FitLine(const V2* local, std::size_t n, double* m, double* c) {
   return true;
 }
 
+// `fast` at start_step_mm, whatever the differential's strength (no re-tare of its own: it
+// gets the tared readings).
+FastFollowingParams StartParams(const EdgeTrackParams& p) {
+  FastFollowingParams f;
+  f.step_max_mm = f.step_min_mm = p.start_step_mm;
+  f.strength_pa = 0;
+  return f;
+}
+
 }  // namespace
 
 V2 EdgeArc::PointAt(double s_mm) const {
@@ -189,7 +198,10 @@ double InsetFromMeanVacuumMm(double p_mean_pa) {
 }
 
 EdgeTrackController::EdgeTrackController(const ControllerContext& context, const EdgeTrackParams& p)
-    : law_(context.law), period_s_(context.control_period_s), p_(p), start_(context, {}) {}
+    : law_(context.law),
+      period_s_(context.control_period_s),
+      p_(p),
+      start_(context, StartParams(p)) {}
 
 void EdgeTrackController::ObserveBeforeFollowing(const ControllerInput& in) {
   air_tare_.Add(in.p_pa, in.tool_m[2]);
@@ -294,6 +306,7 @@ ControllerType EdgeTrackControllerType() {
         &P::fit_points},
        {"start_iterations", "1", 0, 50, "iterations run by `fast` before the fit takes over",
         &P::start_iterations},
+       {"start_step_mm", "mm", 0.5, 30, "`fast`'s step over those iterations", &P::start_step_mm},
        {"max_lead_mm", "mm", 0, 50, "the target's lead along the edge ahead of the tool, at most",
         &P::max_lead_mm},
        {"arm_reach", "1", 0.2, 1,

@@ -13,7 +13,7 @@
 //   target     inset_mm inside the fitted edge, at the previous target's place along it advanced
 //              by speed_mm_s x the nominal period (at most max_lead_mm ahead of the tool's own
 //              place); the step is that target minus the measured tool.
-// The first start_iterations, before enough positions exist, run `fast` (its defaults) on the
+// The first start_iterations, before enough positions exist, run `fast` at start_step_mm on the
 // same readings. With tare_in_air, the chambers' residual tare offsets are measured in air on
 // the way down (AirTare) and subtracted from every reading.
 #ifndef SSC_CONTROLLER_PURE_EDGE_TRACK_H_
@@ -30,11 +30,12 @@
 namespace ssc {
 
 struct EdgeTrackParams {
-  double speed_mm_s = 55;        // the target's advance along the edge per nominal period
+  double speed_mm_s = 75;        // the target's advance along the edge per nominal period
   double inset_mm = 1.25;        // the target's inset of the cup centre inside the edge
   double fit_points = 8;         // positions in the edge fit
-  double start_iterations = 4;   // iterations run by `fast` before the fit takes over
-  double max_lead_mm = 15;       // the target's lead along the edge ahead of the tool, at most
+  double start_iterations = 6;   // iterations run by `fast` before the fit takes over
+  double start_step_mm = 3;      // `fast`'s step over those iterations
+  double max_lead_mm = 25;       // the target's lead along the edge ahead of the tool, at most
   double arm_reach = 0.5;        // the share of the way to its goal the arm covers in a period
   double circle_points = 5;      // positions needed before the fit may curve
   double max_across_mm = 5;      // the step across the fitted edge, at most

@@ -149,6 +149,7 @@ TEST(EdgeTrackTest, TargetsAdvanceOnTheEdgeFromTheLastTargetSoMissesDoNotAddUp) 
   EdgeTrackParams p;
   p.speed_mm_s = 50;  // 7.5 mm per 0.15 s
   p.start_iterations = 3;
+  p.start_step_mm = 7.5;
   p.inset_mm = 2;
   p.arm_reach = 1;
   p.tare_in_air = 0;
