@@ -36,6 +36,10 @@ struct NumberRange {
   std::string ToString() const;
 };
 
+// Seeds travel through doubles (the plugin's state, CSV columns): whole numbers are exact up to
+// 2^53 - 1, so every seed a user gives (--seed, a Python seed=, a sweep row) is one of these.
+inline constexpr NumberRange kSeedRange = NumberRange::Whole(0, 9007199254740991.0);
+
 // Formats a number the way ranges and defaults are shown (shortest exact-enough form, %g).
 std::string FormatNumber(double v);
 

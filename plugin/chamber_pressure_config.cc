@@ -128,8 +128,8 @@ const std::vector<ChamberPressureConfigKey>& ChamberPressureConfigKeys() {
        NumberRange::Whole(1, kMaxAverageSamples), SSC_KEY_INT(sensor.average_samples, int)},
       {"lag_ms", "ms", "sensor chain", "first-order lag of tube and sensor (0 = none)",
        NumberRange::Closed(0, 10000), SSC_KEY_SCALED(sensor.lag_s, 1e3, 1e-3)},
-      {"seed", "", "sensor chain", "noise seed (combined with the run's seed)",
-       NumberRange::Whole(0, 9007199254740991.0), SSC_KEY_INT(sensor.seed, std::uint64_t)},
+      {"seed", "", "sensor chain", "noise seed (combined with the run's seed)", kSeedRange,
+       SSC_KEY_INT(sensor.seed, std::uint64_t)},
   };
   return keys;
 }

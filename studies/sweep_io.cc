@@ -75,7 +75,7 @@ bool ParseKey(const std::vector<std::string_view>& f, const Columns& columns, Sw
       !ParseNumber(f[2], NumberRange::Closed(0, 100), &beta, &e) ||
       !ParseNumber(f[3], NumberRange::Positive(100), &step, &e) ||
       !ParseNumber(f[4], NumberRange::Whole(0, 1e6), &repeat, &e) ||
-      !ParseNumber(f[5], NumberRange::Whole(0, 9007199254740991.0), &seed, &e)) {
+      !ParseNumber(f[5], kSeedRange, &seed, &e)) {
     return false;
   }
   key->pref_pa = pref;

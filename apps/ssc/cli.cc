@@ -185,8 +185,7 @@ void Command::Integer(const std::string& name, long* target, const std::string& 
 }
 
 void Command::Seed(const std::string& name, std::uint64_t* target, const std::string& help) {
-  // Seeds travel through doubles (plugin state, CSV): integers are exact up to 2^53 - 1.
-  const NumberRange range = NumberRange::Whole(0, 9007199254740991.0);
+  const NumberRange range = kSeedRange;
   AddValue(name, help + "; " + range.ToString(), "INT", std::to_string(*target));
   std::string* text = &texts_.back();
   converters_.push_back([this, name, text, target, range](std::string* error) {

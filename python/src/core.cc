@@ -120,6 +120,31 @@ ModelPtr Load(const std::string& scene) {
   return m;
 }
 
+// A seed from Python: a whole number in kSeedRange, an int (or anything with __index__) or a
+// float holding one, as every ssc --seed takes it. Anything else is a ValueError naming the
+// argument and the range: a seed above 2^53 - 1 would lose its last bits on the way through
+// doubles, one above 2^64 would wrap, and a fraction would be cut.
+std::uint64_t SeedArg(const nb::handle& value) {
+  PyObject* o = value.ptr();
+  auto refuse = [&]() {
+    Invalid("seed = " + std::string(nb::repr(value).c_str()) + " is not " + kSeedRange.ToString());
+  };
+  if (PyBool_Check(o)) refuse();  // an int to Python, but True is not a seed anyone meant
+  if (PyFloat_Check(o)) {
+    const double v = PyFloat_AsDouble(o);
+    if (!kSeedRange.Contains(v)) refuse();
+    return static_cast<std::uint64_t>(v);
+  }
+  if (!PyIndex_Check(o)) refuse();
+  nb::object index = nb::steal(PyNumber_Index(o));
+  if (!index.is_valid()) throw nb::python_error();
+  int overflow = 0;
+  const long long v = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
+  if (v == -1 && PyErr_Occurred()) throw nb::python_error();
+  if (overflow != 0 || v < 0 || static_cast<double>(v) > kSeedRange.hi) refuse();
+  return static_cast<std::uint64_t>(v);
+}
+
 // effects: "default" (the fitted set), "off" or key=value,... (as --effects).
 TrialConfig MakeConfig(double pref, double beta, double step_mm, std::uint64_t seed,
                        const std::string& object, const std::string& effects, std::string* scene) {
@@ -500,11 +525,11 @@ ControllerChoice ChoiceFrom(const nb::object& controller, const std::string& par
 class SteppedTrial {
  public:
   SteppedTrial(const std::string& scene, double pref, double beta, double step_mm,
-               std::uint64_t seed, const std::string& object, double timeout_s,
+               const nb::object& seed, const std::string& object, double timeout_s,
                const std::string& effects, const nb::object& controller,
                const std::string& controller_params) {
     scene_ = scene;
-    config_ = MakeConfig(pref, beta, step_mm, seed, object, effects, &scene_);
+    config_ = MakeConfig(pref, beta, step_mm, SeedArg(seed), object, effects, &scene_);
     SetTimeout(timeout_s, &config_);
     if (!controller.is_none()) {
       config_.controller = ChoiceFrom(controller, controller_params);
@@ -526,8 +551,8 @@ class SteppedTrial {
     trial_ = ContourTrial::Create(model_, data_, config_, false, &error);
     if (!trial_) Fail(error);
   }
-  void Reset(std::uint64_t seed) {
-    trial_->mutable_config().seed = seed;
+  void Reset(const nb::object& seed) {
+    trial_->mutable_config().seed = SeedArg(seed);
     trial_->Reset();
   }
   // The policy: the contour law inside the trial, or Python (apply_step at each iteration).
@@ -611,7 +636,7 @@ class SteppedTrial {
 // scene frame, m.
 class SilPlant {
  public:
-  SilPlant(const std::string& scene, std::uint64_t seed, int average_samples) {
+  SilPlant(const std::string& scene, const nb::object& seed, int average_samples) {
     scene_ = scene;
     std::string error;
     model_ = ToolModelVariant(ResolveScenePath(scene),
@@ -633,14 +658,15 @@ class SilPlant {
     if (!servo_) Fail(scene + ": no servo (gantry joints or an arm) drives the tool");
     Reset(seed);
   }
-  void Reset(std::uint64_t seed) {
+  void Reset(const nb::object& seed) {
+    const std::uint64_t run_seed = SeedArg(seed);
     if (model_->nkey > 0) {
       mj_resetDataKeyframe(model_.get(), data_.get(), 0);
     } else {
       mj_resetData(model_.get(), data_.get());
     }
     const ChamberPressureDiagnostics* p = FindChamberPressureDiagnostics(model_.get(), data_.get());
-    SetChamberPressureRunSeed(model_.get(), data_.get(), p->instance(), seed);
+    SetChamberPressureRunSeed(model_.get(), data_.get(), p->instance(), run_seed);
     mj_forward(model_.get(), data_.get());
     std::string error;
     if (!servo_->Init(model_.get(), data_.get(), site_, &error)) Fail(error);
@@ -800,6 +826,11 @@ NB_MODULE(_core, m) {
       },
       "The contour law's default P_ref (Pa), beta and step (mm): ContourLawParams{} in C++.");
 
+  m.attr("max_seed") = static_cast<std::uint64_t>(kSeedRange.hi);
+  m.def(
+      "check_seed", [](const nb::object& seed) { return SeedArg(seed); }, "seed"_a,
+      "The seed as an int when it is a whole number in [0, max_seed] (2^53 - 1, as every ssc "
+      "--seed), else ValueError naming the range.");
   m.def("resource_dir", &ResourceDir, "The folder holding models/ and scenes/.");
   m.def("set_resource_dir", &SetResourceDir, "dir"_a);
   m.def("scene_path", &ResolveScenePath, "scene"_a,
@@ -864,12 +895,13 @@ NB_MODULE(_core, m) {
 
   m.def(
       "run_trial",
-      [](const std::string& scene, double pref, double beta, double step_mm, std::uint64_t seed,
+      [](const std::string& scene, double pref, double beta, double step_mm, const nb::object& seed,
          const std::string& object, bool keep_log, double stop_at_s, double timeout_s,
          const std::string& effects, const nb::object& controller,
          const std::string& controller_params) {
         std::string scene_path = scene;
-        TrialConfig config = MakeConfig(pref, beta, step_mm, seed, object, effects, &scene_path);
+        TrialConfig config =
+            MakeConfig(pref, beta, step_mm, SeedArg(seed), object, effects, &scene_path);
         SetTimeout(timeout_s, &config);
         if (!(stop_at_s >= 0 && stop_at_s <= 3600)) {
           Invalid("stop_at_s = " + FormatNumber(stop_at_s) +
@@ -904,7 +936,7 @@ NB_MODULE(_core, m) {
   m.def(
       "sweep",
       [](const std::string& scene, std::vector<double> pref, std::vector<double> beta,
-         std::vector<double> step_mm, int repeats, std::uint64_t seed, int threads,
+         std::vector<double> step_mm, int repeats, const nb::object& seed, int threads,
          const std::string& out_csv, const std::string& effects, const nb::object& controller,
          const std::string& controller_params, nb::object progress) {
         PyProgress reporter(std::move(progress), "ssc_twin.sweep");
@@ -916,7 +948,7 @@ NB_MODULE(_core, m) {
         spec.beta = std::move(beta);
         spec.step_mm = std::move(step_mm);
         spec.repeats = repeats;
-        spec.seed = seed;
+        spec.seed = SeedArg(seed);
         spec.threads = threads;
         spec.out_csv = out_csv;
         if (out_csv.empty()) Invalid("out_csv is empty: give the sweep CSV's path");
@@ -952,14 +984,14 @@ NB_MODULE(_core, m) {
   m.def(
       "validate",
       [](const std::string& map, const std::string& out_dir, const std::string& scene, int seeds,
-         std::uint64_t seed, int threads, double timeout_s, const std::string& effects,
+         const nb::object& seed, int threads, double timeout_s, const std::string& effects,
          const nb::object& controller, const std::string& controller_params, nb::object progress) {
         PyProgress reporter(std::move(progress), "ssc_twin.validate");
         ValidateSpec spec;
         spec.base.controller = ChoiceFrom(controller, controller_params);
         spec.map_path = map.empty() ? ResourceDir() + "/data/published/success_map_dl5.csv" : map;
         spec.scene_name = scene;
-        spec.seed = seed;
+        spec.seed = SeedArg(seed);
         spec.out_dir = out_dir;
         if (seeds < 3 || seeds > 10000) {
           Invalid("seeds = " + std::to_string(seeds) +
@@ -1035,7 +1067,7 @@ NB_MODULE(_core, m) {
         d["map"] = spec.map_path;
         d["scene"] = scene;
         d["seeds_per_cell"] = seeds;
-        d["base_seed"] = seed;
+        d["base_seed"] = spec.seed;
         d["effects"] = FormatRobotEffects(spec.base.effects);
         d["out_dir"] = out_dir;
         return d;
@@ -1051,7 +1083,7 @@ NB_MODULE(_core, m) {
 
   m.def(
       "objects",
-      [](const std::string& names, const std::string& out_dir, int seeds, std::uint64_t seed,
+      [](const std::string& names, const std::string& out_dir, int seeds, const nb::object& seed,
          const std::string& scene_kind, double pref, double beta, double step_mm, int threads,
          const std::string& effects, const nb::object& controller,
          const std::string& controller_params) {
@@ -1065,7 +1097,7 @@ NB_MODULE(_core, m) {
         if (!ObjectSceneKindByName(scene_kind, &spec.scene_kind, &error))
           Invalid("scene_kind: " + error);
         spec.seeds = seeds;
-        spec.seed = seed;
+        spec.seed = SeedArg(seed);
         spec.law = Law(pref, beta, step_mm);
         spec.threads = threads;
         spec.out_dir = out_dir;
@@ -1187,9 +1219,10 @@ NB_MODULE(_core, m) {
   m.def(
       "write_robot_log",
       [](const std::string& dir, const std::string& scene, double pref, double beta, double step_mm,
-         std::uint64_t seed, const std::string& effects) {
+         const nb::object& seed, const std::string& effects) {
         std::string scene_path = scene;
-        const TrialConfig config = MakeConfig(pref, beta, step_mm, seed, "", effects, &scene_path);
+        const TrialConfig config =
+            MakeConfig(pref, beta, step_mm, SeedArg(seed), "", effects, &scene_path);
         ModelPtr model = Load(scene_path);
         std::string error;
         TrialResult r;
@@ -1219,8 +1252,9 @@ NB_MODULE(_core, m) {
 
   nb::class_<SteppedTrial>(m, "SteppedTrial",
                            "A trial stepped one control iteration at a time from Python.")
-      .def(nb::init<const std::string&, double, double, double, std::uint64_t, const std::string&,
-                    double, const std::string&, const nb::object&, const std::string&>(),
+      .def(nb::init<const std::string&, double, double, double, const nb::object&,
+                    const std::string&, double, const std::string&, const nb::object&,
+                    const std::string&>(),
            "scene"_a = "disk_benchmark_gantry", "pref"_a = law.p_ref_pa, "beta"_a = law.beta,
            "step_mm"_a = law.step_mm, "seed"_a = 1, "object"_a = "", "timeout_s"_a = 0.0,
            "effects"_a = "default", "controller"_a = nb::none(), "controller_params"_a = "")
@@ -1256,8 +1290,8 @@ NB_MODULE(_core, m) {
   nb::class_<SilPlant>(m, "SilPlant",
                        "A scene stepped from Python with its tool driven to Cartesian targets "
                        "(ssc_twin.sil's robot, sensors and pump).")
-      .def(nb::init<const std::string&, std::uint64_t, int>(), "scene"_a = "disk_benchmark_gantry",
-           "seed"_a = 1, "average_samples"_a = 1)
+      .def(nb::init<const std::string&, const nb::object&, int>(),
+           "scene"_a = "disk_benchmark_gantry", "seed"_a = 1, "average_samples"_a = 1)
       .def("reset", &SilPlant::Reset, "seed"_a)
       .def("set_target", &SilPlant::SetTarget, "xyz_m"_a)
       .def("target", &SilPlant::Target)

@@ -19,14 +19,15 @@ import os as _os
 import mujoco as _mujoco  # noqa: F401  loads libmujoco, which _core links (the same library)
 
 from . import _core
-from ._core import (Probe, SilPlant, SteppedTrial, compare, contour_step, controllers,
-                    mujoco_version, object_names, objects, phase_names, resource_dir, run_trial,
-                    scene_path, sweep, validate, write_lab_mat, write_robot_log)
+from ._core import (Probe, SilPlant, SteppedTrial, check_seed, compare, contour_step,
+                    controllers, max_seed, mujoco_version, object_names, objects, phase_names,
+                    resource_dir, run_trial, scene_path, sweep, validate, write_lab_mat,
+                    write_robot_log)
 
-__all__ = ["Probe", "SilPlant", "SteppedTrial", "compare", "contour_step", "controllers",
-           "mujoco_version", "object_names", "objects", "phase_names", "resource_dir",
-           "run_trial", "scene_path", "sweep", "write_lab_mat", "write_robot_log",
-           "plugin_library", "load_plugin", "read_sweep", "validate"]
+__all__ = ["Probe", "SilPlant", "SteppedTrial", "check_seed", "compare", "contour_step",
+           "controllers", "max_seed", "mujoco_version", "object_names", "objects", "phase_names",
+           "resource_dir", "run_trial", "scene_path", "sweep", "write_lab_mat",
+           "write_robot_log", "plugin_library", "load_plugin", "read_sweep", "validate"]
 
 _core.install_message_handlers()
 _version_problem = _core.check_mujoco_version()

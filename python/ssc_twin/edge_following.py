@@ -179,7 +179,8 @@ class EdgeFollowingEnv(gym.Env):
 
     # -- Gymnasium API ---------------------------------------------------------------------
     def reset(self, *, seed=None, options=None):
-        super().reset(seed=seed)
+        # The package's one range for seeds (ssc --seed's), whatever gymnasium would take.
+        super().reset(seed=None if seed is None else _core.check_seed(seed))
         options = options or {}
         if "object" in options:
             name = options["object"]

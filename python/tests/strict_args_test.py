@@ -77,6 +77,49 @@ class StrictArgumentsTest(unittest.TestCase):
         self.refused("not finite", t.apply_step, [0.0, float("inf")])
         t.apply_step([0.0, 0.001])  # a finite step is taken
 
+    def test_every_seed_is_a_whole_number_in_the_cli_range(self):
+        """Above 2^53 - 1 a seed would lose its last bits through doubles, above 2^64 it would
+        wrap: every entry point refuses it, and a fraction, a negative or a bool, before any
+        work, with ssc --seed's range."""
+        cli_range = "a whole number in [0, 9007199254740991]"
+        self.assertEqual(ssc_twin.max_seed, 2**53 - 1)
+        csv = os.path.join(self.tmp, "seed_sweep", "sweep.csv")
+        out = os.path.join(self.tmp, "seed_out")
+        trial, plant = ssc_twin.SteppedTrial(), ssc_twin.SilPlant()
+        calls = {
+            "check_seed": ssc_twin.check_seed,
+            "run_trial": lambda s: ssc_twin.run_trial(seed=s, keep_log=False),
+            "sweep": lambda s: ssc_twin.sweep(pref=[100], beta=[2], step_mm=[7.5], repeats=1,
+                                              seed=s, out_csv=csv),
+            "validate": lambda s: ssc_twin.validate(out_dir=out, seed=s),
+            "objects": lambda s: ssc_twin.objects("disk_d14", out_dir=out, seed=s),
+            "write_robot_log": lambda s: ssc_twin.write_robot_log(out, seed=s),
+            "SteppedTrial": lambda s: ssc_twin.SteppedTrial(seed=s),
+            "SteppedTrial.reset": lambda s: trial.reset(s),
+            "SilPlant": lambda s: ssc_twin.SilPlant(seed=s),
+            "SilPlant.reset": lambda s: plant.reset(s),
+        }
+        try:
+            import gymnasium as gym
+            env = gym.make("ssc_twin/EdgeFollowing-v0")
+            calls["env.reset"] = lambda s: env.reset(seed=s)
+        except ImportError:  # gymnasium is optional
+            env = None
+        for name, call in calls.items():
+            for bad in (2**53, 2**53 + 1, 2**64 + 5, 2**70, -1, 1.5, float("nan"), True):
+                with self.subTest(name, seed=bad):
+                    message = self.refused(cli_range, call, bad)
+                    self.assertIn("seed = ", message)
+        self.assertFalse(os.path.exists(os.path.dirname(csv)))
+        self.assertFalse(os.path.exists(out))
+        # Whole numbers in range pass as ints, whatever their Python type.
+        for good, want in ((0, 0), (2**53 - 1, 2**53 - 1), (2.0, 2), (np.int64(7), 7),
+                           (np.uint64(2**53 - 1), 2**53 - 1)):
+            self.assertEqual(ssc_twin.check_seed(good), want)
+        if env is not None:
+            self.assertIn("object", env.reset(seed=2**53 - 1)[1])
+            env.close()
+
     def test_files_named_in_errors(self):
         self.refused("/dev/zero", ssc_twin.validate, map="/dev/zero",
                      out_dir=os.path.join(self.tmp, "v"))

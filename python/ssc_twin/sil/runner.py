@@ -22,6 +22,7 @@ import time as _time
 import traceback
 import types
 
+from .. import _core
 from . import noop, world as world_mod
 
 STANDINS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "standins")
@@ -70,7 +71,7 @@ def parse_args(argv):
 
 
 # ssc's seeds: whole numbers doubles hold exactly (common/strict_number.h), as every ssc --seed.
-MAX_SEED = 2**53 - 1
+MAX_SEED = _core.max_seed
 MAX_SIM_S = 86400.0
 
 
