@@ -34,14 +34,19 @@ struct ObjectStudySpec {
 struct ObjectStudySummary {
   int trials = 0;            // trials asked for
   int finished = 0;          // trials whose rows are in the table (all but on an interruption)
+  int skipped = 0;           // of those, rows kept from an earlier run (not run again)
   bool interrupted = false;  // SIGINT/SIGTERM: the table holds the finished rows only
   std::string table_csv, paths_dir, fillet_profile_csv;  // paths written ("" if none)
   std::string fillet_line;  // where the fillet trial ended, in words ("" without a fillet)
 };
 
-// `progress` (optional) gets one line per finished trial, in the runner's delivery order.
-// False + *error when a file cannot be written. Interrupted (studies/job_runner.h), the table
-// is written with the finished trials' rows and summary->interrupted is set; it does not resume.
+// `progress` (optional) gets one line per trial run, in the runner's delivery order. The table
+// (OUT/objects.csv) resumes as a sweep does (studies/sweep_io.h, ResumableTable): the same study
+// run again skips the trials whose rows are in it, reruns rows it cannot trust, refuses other
+// options (OUT/objects.json) and a second run on the same OUT; each row is appended as its trial
+// finishes. Interrupted (studies/job_runner.h), the table keeps the finished rows and
+// summary->interrupted is set; complete, the rows are rewritten in object and seed order. False +
+// *error when a file cannot be read or written, or the table cannot be resumed.
 bool RunObjectStudy(const ObjectStudySpec& spec,
                     const std::function<void(const std::string&)>& progress,
                     ObjectStudySummary* summary, std::string* error);

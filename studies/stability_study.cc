@@ -3,9 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
+#include <string_view>
 
+#include "common/strict_number.h"
 #include "studies/job_runner.h"
+#include "studies/sweep_io.h"
+#include "studies/trial_manifest.h"
 
 namespace ssc {
 namespace {
@@ -19,14 +24,86 @@ constexpr Integrator kIntegrators[] = {{mjINT_EULER, "Euler"},
                                        {mjINT_IMPLICIT, "implicit"},
                                        {mjINT_IMPLICITFAST, "implicitfast"}};
 
+struct Job {
+  Integrator integrator;
+  double ms;
+};
+
+std::string Full(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.17g", v);
+  return buf;
+}
+
+std::string JobKey(bool reference, const std::string& integrator, double ms) {
+  return std::string(reference ? "reference " : "step ") + integrator + " " + Full(ms);
+}
+
+bool FullNumber(std::string_view text, double* v) {
+  const std::string t(text);
+  char* end = nullptr;
+  *v = std::strtod(t.c_str(), &end);
+  return !t.empty() && end == t.c_str() + t.size();
+}
+
+// A row of an earlier run: its key when it can be a finished trial of this study.
+std::string CheckTrialRow(const std::vector<std::string_view>& f, std::string* why) {
+  const std::string trial(f[0]), integrator(f[1]), outcome(f[3]);
+  bool known = false;
+  for (const Integrator& in : kIntegrators) known = known || integrator == in.name;
+  bool finished = false;
+  for (int o = static_cast<int>(Outcome::kSuccess);
+       o <= static_cast<int>(Outcome::kControllerFault); ++o) {
+    finished = finished || outcome == OutcomeName(static_cast<Outcome>(o));
+  }
+  double ms = 0, number = 0;
+  if (trial != "reference" && trial != "step") {
+    *why = "trial '" + trial + "' is neither reference nor step";
+  } else if (!known) {
+    *why = "integrator '" + integrator + "' is not one of the study's";
+  } else if (!FullNumber(f[2], &ms) || !(ms > 0)) {
+    *why = "timestep_ms '" + std::string(f[2]) + "' is not a positive number";
+  } else if (!finished) {
+    *why = "outcome '" + outcome + "' is not a finished trial's";
+  } else if (!FullNumber(f[4], &number) || !FullNumber(f[5], &number) ||
+             !FullNumber(f[6], &number)) {
+    *why = "a metric cell is not a number";
+  } else {
+    return JobKey(trial == "reference", integrator, ms);
+  }
+  return "";
+}
+
+// The job's result ("outcome r_mean s wall", as run() gives it) from its trials-file row.
+std::string ResultOfRow(const std::string& row) {
+  std::vector<std::string> f;
+  std::stringstream in(row);
+  for (std::string cell; std::getline(in, cell, ',');) f.push_back(cell);
+  int outcome = 0;
+  for (int o = 0; o <= static_cast<int>(Outcome::kControllerFault); ++o) {
+    if (f[3] == OutcomeName(static_cast<Outcome>(o))) outcome = o;
+  }
+  return std::to_string(outcome) + " " + f[4] + " " + f[5] + " " + f[6];
+}
+
+// The trials-file row of a job's result.
+std::string RowOfResult(std::size_t i, const Job& job, const std::string& result) {
+  int outcome = 0;
+  std::string r, s, wall;
+  std::istringstream(result) >> outcome >> r >> s >> wall;
+  return std::string(i == 0 ? "reference" : "step") + "," + job.integrator.name + "," +
+         Full(job.ms) + "," + OutcomeName(static_cast<Outcome>(outcome)) + "," + r + "," + s + "," +
+         wall;
+}
+
 }  // namespace
+
+std::string StabilityTrialsHeader() {
+  return "trial,integrator,timestep_ms,outcome,r_mean_mm,s_mm,wall_s";
+}
 
 StabilityResult RunStabilityStudy(const mjModel* model, const StabilitySpec& spec) {
   // Job 0: the reference; then integrator by integrator, step by step.
-  struct Job {
-    Integrator integrator;
-    double ms;
-  };
   std::vector<Job> jobs = {{{mjINT_RK4, "RK4"}, 0.5}};
   for (const Integrator& in : kIntegrators) {
     for (double ms : spec.steps_ms) jobs.push_back({in, ms});
@@ -46,10 +123,39 @@ StabilityResult RunStabilityStudy(const mjModel* model, const StabilitySpec& spe
                   r.metrics.r_mean_mm, r.metrics.s_mm, r.wall_time_s);
     return std::string(buf);
   };
+  StabilityResult result;
+  result.trials = static_cast<int>(jobs.size());
+  const bool writer = JobRunnerRank() == 0;
+  std::vector<std::string> out(jobs.size());
+  ResumableTable table;
+  if (writer && !spec.trials_csv.empty()) {
+    SweepManifest manifest = TrialManifest(model, spec.scene_name, spec.config);
+    manifest["csv_columns"] = StabilityTrialsHeader();
+    manifest["seed"] = std::to_string(spec.config.seed);
+    manifest["pref_pa"] = FormatNumber(spec.config.law.p_ref_pa);
+    manifest["beta"] = FormatNumber(spec.config.law.beta);
+    manifest["step_mm"] = FormatNumber(spec.config.law.step_mm);
+    if (!table.Open(spec.trials_csv, StabilityTrialsHeader(), manifest, CheckTrialRow,
+                    "ssc stability", &result.error)) {
+      return result;
+    }
+    for (std::size_t i = 0; i < jobs.size(); ++i) {
+      const std::string kept = table.Kept(JobKey(i == 0, jobs[i].integrator.name, jobs[i].ms));
+      if (kept.empty()) continue;
+      out[i] = ResultOfRow(kept);
+      ++result.skipped;
+    }
+  }
+  set.skip = [&](std::size_t i) { return !out[i].empty(); };
   JobRunnerOptions options;
   options.threads = std::max(1, spec.threads);
-  JobRunStats stats;
-  const std::vector<std::string> out = RunJobsCollect(set, options, &stats);
+  const JobRunStats stats = RunJobs(set, options, [&](std::size_t i, const std::string& r) {
+    out[i] = r;
+    if (!spec.trials_csv.empty() && result.error.empty()) {
+      table.Append(RowOfResult(i, jobs[i], r), &result.error);
+    }
+  });
+  if (!result.error.empty()) return result;
   auto row = [&](std::size_t i) {
     StabilityRow r;
     r.integrator = jobs[i].integrator.name;
@@ -60,9 +166,7 @@ StabilityResult RunStabilityStudy(const mjModel* model, const StabilitySpec& spe
     r.stable = r.outcome != Outcome::kUnstable;
     return r;
   };
-  StabilityResult result;
-  result.trials = static_cast<int>(jobs.size());
-  if (out.size() != jobs.size()) return result;  // not rank 0 under MPI
+  if (!writer) return result;  // not rank 0 under MPI
   result.interrupted = stats.interrupted;
   // An interrupted run leaves jobs without a result: rows only for finished ones, and only when
   // the reference they are judged against finished.

@@ -13,7 +13,11 @@
 namespace ssc {
 
 struct StabilitySpec {
-  TrialConfig config;  // the trial (e.g. dL 5 mm)
+  TrialConfig config;      // the trial (e.g. dL 5 mm)
+  std::string scene_name;  // recorded beside the trials file
+  // Each trial as it finishes (StabilityTrialsHeader()): the same study run again resumes from
+  // it as a sweep does (studies/sweep_io.h, ResumableTable); "": none kept.
+  std::string trials_csv;
   std::vector<double> steps_ms = {0.5, 1, 2, 4, 8, 16};
   double dr_tol_mm = 0.3, s_tol = 0.05;  // mean radius (mm), path length (relative)
   int threads = 1;
@@ -34,13 +38,19 @@ struct StabilityResult {
   // SIGINT/SIGTERM (studies/job_runner.h): `rows` holds the finished trials, judged when the
   // reference finished (none otherwise); largest_unchanged_ms is empty (it needs every step).
   bool interrupted = false;
-  int trials = 0;  // asked for, with the reference
+  int trials = 0;     // asked for, with the reference
+  int skipped = 0;    // found in trials_csv from an earlier run, not run again
+  std::string error;  // the trials file could not be resumed or written (nothing else is valid)
 };
 
 StabilityResult RunStabilityStudy(const mjModel* model, const StabilitySpec& spec);
 
 // integrator,timestep_ms,outcome,r_mean_mm,s_mm,wall_s,stable,unchanged
 std::string StabilityCsv(const StabilityResult& result);
+
+// The trials file's header: trial (reference or step), integrator, timestep_ms, outcome,
+// r_mean_mm, s_mm, wall_s, the numbers in full precision.
+std::string StabilityTrialsHeader();
 
 }  // namespace ssc
 

@@ -17,6 +17,7 @@
 #include "studies/job_runner.h"
 #include "studies/sweep_io.h"
 #include "studies/trial_io.h"
+#include "studies/trial_manifest.h"
 
 namespace ssc {
 namespace {
@@ -29,7 +30,24 @@ Key MakeKey(double pref, double beta, double step, int repeat) {
 
 // The options that define the rows: resuming with other ones would mix their rows silently.
 SweepManifest MakeManifest(const mjModel* m, const SweepSpec& spec) {
-  const TrialConfig& c = spec.base;
+  SweepManifest manifest = TrialManifest(m, spec.scene_name, spec.base);
+  manifest["csv_columns"] = SweepCsvHeader();
+  manifest["seed"] = std::to_string(spec.seed);
+  return manifest;
+}
+
+// MuJoCo calls mju_user_error on fatal errors (the default exits the process); a sweep turns
+// them into an exception caught per trial so the sweep goes on.
+thread_local bool t_in_trial = false;
+void ThrowingError(const char* msg) {
+  if (t_in_trial) throw std::runtime_error(msg);
+  std::fprintf(stderr, "MuJoCo error: %s\n", msg);
+  std::abort();
+}
+
+}  // namespace
+
+SweepManifest TrialManifest(const mjModel* m, const std::string& scene, const TrialConfig& c) {
   auto num = [](double v) { return FormatNumber(v); };
   std::vector<unsigned char> buffer(static_cast<size_t>(mj_sizeModel(m)));
   mj_saveModel(m, nullptr, buffer.data(), static_cast<int>(buffer.size()));
@@ -37,11 +55,9 @@ SweepManifest MakeManifest(const mjModel* m, const SweepSpec& spec) {
   std::snprintf(hash, sizeof(hash), "%016llx",
                 static_cast<unsigned long long>(Fnv1a64(buffer.data(), buffer.size())));
   SweepManifest manifest = {
-      {"csv_columns", SweepCsvHeader()},
-      {"scene", spec.scene_name},
+      {"scene", scene},
       {"default_scene", kDefaultScene},
       {"model_hash", hash},
-      {"seed", std::to_string(spec.seed)},
       {"timeout_s", num(c.timeout_s)},
       {"control_period_s", num(c.control_period_s)},
       {"smoothing_s", num(c.servo.smoothing_s)},
@@ -63,17 +79,6 @@ SweepManifest MakeManifest(const mjModel* m, const SweepSpec& spec) {
   if (!c.controller.IsPublished()) manifest["controller"] = c.controller.Text();
   return manifest;
 }
-
-// MuJoCo calls mju_user_error on fatal errors (the default exits the process); a sweep turns
-// them into an exception caught per trial so the sweep goes on.
-thread_local bool t_in_trial = false;
-void ThrowingError(const char* msg) {
-  if (t_in_trial) throw std::runtime_error(msg);
-  std::fprintf(stderr, "MuJoCo error: %s\n", msg);
-  std::abort();
-}
-
-}  // namespace
 
 std::uint64_t TrialSeed(std::uint64_t base, double pref, double beta, double step, int repeat) {
   const Key k = MakeKey(pref, beta, step, repeat);

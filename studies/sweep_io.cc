@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -113,11 +114,10 @@ bool WriteWhole(int fd, std::string_view text) {
 
 }  // namespace
 
-SweepCsvContents ParseSweepCsv(std::string_view text, std::string_view header) {
-  SweepCsvContents c;
+CsvRows ParseCsvRows(std::string_view text, std::string_view header, const CsvRowAccept& accept) {
+  CsvRows c;
   std::vector<std::string_view> header_fields, fields;
   SplitFields(header, &header_fields);
-  const Columns columns = FindColumns(header_fields);
   size_t pos = 0;
   int line_number = 0;
   bool first = true;
@@ -135,11 +135,8 @@ SweepCsvContents ParseSweepCsv(std::string_view text, std::string_view header) {
       continue;
     }
     first = false;
-    SweepRowKey key;
     if (whole && SplitFields(line, &fields) && fields.size() == header_fields.size() &&
-        ParseKey(fields, columns, &key)) {
-      key.line = line_number;
-      c.rows.push_back(key);
+        (!accept || accept(fields, line_number))) {
       c.lines.emplace_back(line);
     } else if (!line.empty() || !whole) {
       ++c.dropped;
@@ -148,16 +145,39 @@ SweepCsvContents ParseSweepCsv(std::string_view text, std::string_view header) {
   return c;
 }
 
-bool LoadSweepCsvForResume(const std::string& path, const std::string& header,
-                           SweepCsvContents* contents, std::string* error) {
-  *contents = SweepCsvContents();
+SweepCsvContents ParseSweepCsv(std::string_view text, std::string_view header) {
+  SweepCsvContents c;
+  std::vector<std::string_view> header_fields;
+  SplitFields(header, &header_fields);
+  const Columns columns = FindColumns(header_fields);
+  CsvRows rows = ParseCsvRows(text, header, [&](const std::vector<std::string_view>& f, int line) {
+    SweepRowKey key;
+    if (!ParseKey(f, columns, &key)) return false;
+    key.line = line;
+    c.rows.push_back(key);
+    return true;
+  });
+  c.has_header = rows.has_header;
+  c.lines = std::move(rows.lines);
+  c.dropped = rows.dropped;
+  c.ends_torn = rows.ends_torn;
+  return c;
+}
+
+namespace {
+
+// The text of a CSV a study resumes (absent: empty; only a torn header: emptied). False +
+// *error when it cannot be read or its first line is not `header`. `what`: "a sweep".
+bool ReadCsvForResume(const std::string& path, const std::string& header, const std::string& what,
+                      std::string* text, std::string* error) {
+  text->clear();
   std::error_code ec;
   if (!std::filesystem::exists(path, ec) &&
       !std::filesystem::is_symlink(std::filesystem::symlink_status(path, ec))) {
     return true;
   }
   if (const std::string why = CheckInputFile(path); !why.empty()) {
-    *error = path + ": " + why + " (the CSV a sweep resumes)";
+    *error = path + ": " + why + " (the CSV " + what + " resumes)";
     return false;
   }
   std::ifstream in(path, std::ios::binary);
@@ -167,18 +187,31 @@ bool LoadSweepCsvForResume(const std::string& path, const std::string& header,
   }
   std::stringstream buf;
   buf << in.rdbuf();
-  const std::string text = buf.str();
+  *text = buf.str();
   const std::string header_line = header + "\n";
-  if (header_line.compare(0, text.size(), text, 0, header_line.size()) == 0 &&
-      text.size() < header_line.size()) {
+  if (header_line.compare(0, text->size(), *text, 0, header_line.size()) == 0 &&
+      text->size() < header_line.size()) {
     // Empty, or a header torn while being written: start the file anew.
-    return text.empty() || WriteWholeFile(path, "", error);
+    const bool was_empty = text->empty();
+    text->clear();
+    return was_empty || WriteWholeFile(path, "", error);
   }
-  if (text.compare(0, header_line.size(), header_line) != 0) {
-    *error = path + ": its first line is not this version's sweep header ('" +
-             header.substr(0, 40) + "...'): not a sweep CSV that can be resumed; use another --out";
+  if (text->compare(0, header_line.size(), header_line) != 0) {
+    *error = path + ": its first line is not the header of " + what + " of this version ('" +
+             header.substr(0, 40) + "...'): not a CSV that can be resumed; use another --out";
     return false;
   }
+  return true;
+}
+
+}  // namespace
+
+bool LoadSweepCsvForResume(const std::string& path, const std::string& header,
+                           SweepCsvContents* contents, std::string* error) {
+  *contents = SweepCsvContents();
+  std::string text;
+  if (!ReadCsvForResume(path, header, "a sweep", &text, error)) return false;
+  if (text.empty()) return true;
   *contents = ParseSweepCsv(text, header);
   if (contents->dropped == 0) return true;
   // Rewrite without the torn or malformed lines (temp + rename: never half a file).
@@ -435,6 +468,69 @@ bool CheckOrWriteSweepManifest(const std::string& csv_path, bool csv_has_rows,
     return false;
   }
   return WriteWholeFile(path, SweepManifestJson(now), error);
+}
+
+bool ResumableTable::Open(const std::string& path, const std::string& header,
+                          const SweepManifest& manifest, const RowCheck& check,
+                          const std::string& what, std::string* error) {
+  path_ = path;
+  header_ = header;
+  kept_.clear();
+  std::string text;
+  if (!lock_.Acquire(path, error) || !ReadCsvForResume(path, header, what, &text, error)) {
+    return false;
+  }
+  std::vector<std::string> keys, whys;  // per whole row: its key ("" when refused) and why
+  CsvRows rows = ParseCsvRows(text, header, [&](const std::vector<std::string_view>& f, int) {
+    std::string why;
+    keys.push_back(check(f, &why));
+    whys.push_back(why);
+    return true;
+  });
+  if (!CheckOrWriteSweepManifest(path, !rows.lines.empty(), manifest, error)) return false;
+  std::vector<std::string> keep;
+  int problems = 0;
+  for (size_t i = 0; i < rows.lines.size(); ++i) {
+    const std::string& line = rows.lines[i];
+    std::string key = keys[i], why = whys[i];
+    if (!key.empty() && kept_.count(key)) {
+      why = "a second row for " + key;
+      key.clear();
+    }
+    if (key.empty()) {
+      if (++problems <= 10) {
+        std::fprintf(stderr, "%s: %s: row '%s': %s; dropped, the trial runs again\n", what.c_str(),
+                     path.c_str(), line.substr(0, 60).c_str(), why.c_str());
+      }
+      continue;
+    }
+    kept_[key] = line;
+    keep.push_back(line);
+  }
+  if (problems > 10) {
+    std::fprintf(stderr, "%s: %d more rows of %s like these dropped\n", what.c_str(), problems - 10,
+                 path.c_str());
+  }
+  if (rows.dropped > 0) {
+    std::fprintf(stderr,
+                 "%s: dropped %d torn or malformed line(s) from %s; those trials run again\n",
+                 what.c_str(), rows.dropped, path.c_str());
+  }
+  if ((rows.dropped > 0 || problems > 0 || !rows.has_header) && !Rewrite(keep, error)) return false;
+  return writer_.Open(path, error);
+}
+
+std::string ResumableTable::Kept(const std::string& key) const {
+  const auto it = kept_.find(key);
+  return it == kept_.end() ? "" : it->second;
+}
+
+bool ResumableTable::Append(std::string_view row, std::string* error) {
+  return writer_.Append(row, error);
+}
+
+bool ResumableTable::Rewrite(const std::vector<std::string>& rows, std::string* error) {
+  return RewriteSweepCsv(path_, header_, rows, error);
 }
 
 std::uint64_t Fnv1a64(const void* data, std::size_t size) {

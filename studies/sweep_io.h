@@ -46,6 +46,18 @@ struct SweepCsvContents {
 // Parses a sweep CSV's text; `header` is the expected first line (without '\n').
 SweepCsvContents ParseSweepCsv(std::string_view text, std::string_view header);
 
+// The whole rows of any study's CSV, by the sweep's rules (a line ending in '\n' with the
+// header's number of fields, quoted fields respected) and `accept` (the row's own fields, its
+// 1-based line number; null: every such row): the rest counted in `dropped`.
+struct CsvRows {
+  bool has_header = false;
+  std::vector<std::string> lines;  // without '\n'
+  int dropped = 0;
+  bool ends_torn = false;
+};
+using CsvRowAccept = std::function<bool(const std::vector<std::string_view>& fields, int line)>;
+CsvRows ParseCsvRows(std::string_view text, std::string_view header, const CsvRowAccept& accept);
+
 // Reads `path` (absent = empty) for resuming. When any line was dropped, rewrites the file
 // (temp file + rename) with the header and the whole rows only, so later appends start on a
 // fresh line. False + *error when the file cannot be read or rewritten, or its header differs.
@@ -138,6 +150,33 @@ std::string CompareSweepManifests(const SweepManifest& recorded, const SweepMani
 // made with other options.
 bool CheckOrWriteSweepManifest(const std::string& csv_path, bool csv_has_rows,
                                const SweepManifest& now, std::string* error);
+
+// A study's results table that resumes as a sweep's CSV does: one run per table at a time (the
+// sweep's lock), the options that define its rows beside it (TABLE.json, compared on resume:
+// other options are refused naming the differences), rows appended whole as trials finish, and
+// on resume only whole rows kept that `check` accepts, once per key; a row refused or repeated
+// is dropped, named on stderr, and its trial runs again.
+class ResumableTable {
+ public:
+  // The row's key from its fields, or "" with *why saying why the row cannot be this run's.
+  using RowCheck =
+      std::function<std::string(const std::vector<std::string_view>& fields, std::string* why)>;
+  // `what` names the study in messages ("ssc objects").
+  bool Open(const std::string& path, const std::string& header, const SweepManifest& manifest,
+            const RowCheck& check, const std::string& what, std::string* error);
+  // The row kept for `key` from an earlier run ("" when none).
+  std::string Kept(const std::string& key) const;
+  std::size_t kept() const { return kept_.size(); }
+  bool Append(std::string_view row, std::string* error);
+  // The table rewritten as the header and `rows` (the study's order, once every trial finished).
+  bool Rewrite(const std::vector<std::string>& rows, std::string* error);
+
+ private:
+  SweepOutputLock lock_;
+  SweepRowWriter writer_;
+  std::string path_, header_;
+  std::map<std::string, std::string> kept_;
+};
 
 // 64-bit FNV-1a, for the model hash.
 std::uint64_t Fnv1a64(const void* data, std::size_t size);

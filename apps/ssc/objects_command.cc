@@ -17,7 +17,8 @@ int RunObjectsCommand(int argc, char** argv) {
       "Writes the scenes of the published test objects (disks and holes 2-14 mm, the 35 mm\n"
       "disk, corners every 15 deg, volute, semicircle and semi-square strips, variable fillet)\n"
       "and runs the contour-following trial on each; writes OUT/objects.csv (one row per\n"
-      "object and seed), OUT/fillet_profile.csv and OUT/objects.png.");
+      "object and seed), OUT/fillet_profile.csv and OUT/objects.png. The same command run\n"
+      "again resumes: the trials whose rows are in OUT/objects.csv are not run again.");
   std::string names = "all", kind = "gantry", out_dir = "out/objects";
   long seeds = 1, threads = std::max(1u, std::thread::hardware_concurrency());
   std::uint64_t seed = 1;
@@ -71,10 +72,14 @@ int RunObjectsCommand(int argc, char** argv) {
   const std::filesystem::path out = out_dir;
   std::printf("wrote %zu objects' scenes into %s\n", spec.objects.size(), (out / "scenes").c_str());
   if (write_only) return 0;
+  if (summary.skipped > 0) {
+    std::printf("%d of %d trials already in %s from an earlier run: kept, not run again\n",
+                summary.skipped, summary.trials, summary.table_csv.c_str());
+  }
   if (summary.interrupted) {
     std::fprintf(stderr,
-                 "ssc objects: interrupted; %d of %d trials finished, their rows are in %s (the "
-                 "study does not resume: run it again whole)\n",
+                 "ssc objects: interrupted; %d of %d trials finished, their rows are in %s (run "
+                 "the same command again to resume)\n",
                  summary.finished, summary.trials, summary.table_csv.c_str());
     return 130;
   }

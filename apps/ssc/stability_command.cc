@@ -47,7 +47,8 @@ int RunStabilityCommand(int argc, char** argv) {
       "Runs the same disk trial with every integrator over a range of time steps and\n"
       "reports, per integrator, the largest step at which the trial stays stable and its\n"
       "outcome, mean radius and path length stay within tolerance of a 0.5 ms RK4 reference.\n"
-      "Writes OUT/stability.csv.");
+      "Writes OUT/stability.csv, and each trial as it finishes to OUT/stability_trials.csv:\n"
+      "the same command run again resumes from it.");
   std::string scene_name = "disk_benchmark_gantry", out_dir = "out/stability";
   std::vector<double> steps_ms = {0.5, 1, 2, 4, 8, 16};
   double dl = 5, dr_tol = 0.3, s_tol = 0.05;
@@ -75,17 +76,29 @@ int RunStabilityCommand(int argc, char** argv) {
   spec.dr_tol_mm = dr_tol;
   spec.s_tol = s_tol;
   spec.threads = static_cast<int>(threads);
+  spec.scene_name = scene_name;
+  spec.trials_csv = (std::filesystem::path(out_dir) / "stability_trials.csv").string();
   if (std::string e; !CheckTrialSetup(base.get(), spec.config, &e)) {
     std::fprintf(stderr, "ssc stability: %s: %s\n", scene_name.c_str(), e.c_str());
     return 1;
   }
   if (int rc = cmd.CreateOutputs(); rc != 0) return rc;
   const StabilityResult result = RunStabilityStudy(base.get(), spec);
+  if (!result.error.empty()) {
+    std::fprintf(stderr, "ssc stability: %s\n", result.error.c_str());
+    return 1;
+  }
+  if (result.skipped > 0) {
+    std::printf("%d of %d trials already in %s from an earlier run: kept, not run again\n",
+                result.skipped, result.trials, spec.trials_csv.c_str());
+  }
   const std::filesystem::path csv = std::filesystem::path(out_dir) / "stability.csv";
-  if (result.interrupted && result.rows.empty()) {
+  if (result.interrupted && result.reference.outcome == Outcome::kRunning) {
     std::fprintf(stderr,
-                 "ssc stability: interrupted before the reference trial finished; "
-                 "nothing written\n");
+                 "ssc stability: interrupted before the reference trial finished; no table "
+                 "written (the finished trials are in %s: run the same command again to "
+                 "resume)\n",
+                 spec.trials_csv.c_str());
     return 130;
   }
   PrintStabilityTable(result);
@@ -97,8 +110,8 @@ int RunStabilityCommand(int argc, char** argv) {
   if (result.interrupted) {
     std::fprintf(stderr,
                  "ssc stability: interrupted after %zu of %d trials (the reference above, the "
-                 "others in %s), without the largest steps (they need every trial; the study "
-                 "does not resume)\n",
+                 "others in %s), without the largest steps (they need every trial; run the "
+                 "same command again to resume)\n",
                  result.rows.size() + 1, result.trials, csv.c_str());
     return 130;
   }

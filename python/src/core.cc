@@ -1120,11 +1120,12 @@ NB_MODULE(_core, m) {
         if (summary.interrupted) {
           Interrupted("objects interrupted: " + std::to_string(summary.finished) + " of " +
                       std::to_string(summary.trials) + " trials finished, their rows are in " +
-                      summary.table_csv + " (the study does not resume)");
+                      summary.table_csv + "; call it again to resume");
         }
         return Dict({{"csv", nb::cast(summary.table_csv)},
                      {"paths_dir", nb::cast(summary.paths_dir)},
-                     {"trials", nb::cast(summary.trials)}});
+                     {"trials", nb::cast(summary.trials)},
+                     {"skipped", nb::cast(summary.skipped)}});
       },
       "objects"_a = "all", "out_dir"_a = "out/objects", "seeds"_a = 1, "seed"_a = 1,
       "scene_kind"_a = "gantry", "pref"_a = law.p_ref_pa, "beta"_a = law.beta, "step_mm"_a = 0.5,

@@ -217,6 +217,78 @@ class ReliabilityTest(unittest.TestCase):
         else:
             self.assertIn("before the reference trial finished", err)
 
+    # ssc objects and ssc stability resume as ssc sweep does.
+
+    def test_objects_killed_midway_resumes_to_the_uninterrupted_rows(self):
+        args = ["objects", "--objects", "disk_d14,hole_d14,corner_a090", "--threads", "1",
+                "--no-plot"]
+        whole = os.path.join(self.tmp, "objects_whole")
+        self.assertEqual(run(args + ["--out", whole]).returncode, 0)
+        out = os.path.join(self.tmp, "objects_killed")
+        table = os.path.join(out, "objects.csv")
+        p = subprocess.Popen([SSC] + args + ["--out", out], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True)
+        self.assertIn("seed 1", p.stdout.readline())  # a trial's line: its row is in
+        p.kill()  # SIGKILL: no handler runs, only what was appended stays
+        p.communicate(timeout=60)
+        kept = rows(table)
+        self.assertTrue(1 <= len(kept) < 3, kept)
+        r = run(args + ["--out", out])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("%d of 3 trials already in" % len(kept), r.stdout)
+        self.assertEqual(r.stdout.count(" seed 1 "), 3 - len(kept))  # only the others ran
+        final = rows(table)
+        timing = ("step_cost_us",)
+        same = lambda t: [{k: v for k, v in x.items() if k not in timing} for x in t]
+        self.assertEqual(same(final), same(rows(os.path.join(whole, "objects.csv"))))
+        for x in kept:  # the rows of the killed run, not recomputed
+            self.assertIn(x, final)
+        # A row this run cannot have made is dropped, named, and its trial alone rerun.
+        with open(table) as f:
+            lines = f.read().splitlines()
+        edited = lines[1].split(",")
+        edited[3] = "7"
+        with open(table, "w") as f:
+            f.write("\n".join([lines[0], ",".join(edited)] + lines[2:]) + "\n")
+        r = run(args + ["--out", out])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("seed '7' is not one of this run's", r.stderr)
+        self.assertEqual(r.stdout.count(" seed 1 "), 1)
+        self.assertEqual(same(rows(table)), same(final))
+        # Other options would mix rows: refused, naming the difference.
+        r = run(args + ["--step", "0.6", "--out", out])
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("step_mm: 0.5 in the file, 0.6 now", r.stderr)
+        self.assertEqual(leftovers(out), [])
+
+    def test_stability_resumes_from_its_trials_file(self):
+        args = ["stability", "--scene", "disk_benchmark_fast", "--steps-ms", "4,8", "--threads",
+                "1"]
+        whole = os.path.join(self.tmp, "stability_whole")
+        self.assertEqual(run(args + ["--out", whole]).returncode, 0)
+        out = os.path.join(self.tmp, "stability_cut")
+        shutil.copytree(whole, out)
+        trials = os.path.join(out, "stability_trials.csv")
+        with open(trials) as f:
+            lines = f.read().splitlines()
+        self.assertEqual(len(lines), 1 + 9)  # the reference and 4 integrators x 2 steps
+        # Cut as a killed run leaves it: three rows whole, the fourth torn.
+        with open(trials, "w") as f:
+            f.write("\n".join(lines[:4]) + "\n" + lines[4][:20])
+        os.remove(os.path.join(out, "stability.csv"))
+        r = run(args + ["--out", out])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("dropped 1 torn or malformed line", r.stderr)
+        self.assertIn("3 of 9 trials already in", r.stdout)
+        with open(trials) as f:
+            now = f.read().splitlines()
+        self.assertEqual(now[:4], lines[:4])  # the finished trials kept as they were
+        self.assertEqual(len(now), 10)
+        timing = ("wall_s",)
+        same = lambda t: [{k: v for k, v in x.items() if k not in timing} for x in t]
+        self.assertEqual(same(rows(os.path.join(out, "stability.csv"))),
+                         same(rows(os.path.join(whole, "stability.csv"))))
+
     # A search point that breaks a rule between the controller's keys is refused, not run.
 
     def test_tune_refuses_points_that_break_a_rule_between_keys(self):

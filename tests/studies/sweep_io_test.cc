@@ -138,6 +138,51 @@ TEST_F(SweepIoTest, ManifestKeepsNumbersAsNumbersAndRoundTripsItsTexts) {
   EXPECT_NE(error.find("'seed'"), std::string::npos) << error;
 }
 
+// Another study's table resumes by the sweep's rules: torn and malformed lines dropped, rows
+// the study refuses or repeats dropped, the rest kept by key; other options refused; one run
+// per table at a time; appends whole.
+TEST_F(SweepIoTest, AStudyTableResumesByTheSweepsRules) {
+  const std::string table = (dir_ / "objects.csv").string(), header = "object,seed,outcome";
+  const SweepManifest manifest = {{"seeds", "2"}};
+  auto check = [](const std::vector<std::string_view>& f, std::string* why) {
+    if (f[2] != "success" && f[2] != "timeout") {
+      *why = "outcome '" + std::string(f[2]) + "' is not a finished trial's";
+      return std::string();
+    }
+    return std::string(f[0]) + " " + std::string(f[1]);
+  };
+  std::string error;
+  {
+    ResumableTable t;
+    ASSERT_TRUE(t.Open(table, header, manifest, check, "test", &error)) << error;
+    EXPECT_EQ(t.kept(), 0u);
+    ASSERT_TRUE(t.Append("disk,1,success", &error)) << error;
+    ASSERT_TRUE(t.Append("disk,2,running", &error)) << error;
+    ASSERT_TRUE(t.Append("hole,1,timeout", &error)) << error;
+    ASSERT_TRUE(t.Append("disk,1,timeout", &error)) << error;  // a second row for disk 1
+    ResumableTable second;  // the same table while the first holds it
+    EXPECT_FALSE(second.Open(table, header, manifest, check, "test", &error));
+    EXPECT_NE(error.find("pid " + std::to_string(::getpid())), std::string::npos) << error;
+  }
+  std::ofstream(table, std::ios::app) << "hole,2,succ";  // torn
+  {
+    ResumableTable t;
+    ASSERT_TRUE(t.Open(table, header, manifest, check, "test", &error)) << error;
+    EXPECT_EQ(t.kept(), 2u);
+    EXPECT_EQ(t.Kept("disk 1"), "disk,1,success");  // the first row for a key wins
+    EXPECT_EQ(t.Kept("hole 1"), "hole,1,timeout");
+    EXPECT_EQ(t.Kept("disk 2"), "");  // not finished: runs again
+    ASSERT_TRUE(t.Append("hole,2,success", &error)) << error;
+  }
+  std::ifstream in(table);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), header + "\ndisk,1,success\nhole,1,timeout\nhole,2,success\n");
+  ResumableTable other;
+  EXPECT_FALSE(other.Open(table, header, {{"seeds", "3"}}, check, "test", &error));
+  EXPECT_NE(error.find("seeds: 2 in the file, 3 now"), std::string::npos) << error;
+}
+
 TEST_F(SweepIoTest, ResumingWithOtherOptionsIsRefusedNamingTheDifference) {
   const SweepManifest first = {{"seed", "1"}, {"scene", "gantry"}, {"timeout_s", "120"}};
   std::string error;
