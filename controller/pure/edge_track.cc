@@ -64,12 +64,13 @@ bool FitLine(const V2* local, std::size_t n, double* m, double* c) {
   return true;
 }
 
-// `fast` at start_step_mm, whatever the differential's strength (no re-tare of its own: it
-// gets the tared readings).
+// `fast` at start_step_mm and start_lateral_gain, whatever the differential's strength (no re-tare
+// of its own: it gets the tared readings).
 FastFollowingParams StartParams(const EdgeTrackParams& p) {
   FastFollowingParams f;
   f.step_max_mm = f.step_min_mm = p.start_step_mm;
   f.strength_pa = 0;
+  f.lateral_gain = p.start_lateral_gain;
   return f;
 }
 
@@ -198,7 +199,8 @@ double InsetFromMeanVacuumMm(double p_mean_pa) {
 }
 
 EdgeTrackController::EdgeTrackController(const ControllerContext& context, const EdgeTrackParams& p)
-    : law_(context.law),
+    : context_(context),
+      law_(context.law),
       period_s_(context.control_period_s),
       p_(p),
       start_(context, StartParams(p)) {}
@@ -279,10 +281,25 @@ ControllerCommand EdgeTrackController::Step(const ControllerInput& in) {
     std::copy(inset_mm_.begin() + 1, inset_mm_.begin() + capacity, inset_mm_.begin());
     --count_;
   }
+  const double inset_mm = InsetFromMeanVacuumMm(law.p_mean_pa);
+  if (tracking_ && p_.restart_mm > 0) {
+    // The reading disagrees with the fit where the tool now is: a corner the fit could not see
+    // coming. Start afresh from here, by the pressure direction.
+    const double s = edge_.Project(tool_mm);
+    const double side = law_.side == FollowSide::kObjectOnLeft ? 1 : -1;
+    const double fit_inset_mm =
+        side * Dot(Sub(tool_mm, edge_.PointAt(s)), Left(edge_.TangentAt(s)));
+    if (std::fabs(inset_mm - fit_inset_mm) > p_.restart_mm) {
+      count_ = 0;
+      start_from_ = in.iteration;
+      start_ = FastFollowingController(context_, StartParams(p_));
+    }
+  }
   tool_mm_[count_] = tool_mm;
-  inset_mm_[count_] = InsetFromMeanVacuumMm(law.p_mean_pa);
+  inset_mm_[count_] = inset_mm;
   ++count_;
-  tracking_ = static_cast<double>(in.iteration) >= p_.start_iterations && TrackStep(tool_mm, R, &c);
+  tracking_ = static_cast<double>(in.iteration - start_from_) >= p_.start_iterations &&
+              TrackStep(tool_mm, R, &c);
   if (!tracking_) c = start_.Step(tared);
   // Where this command sends the tool (world, mm): the next target advances from here.
   goal_mm_ = {tool_mm[0] + 1e3 * (R[0] * c.step_m[0] + R[1] * c.step_m[1]),
@@ -299,7 +316,8 @@ ControllerType EdgeTrackControllerType() {
       "read from the mean vacuum; absolute targets advanced along the fit, so landing misses "
       "do not add up (starts as `fast`)",
       {{"speed_mm_s", "mm/s", 1, 200,
-        "the target's advance along the edge per nominal control period", &P::speed_mm_s},
+        "the target's advance along the edge (this times the nominal period per iteration)",
+        &P::speed_mm_s},
        {"inset_mm", "mm", -2, 6, "the target's inset of the cup centre inside the edge",
         &P::inset_mm},
        {"fit_points", "1", 3, 16, "the last positions in the edge fit (a whole number)",
@@ -307,10 +325,15 @@ ControllerType EdgeTrackControllerType() {
        {"start_iterations", "1", 0, 50, "iterations run by `fast` before the fit takes over",
         &P::start_iterations},
        {"start_step_mm", "mm", 0.5, 30, "`fast`'s step over those iterations", &P::start_step_mm},
+       {"start_lateral_gain", "1", 0, 3, "`fast`'s lateral_gain over those iterations",
+        &P::start_lateral_gain},
        {"max_lead_mm", "mm", 0, 50, "the target's lead along the edge ahead of the tool, at most",
         &P::max_lead_mm},
        {"arm_reach", "1", 0.2, 1,
         "the share of the way to its goal the arm covers in one control period", &P::arm_reach},
+       {"restart_mm", "mm", 0, 20,
+        "a reading this far from the fit's inset restarts from `fast` (a corner; 0: never)",
+        &P::restart_mm},
        {"circle_points", "1", 3, 16,
         "positions needed before the fit may curve (fewer: a straight line)", &P::circle_points},
        {"max_across_mm", "mm", 0.1, 20, "the step across the fitted edge, at most",

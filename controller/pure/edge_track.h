@@ -14,13 +14,16 @@
 //              by speed_mm_s x the nominal period (at most max_lead_mm ahead of the tool's own
 //              place); the step is that target minus the measured tool.
 // The first start_iterations, before enough positions exist, run `fast` at start_step_mm on the
-// same readings. With tare_in_air, the chambers' residual tare offsets are measured in air on
-// the way down (AirTare) and subtracted from every reading.
+// same readings; so do those after a restart (restart_mm > 0: the reading's inset this far from
+// the fit's where the tool is, as at a corner the fit could not see coming). With tare_in_air, the
+// chambers' residual tare offsets are measured in air on the way down (AirTare) and subtracted from
+// every reading.
 #ifndef SSC_CONTROLLER_PURE_EDGE_TRACK_H_
 #define SSC_CONTROLLER_PURE_EDGE_TRACK_H_
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 #include "controller/pure/air_tare.h"
 #include "controller/pure/contour_law.h"
@@ -30,18 +33,20 @@
 namespace ssc {
 
 struct EdgeTrackParams {
-  double speed_mm_s = 75;        // the target's advance along the edge per nominal period
-  double inset_mm = 1.25;        // the target's inset of the cup centre inside the edge
-  double fit_points = 8;         // positions in the edge fit
-  double start_iterations = 6;   // iterations run by `fast` before the fit takes over
-  double start_step_mm = 3;      // `fast`'s step over those iterations
-  double max_lead_mm = 25;       // the target's lead along the edge ahead of the tool, at most
-  double arm_reach = 0.5;        // the share of the way to its goal the arm covers in a period
-  double circle_points = 5;      // positions needed before the fit may curve
-  double max_across_mm = 5;      // the step across the fitted edge, at most
-  double min_radius_mm = 5;      // the fitted edge turns no tighter than this
-  double tare_in_air = 1;        // 1: re-tare the chambers in air on the way down (AirTare)
-  double tare_clearance_mm = 4;  // ... from the readings this far above the hold height
+  double speed_mm_s = 75;           // the target's advance along the edge, per second
+  double inset_mm = 1.25;           // the target's inset of the cup centre inside the edge
+  double fit_points = 8;            // positions in the edge fit
+  double start_iterations = 6;      // iterations run by `fast` before the fit takes over
+  double start_step_mm = 3;         // `fast`'s step over those iterations
+  double start_lateral_gain = 0.6;  // ... and its lateral_gain
+  double max_lead_mm = 25;          // the target's lead along the edge ahead of the tool, at most
+  double arm_reach = 0.5;           // the share of the way to its goal the arm covers in a period
+  double restart_mm = 0;            // a reading this far from the fit's inset restarts (0: never)
+  double circle_points = 5;         // positions needed before the fit may curve
+  double max_across_mm = 5;         // the step across the fitted edge, at most
+  double min_radius_mm = 5;         // the fitted edge turns no tighter than this
+  double tare_in_air = 1;           // 1: re-tare the chambers in air on the way down (AirTare)
+  double tare_clearance_mm = 4;     // ... from the readings this far above the hold height
 };
 
 // A piece of edge near the tool: a point on it, the unit tangent there in the sense of travel
@@ -86,6 +91,7 @@ class EdgeTrackController : public Controller {
  private:
   bool TrackStep(const std::array<double, 2>& tool_mm, const std::array<double, 9>& R,
                  ControllerCommand* c);
+  ControllerContext context_;
   ContourLawParams law_;
   double period_s_;
   EdgeTrackParams p_;
@@ -98,6 +104,7 @@ class EdgeTrackController : public Controller {
   std::array<double, kMaxFitPoints> inset_mm_{};
   std::size_t count_ = 0;
   bool have_goal_ = false, tracking_ = false;
+  std::uint64_t start_from_ = 0;     // the iteration `fast` last started at
   std::array<double, 2> goal_mm_{};  // where the last command sent the tool, world
   EdgeArc edge_;
 };

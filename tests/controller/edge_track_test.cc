@@ -222,6 +222,38 @@ TEST(EdgeTrackTest, TheLeadAheadOfTheToolIsCapped) {
   }
 }
 
+// A reading far from the fit's inset where the tool is (a corner the fit could not foresee)
+// hands the steering back to `fast` for start_iterations, with restart_mm set; never without.
+TEST(EdgeTrackTest, AReadingFarFromTheFitRestartsFromFast) {
+  ControllerContext context;
+  EdgeTrackParams p;
+  p.start_iterations = 3;
+  p.start_step_mm = 7.5;
+  p.tare_in_air = 0;
+  for (double restart_mm : {0.0, 1.0}) {
+    p.restart_mm = restart_mm;
+    EdgeTrackController c(context, p);
+    const double inset = InsetFromMeanVacuumMm(57);
+    for (std::uint64_t i = 0; i < 8; ++i) c.Step(At(i, {7.5 * static_cast<double>(i), inset}, 57));
+    ASSERT_TRUE(c.tracking());
+    // Still on the line, but the cup reads 3 mm deeper than the fit says.
+    c.Step(At(8, {60, inset}, 1650));
+    EXPECT_EQ(c.tracking(), restart_mm == 0) << restart_mm;
+    // Within 0.5 mm of the fit, no restart: the reading agrees.
+    EdgeTrackController calm(context, p);
+    for (std::uint64_t i = 0; i < 8; ++i)
+      calm.Step(At(i, {7.5 * static_cast<double>(i), inset}, 57));
+    calm.Step(At(8, {60, inset}, 71));
+    EXPECT_TRUE(calm.tracking());
+    if (restart_mm == 0) continue;
+    c.Step(At(9, {63, inset}, 57));
+    c.Step(At(10, {66, inset}, 57));
+    EXPECT_FALSE(c.tracking());  // `fast` for iterations 8, 9, 10
+    c.Step(At(11, {69, inset}, 57));
+    EXPECT_TRUE(c.tracking());
+  }
+}
+
 TEST(EdgeTrackTest, NonFiniteInputHoldsStillAndStartsAfresh) {
   ControllerContext context;
   EdgeTrackParams p;
