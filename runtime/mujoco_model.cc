@@ -11,14 +11,13 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
-#include <regex>
 #include <sstream>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "common/input_file.h"
-#include "common/xml_text.h"
+#include "common/scene_files.h"
 #include "plugin/chamber_pressure_config.h"
 
 namespace ssc {
@@ -136,40 +135,19 @@ std::string g_resource_dir;  // SetResourceDir
 
 // Takes a compiled model; refuses (deletes it, null + *error prefixed by `label`) a bad time step
 // or a plugin that rejects its config when data is made.
-// Every file a scene names (<include>, <model>, <mesh>, <texture>, <hfield>, <skin> file=...),
-// recursively through included XML: one that exists but is not a regular file (a FIFO would
-// block MuJoCo's reader forever, a device never end) is refused naming the scene line. Missing
-// files are left to MuJoCo's own message.
-std::string CheckSceneFiles(const std::filesystem::path& file,
-                            const std::filesystem::path& main_dir, int depth) {
-  namespace fs = std::filesystem;
-  if (depth > 16) return file.string() + ": includes nested deeper than 16 files";
-  std::string text;
-  ReadXmlWithoutComments(file, &text);  // unreadable: left to MuJoCo's message
-  static const std::regex file_attr(R"(<(\w+)\b[^>]*?\bfile\s*=\s*["']([^"']+)["'])");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), file_attr);
-       it != std::sregex_iterator(); ++it) {
-    const std::string tag = (*it)[1].str();
-    const fs::path name = (*it)[2].str();
-    std::error_code ec;
-    // MuJoCo resolves from the main file's folder (assets also from meshdir/texturedir, where a
-    // name that is not found here is left to MuJoCo); try the including file's folder too.
-    std::vector<fs::path> candidates = {name.is_absolute() ? name : main_dir / name};
-    if (!name.is_absolute()) candidates.push_back(file.parent_path() / name);
-    for (const fs::path& candidate : candidates) {
-      if (!fs::exists(candidate, ec)) continue;
-      if (const std::string why = CheckInputFile(candidate.string()); !why.empty()) {
-        const long line = 1 + std::count(text.begin(), text.begin() + it->position(), '\n');
-        return file.string() + ":" + std::to_string(line) + ": <" + tag + " file=\"" +
-               name.string() + "\">: " + candidate.string() + " " + why;
+// Every file a scene names (common/scene_files.h): one that exists but is not a regular file (a
+// FIFO would block MuJoCo's reader forever, a device never end) is refused naming the scene
+// line. Missing files are left to MuJoCo's own message.
+std::string CheckSceneFiles(const std::filesystem::path& main_file) {
+  return WalkSceneFiles(main_file, [](const SceneFileRef& ref) {
+    for (const std::filesystem::path& place : ref.found) {
+      if (const std::string why = CheckInputFile(place.string()); !why.empty()) {
+        return ref.from.string() + ":" + std::to_string(ref.line) + ": <" + ref.tag + " file=\"" +
+               ref.name.string() + "\">: " + place.string() + " " + why;
       }
-      if ((tag == "include" || tag == "model") && candidate.extension() == ".xml") {
-        if (std::string e = CheckSceneFiles(candidate, main_dir, depth + 1); !e.empty()) return e;
-      }
-      break;
     }
-  }
-  return "";
+    return std::string();
+  });
 }
 
 // The element kind whose count sizes an mjModel array ("nbody" -> body).
@@ -403,8 +381,7 @@ ModelPtr LoadModel(const std::string& path, std::string* error) {
     *error = e;
     return nullptr;
   }
-  if (std::string e = CheckSceneFiles(path, std::filesystem::path(path).parent_path(), 0);
-      !e.empty()) {
+  if (std::string e = CheckSceneFiles(path); !e.empty()) {
     *error = e;
     return nullptr;
   }

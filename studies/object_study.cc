@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "common/output_file.h"
@@ -53,15 +54,24 @@ std::string RowKey(const std::string& object, std::uint64_t seed) {
 }
 
 // The options that define the table's rows: resuming with other ones would mix their rows. The
-// object scenes' text stands for the models (they are written from the code each run).
+// object scenes are written from the code each run; they and every file they pull in (the tool
+// and arm models, ...) stand for the compiled models: the files in the scenes folder as one hash,
+// each other file under its own key, so that a refusal names the file that changed.
 SweepManifest ObjectManifest(const ObjectStudySpec& spec, const std::string& scene_dir) {
   std::string names, scenes;
+  std::map<std::string, std::string> pulled_in;
+  const fs::path dir = fs::absolute(scene_dir).lexically_normal();
   for (const ObjectSpec& s : spec.objects) {
     names += (names.empty() ? "" : ",") + s.name;
-    std::ifstream in(fs::path(scene_dir) / ObjectSceneFile(s, spec.scene_kind), std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    scenes += text.str();
+    for (const auto& [path, hash] :
+         SceneFileHashes((dir / ObjectSceneFile(s, spec.scene_kind)).string())) {
+      const fs::path inside = fs::path(path).lexically_relative(dir);
+      if (!inside.empty() && *inside.begin() != "..") {
+        scenes += inside.string() + " " + hash + "\n";
+      } else {
+        pulled_in["file " + path] = hash;
+      }
+    }
   }
   char hash[32];
   std::snprintf(hash, sizeof(hash), "%016llx",
@@ -77,6 +87,7 @@ SweepManifest ObjectManifest(const ObjectStudySpec& spec, const std::string& sce
                      {"step_mm", FormatNumber(spec.law.step_mm)},
                      {"effects", FormatRobotEffects(spec.effects)}};
   if (!spec.controller.IsPublished()) m["controller"] = spec.controller.Text();
+  m.insert(pulled_in.begin(), pulled_in.end());
   return m;
 }
 

@@ -18,6 +18,7 @@
 
 #include "common/input_file.h"
 #include "common/output_file.h"
+#include "common/scene_files.h"
 #include "common/strict_number.h"
 
 namespace ssc {
@@ -538,6 +539,36 @@ std::uint64_t Fnv1a64(const void* data, std::size_t size) {
   std::uint64_t h = 1469598103934665603ULL;
   for (std::size_t i = 0; i < size; ++i) h = (h ^ p[i]) * 1099511628211ULL;
   return h;
+}
+
+std::map<std::string, std::string> SceneFileHashes(const std::string& scene_path) {
+  namespace fs = std::filesystem;
+  std::map<std::string, std::string> hashes;
+  auto hash_file = [&hashes](const fs::path& path) {
+    if (hashes.count(path.string())) return;
+    std::string& h = hashes[path.string()];
+    if (const std::string why = CheckInputFile(path.string()); !why.empty()) {
+      h = why;  // never read: a FIFO would block
+      return;
+    }
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string bytes = text.str();
+    char hex[32];
+    std::snprintf(hex, sizeof(hex), "%016llx",
+                  static_cast<unsigned long long>(Fnv1a64(bytes.data(), bytes.size())));
+    h = hex;
+  };
+  const fs::path scene = fs::absolute(scene_path).lexically_normal();
+  hash_file(scene);
+  const std::string stopped = WalkSceneFiles(scene, [&](const SceneFileRef& ref) {
+    if (ref.found.empty()) hash_file((ref.from.parent_path() / ref.name).lexically_normal());
+    for (const fs::path& place : ref.found) hash_file(place);
+    return std::string();
+  });
+  if (!stopped.empty()) hashes[scene.string() + " walk"] = stopped;
+  return hashes;
 }
 
 }  // namespace ssc

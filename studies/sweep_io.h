@@ -181,6 +181,13 @@ class ResumableTable {
 // 64-bit FNV-1a, for the model hash.
 std::uint64_t Fnv1a64(const void* data, std::size_t size);
 
+// What a scene's rows depend on, read from its files without compiling it: the scene and every
+// file it pulls in (common/scene_files.h: includes and attached models recursively, meshes,
+// textures, ...), as absolute path -> the FNV-1a hash of its bytes ("%016llx"). A file that cannot
+// be read maps to why (common/input_file.h: "no such file", a FIFO is never read), and a walk that
+// stops (nested too deep) records its message under the scene's path + " walk".
+std::map<std::string, std::string> SceneFileHashes(const std::string& scene_path);
+
 }  // namespace ssc
 
 #endif  // SSC_STUDIES_SWEEP_IO_H_

@@ -261,6 +261,37 @@ class ReliabilityTest(unittest.TestCase):
         self.assertIn("step_mm: 0.5 in the file, 0.6 now", r.stderr)
         self.assertEqual(leftovers(out), [])
 
+    def test_objects_refuses_rows_made_with_another_tool_model(self):
+        # The object scenes include the tool model from the resource folder: a copy of it here.
+        res = os.path.join(self.tmp, "tool_model_resources")
+        for folder in ("models", "scenes"):
+            shutil.copytree(os.path.join(SRC, folder), os.path.join(res, folder))
+        env = dict(os.environ, SSC_RESOURCE_DIR=res)
+        out = os.path.join(self.tmp, "objects_tool_model")
+        args = ["objects", "--objects", "disk_d14", "--threads", "1", "--no-plot", "--out", out]
+        r = run(args, env=env)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        table = os.path.join(out, "objects.csv")
+        made = rows(table)
+        self.assertEqual(len(made), 1)
+        r = run(args, env=env)  # unchanged files: the row is kept, no trial runs
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("1 of 1 trials already in", r.stdout)
+        # Only a value in the included tool model changes: the scene XML is the same text.
+        tool = os.path.join(res, "models", "ssc_tool.xml")
+        with open(tool) as f:
+            xml = f.read()
+        old = 'friction="0.4 0.005 0.0001"'
+        self.assertIn(old, xml)
+        with open(tool, "w") as f:
+            f.write(xml.replace(old, 'friction="0.6 0.005 0.0001"', 1))
+        r = run(args, env=env)
+        self.assertEqual(r.returncode, 1, r.stdout)
+        self.assertIn("holds rows made with other options (file " + tool, r.stderr)
+        self.assertNotIn("already in", r.stdout)
+        self.assertEqual(rows(table), made)  # refused whole: the table is left as it was
+        self.assertEqual(leftovers(out), [])
+
     def test_stability_resumes_from_its_trials_file(self):
         args = ["stability", "--scene", "disk_benchmark_fast", "--steps-ms", "4,8", "--threads",
                 "1"]

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "common/output_file.h"
 #include "studies/trial_io.h"
@@ -322,6 +323,47 @@ TEST_F(SweepIoTest, TheDefaultSceneIsRecordedButNotCompared) {
   later["scene"] = "light";
   EXPECT_FALSE(CheckOrWriteSweepManifest(csv_, true, later, &error));
   EXPECT_NE(error.find("scene: gantry in the file, light now"), std::string::npos) << error;
+}
+
+// A scene's fingerprint covers what MuJoCo reads for it, found without compiling: a nested
+// include, the model it attaches (from the attaching file's folder), a mesh from the compiler's
+// meshdir; a file named but absent is recorded too, and a commented-out include is not.
+TEST_F(SweepIoTest, SceneFileHashesCoverEveryFilePulledIn) {
+  const fs::path scene = dir_ / "scene";
+  fs::create_directories(scene / "parts");
+  fs::create_directories(scene / "meshes");
+  auto put = [](const fs::path& p, const std::string& text) {
+    std::ofstream(p, std::ios::binary) << text;
+  };
+  put(scene / "main.xml",
+      "<mujoco><compiler meshdir=\"meshes\"/><include file=\"parts/arm.xml\"/>\n"
+      "<!-- <include file=\"old.xml\"/> -->\n"
+      "<asset><texture name=\"t\" file=\"grid.png\"/></asset></mujoco>");
+  put(scene / "parts" / "arm.xml",
+      "<mujoco><asset><model name=\"tool\" file=\"tool.xml\"/><mesh file=\"cup.stl\"/>"
+      "</asset></mujoco>");
+  put(scene / "parts" / "tool.xml", "<mujoco><geom size=\"0.4\"/></mujoco>");
+  put(scene / "meshes" / "cup.stl", "solid cup");
+  put(scene / "old.xml", "<mujoco/>");
+  const auto before = SceneFileHashes((scene / "main.xml").string());
+  const fs::path abs = fs::absolute(scene).lexically_normal();
+  const std::vector<fs::path> files = {"main.xml", "parts/arm.xml", "parts/tool.xml",
+                                       "meshes/cup.stl", "grid.png"};
+  ASSERT_EQ(before.size(), files.size());
+  for (const fs::path& f : files) EXPECT_EQ(before.count((abs / f).string()), 1u) << f;
+  EXPECT_EQ(before.at((abs / "grid.png").string()), "no such file");
+  // Each file changed alone changes its own hash and no other.
+  for (const fs::path& f : {fs::path("parts/tool.xml"), fs::path("meshes/cup.stl")}) {
+    const auto was = SceneFileHashes((scene / "main.xml").string());
+    put(scene / f, "changed " + f.string());
+    const auto now = SceneFileHashes((scene / "main.xml").string());
+    for (const auto& [path, hash] : now) {
+      EXPECT_EQ(hash != was.at(path), path == (abs / f).string()) << path;
+    }
+  }
+  put(scene / "grid.png", "png");
+  EXPECT_NE(SceneFileHashes((scene / "main.xml").string()).at((abs / "grid.png").string()),
+            "no such file");
 }
 
 }  // namespace
