@@ -211,7 +211,7 @@ void EdgeTrackController::ObserveBeforeFollowing(const ControllerInput& in) {
 
 bool EdgeTrackController::TrackStep(const V2& tool_mm, const std::array<double, 9>& R,
                                     ControllerCommand* c) {
-  const std::size_t n = std::min(count_, static_cast<std::size_t>(p_.fit_points));
+  const std::size_t n = std::min(count_, static_cast<std::size_t>(std::lround(p_.fit_points)));
   const V2* pts = tool_mm_.data() + (count_ - n);
   const double* insets = inset_mm_.data() + (count_ - n);
   // Fewer positions than circle_points: their scatter says nothing of the curvature.
@@ -274,8 +274,8 @@ ControllerCommand EdgeTrackController::Step(const ControllerInput& in) {
   }
   const ContourStep law = ComputeContourStep(tared.p_pa, law_);
   const V2 tool_mm = {1e3 * in.tool_m[0], 1e3 * in.tool_m[1]};
-  const std::size_t capacity =
-      std::clamp(static_cast<std::size_t>(p_.fit_points), std::size_t{3}, kMaxFitPoints);
+  const std::size_t capacity = std::clamp(static_cast<std::size_t>(std::lround(p_.fit_points)),
+                                          std::size_t{3}, kMaxFitPoints);
   if (count_ == capacity) {
     std::copy(tool_mm_.begin() + 1, tool_mm_.begin() + capacity, tool_mm_.begin());
     std::copy(inset_mm_.begin() + 1, inset_mm_.begin() + capacity, inset_mm_.begin());
@@ -320,7 +320,7 @@ ControllerType EdgeTrackControllerType() {
         &P::speed_mm_s},
        {"inset_mm", "mm", -2, 6, "the target's inset of the cup centre inside the edge",
         &P::inset_mm},
-       {"fit_points", "1", 3, 16, "the last positions in the edge fit (a whole number)",
+       {"fit_points", "1", 3, 16, "the last positions in the edge fit (rounded to a whole number)",
         &P::fit_points},
        {"start_iterations", "1", 0, 50, "iterations run by `fast` before the fit takes over",
         &P::start_iterations},
