@@ -705,6 +705,54 @@ TEST(DeferredSensorStepTest, AResultOnlyRunReadsTheSameFtAtEveryIteration) {
   }
 }
 
+// Our handler leaves out only MuJoCo's note that a flex M+K solve ran out of iterations and the
+// inertia warning raised right after it for that solve.
+TEST(MuJoCoMessagesTest, OnlyTheFlexSolveNoteAndItsInertiaWarningAreLeftOut) {
+  bool after = false;
+  EXPECT_TRUE(PrintsMuJoCoWarning("Nan, Inf or huge value in QACC at DOF 3.", &after));
+  EXPECT_FALSE(PrintsMuJoCoWarning(
+      "Flex stiffness is too ill-conditioned for the effective-metric block preconditioner: the "
+      "M+K solve ran out of iterations at a relative residual of 2.46e-01",
+      &after));
+  EXPECT_FALSE(PrintsMuJoCoWarning(
+      "Inertia matrix is too close to singular, or the effective-metric solve failed to "
+      "converge, at DOF 2. Check model. Time = 0.0000.",
+      &after));
+  // The same inertia warning on its own (a singular mass matrix) is printed.
+  EXPECT_TRUE(PrintsMuJoCoWarning(
+      "Inertia matrix is too close to singular, or the effective-metric solve failed to "
+      "converge, at DOF 2. Check model. Time = 0.0000.",
+      &after));
+  EXPECT_FALSE(PrintsMuJoCoWarning(
+      "Flex stiffness is too ill-conditioned for the effective-metric block preconditioner",
+      &after));
+  EXPECT_TRUE(PrintsMuJoCoWarning("Pre-allocated constraint buffer is full.", &after));
+  EXPECT_TRUE(PrintsMuJoCoWarning(
+      "Inertia matrix is too close to singular, or the effective-metric solve failed to "
+      "converge, at DOF 5. Check model.",
+      &after));
+}
+
+// The flex scene caps opt.iterations below what its M+K solve needs (docs/objects.md, "Cost of
+// the flex tier"): its trial steps without printing that note.
+TEST(TrialEndsTest, TheFlexSceneStepsWithoutTheFlexSolveNote) {
+  std::string error;
+  ModelPtr flex = LoadModel(SourceDir() + "/scenes/disk_benchmark_flex.xml", &error);
+  ASSERT_TRUE(flex) << error;
+  DataPtr d = MakeData(flex.get(), &error);
+  ASSERT_TRUE(d) << error;
+  testing::internal::CaptureStderr();  // MuJoCo prints a warning at its first raise: the reset
+  auto trial = ContourTrial::Create(flex.get(), d.get(), TrialConfig{}, false, &error);
+  if (trial) trial->Run(0.3);
+  const std::string printed = testing::internal::GetCapturedStderr();
+  ASSERT_TRUE(trial) << error;
+  if (d->warning[mjWARN_INERTIA].number == 0)
+    GTEST_SKIP() << "the scene's M+K solve no longer caps";
+  EXPECT_EQ(printed.find("ill-conditioned"), std::string::npos) << printed;
+  EXPECT_EQ(printed.find("too close to singular"), std::string::npos) << printed;
+  EXPECT_NE(trial->result().outcome, Outcome::kUnstable) << trial->result().detail;
+}
+
 TEST(TrialEndsTest, DivergingSimulationIsUnstableNotAControllerResult) {
   // A copy of the scene with a time step far beyond what the lip springs tolerate.
   mjModel* m = mj_copyModel(nullptr, Scene());
