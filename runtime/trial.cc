@@ -79,6 +79,9 @@ std::string TrialConfig::Validate() const {
   if (const std::string e = target.goal.Validate(); !e.empty()) return e;
   if (!Finite(timeout_s) || timeout_s <= 0 || timeout_s > 3600)
     return RangeError("timeout_s", timeout_s, "(0, 3600] s");
+  if (const std::string e = ValidateStallRule(thresholds.stall_mm, thresholds.stall_window_s);
+      !e.empty())
+    return e;
   if (control_period_s > timeout_s) {
     std::ostringstream os;
     os << "control_period_s = " << control_period_s << " s is longer than timeout_s = " << timeout_s
@@ -379,6 +382,12 @@ void ContourTrial::StartFollowing(double t, const Vec3& tool) {
   next_log_s_ = t;
   goal_start_ = {tool[0], tool[1]};
   goal_.Start(config_.target.goal, config_.target.edge, goal_start_);
+  StartStallWatch();
+}
+
+void ContourTrial::StartStallWatch() {
+  stall_.Start(1e-3 * config_.thresholds.stall_mm, config_.thresholds.stall_window_s,
+               follow_start_s_, goal_.progress_m());
 }
 
 void ContourTrial::Follow(double t, const Vec3& tool) {
@@ -469,10 +478,13 @@ void ContourTrial::RunIteration(double t, const Vec3& tool) {
   }
   const SampleCheck check = ClassifySample(thresholds, p, FtNormalForce(), goal_.status(),
                                            t - follow_start_s_, config_.timeout_s);
+  const bool stalled = stall_.Add(t, goal_.progress_m());
   if (check.outcome == Outcome::kSuccess || check.outcome == Outcome::kLostEdge) {
     Finish(check.outcome, goal_.Detail());
   } else if (check.outcome != Outcome::kRunning) {
     Finish(check.outcome, check.detail);
+  } else if (stalled) {
+    Finish(Outcome::kStalled, stall_.Detail());
   }
 }
 
@@ -594,6 +606,7 @@ void ContourTrial::ResumeAtFollowStart(const mjData* follow_start_data, const Fo
   effects_.set_lip_shear(s.lip_shear);
   goal_start_ = s.goal_start_m;
   goal_.Start(config_.target.goal, config_.target.edge, goal_start_);
+  StartStallWatch();
   phase_ = TrialPhase::kFollow;
 }
 

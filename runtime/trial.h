@@ -207,6 +207,8 @@ class ContourTrial : public ControlCallback {
   // One control iteration: read the host's pressures, ask the controller, take the step, check.
   void RunIteration(double t, const Vec3& tool);
   void StartFollowing(double t, const Vec3& tool);
+  // The stall rule from the follow start (TrialThresholds::stall_mm, stall_window_s).
+  void StartStallWatch();
   // The lip's footprint drags on the object while the body slides over it.
   void TrackLipShear(const Vec3& tool);
   // Moves the servo's set point toward `point` at the move speed, at height z; true once the
@@ -248,6 +250,7 @@ class ContourTrial : public ControlCallback {
   Vec3 start_point_{};
   double reach_wait_since_s_ = -1;  // when the tool began waiting to reach a set point
   GoalTracker goal_;
+  StallWatch stall_;
   ContourStep last_step_{};
   std::array<double, 2> last_step_world_{};
   // The step as the arm lands it (robot effects: step error), tool frame -> world.

@@ -85,7 +85,9 @@ SweepManifest ObjectManifest(const ObjectStudySpec& spec, const std::string& sce
                      {"pref_pa", FormatNumber(spec.law.p_ref_pa)},
                      {"beta", FormatNumber(spec.law.beta)},
                      {"step_mm", FormatNumber(spec.law.step_mm)},
-                     {"effects", FormatRobotEffects(spec.effects)}};
+                     {"effects", FormatRobotEffects(spec.effects)},
+                     {"stall_mm", FormatNumber(spec.stall.stall_mm)},
+                     {"stall_window_s", FormatNumber(spec.stall.window_s)}};
   if (!spec.controller.IsPublished()) m["controller"] = spec.controller.Text();
   m.insert(pulled_in.begin(), pulled_in.end());
   return m;
@@ -155,7 +157,7 @@ std::string RunObjectJob(const ObjectStudySpec& spec, const ObjectJob& job,
     row.result.detail = load_error;
   } else {
     row = RunObjectTrial(model.get(), object, spec.law, spec.effects, job.seed, true,
-                         spec.controller);
+                         spec.controller, spec.stall);
     // The cup-centre path (follow phase), for the plots; the log itself is not kept.
     // Plot inputs, each written whole; a failure is reported and the trial's row kept.
     OutputFile path(

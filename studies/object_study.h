@@ -26,6 +26,7 @@ struct ObjectStudySpec {
   ContourLawParams law;  // the published primitive-geometry controller: dL 0.5 mm
   RobotEffectsParams effects = FittedRobotEffects();  // the robot effects (docs/fidelity.md)
   ControllerChoice controller;  // what decides while following (the published law by default)
+  StallRule stall;              // when a trial held in place ends (window 0: never)
   int threads = 1;
   std::string out_dir;      // scenes in OUT/scenes, paths in OUT/paths
   bool write_only = false;  // only the scenes and contours

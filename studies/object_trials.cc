@@ -66,7 +66,7 @@ ObjectSceneKind ObjectSceneKindOfScene(const std::string& scene) {
   return ObjectSceneKind::kArm;
 }
 
-TrialConfig ObjectTrialConfig(const ObjectSpec& spec, TrialConfig base) {
+TrialConfig ObjectTrialConfig(const ObjectSpec& spec, TrialConfig base, const StallRule& stall) {
   TrialConfig c = std::move(base);
   const ContourLawParams& law = c.law;
   const ObjectTrialSetup& setup = spec.trial;
@@ -87,13 +87,16 @@ TrialConfig ObjectTrialConfig(const ObjectSpec& spec, TrialConfig base) {
   const double path_m =
       closed ? spec.edge.Length() : std::max(0.01, setup.goal.goal_arc_m - setup.start_arc_m);
   c.timeout_s = std::min(3600.0, 30.0 + 2.5 * path_m / speed_m_s);
+  // Held in place, its outcome is decided: the stall rule ends it (docs/objects.md, "Outcomes").
+  c.thresholds.stall_mm = stall.stall_mm;
+  c.thresholds.stall_window_s = stall.window_s;
   return c;
 }
 
 ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,
                               const ContourLawParams& law, const RobotEffectsParams& effects,
-                              std::uint64_t seed, bool keep_log,
-                              const ControllerChoice& controller) {
+                              std::uint64_t seed, bool keep_log, const ControllerChoice& controller,
+                              const StallRule& stall) {
   ObjectTrialRow row;
   row.object = spec.name;
   row.kind = ObjectKindName(spec.kind);
@@ -105,7 +108,7 @@ ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,
   base.seed = seed;
   base.effects = effects;
   base.controller = controller;
-  row.result = RunTrial(model, ObjectTrialConfig(spec, base), keep_log, &error);
+  row.result = RunTrial(model, ObjectTrialConfig(spec, base, stall), keep_log, &error);
   const double steps = row.result.sim_time_s / model->opt.timestep;
   row.step_cost_us = steps > 0 ? row.result.wall_time_s / steps * 1e6 : 0;
   row.approach_compression_mm = (spec.trial.surface_top_z_m - row.result.hold_height_m) * 1e3;

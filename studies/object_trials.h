@@ -32,10 +32,19 @@ std::string ObjectSceneFile(const ObjectSpec& spec, ObjectSceneKind kind);
 // gantry for *gantry*, *light* and *fast*, else the arm.
 ObjectSceneKind ObjectSceneKindOfScene(const std::string& scene);
 
+// The object trials' stall rule (TrialThresholds::stall_mm, stall_window_s; docs/objects.md,
+// "Outcomes"): window 0 turns it off.
+struct StallRule {
+  double stall_mm = kObjectStallMm;
+  double window_s = kObjectStallWindowS;
+};
+
 // Trial settings for an object: `base` (its law, seed, effects, loop and servo) with the target
 // from the object's ObjectTrialSetup (landing and start points, goal) and exact edge (metrics,
-// tracked arc position), and a follow timeout from the edge length at the expected speed.
-TrialConfig ObjectTrialConfig(const ObjectSpec& spec, TrialConfig base);
+// tracked arc position), a follow timeout from the edge length at the expected speed, and the
+// stall rule.
+TrialConfig ObjectTrialConfig(const ObjectSpec& spec, TrialConfig base,
+                              const StallRule& stall = StallRule());
 
 struct ObjectTrialRow {
   std::string object, kind;
@@ -56,7 +65,8 @@ struct ObjectTrialRow {
 ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,
                               const ContourLawParams& law, const RobotEffectsParams& effects,
                               std::uint64_t seed, bool keep_log,
-                              const ControllerChoice& controller = ControllerChoice());
+                              const ControllerChoice& controller = ControllerChoice(),
+                              const StallRule& stall = StallRule());
 
 std::string ObjectTableHeader();
 std::string ObjectTableRow(const ObjectTrialRow& row);

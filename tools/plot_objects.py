@@ -16,7 +16,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 OPENING_MM, BODY_MM = 11.0, 23.0
 COLOURS = {"success": "tab:green", "failure_I": "tab:orange", "failure_II": "tab:red",
-           "timeout": "tab:purple", "unstable": "black", "lost_edge": "tab:brown"}
+           "timeout": "tab:purple", "unstable": "black", "lost_edge": "tab:brown",
+           "stalled": "tab:pink"}
 
 
 def read_xy(path):

@@ -41,6 +41,13 @@ int RunObjectsCommand(int argc, char** argv) {
   AddEffectsOption(&cmd, "robot effects (docs/fidelity.md)", &effects_text, &spec.effects);
   std::string controller_name = "published", controller_params;
   AddControllerOptions(&cmd, &controller_name, &controller_params, &spec.controller);
+  cmd.Number("stall-mm", &spec.stall.stall_mm,
+             "stalled: the furthest point reached along the edge moves on by no more than this "
+             "over --stall-window",
+             "mm", NumberRange::Positive(1000));
+  cmd.Number("stall-window", &spec.stall.window_s,
+             "the stall rule's window, simulated (0: off, such a trial runs to its time limit)",
+             "s", NumberRange::Closed(0, 3600));
   AddThreadsOption(&cmd, &threads);
   cmd.OutputDir("out", &out_dir, "output directory (scenes in OUT/scenes)");
   cmd.Flag("write-only", &write_only, "only write the scenes");

@@ -58,6 +58,7 @@ void GoalTracker::Start(const TrialGoal& goal, std::shared_ptr<const ContourPath
   if (goal_.kind == TrialGoal::Kind::kSweptAngle) {
     sweep_.Reset(goal_.centre[0], goal_.centre[1], p[0], p[1]);
   }
+  start_radius_m_ = std::hypot(p[0] - goal_.centre[0], p[1] - goal_.centre[1]);
   arc_m_ = 0;
   max_distance_m_ = 0;
   left_band_ = false;
@@ -97,6 +98,12 @@ void GoalTracker::Track(const Point2& p, double s_min, double s_max) {
 
 double GoalTracker::Progress() const {
   return goal_.sweep_deg < 0 ? -sweep_.swept_deg() : sweep_.swept_deg();
+}
+
+double GoalTracker::progress_m() const {
+  if (goal_.kind == TrialGoal::Kind::kGoalPoint) return arc_m_;
+  const double loop_m = edge_ ? edge_->Length() : 2 * M_PI * start_radius_m_;
+  return Progress() / 360.0 * loop_m;
 }
 
 bool GoalTracker::ProgressReached() const {

@@ -68,6 +68,10 @@ class GoalTracker {
   double swept_deg() const { return sweep_.swept_deg(); }    // signed, 0 for kGoalPoint goals
   double arc_m() const { return arc_m_; }                    // tracked arc position (edge given)
   double max_distance_m() const { return max_distance_m_; }  // from the tracked edge so far
+  // How far along the goal the cup is, m (the stall rule's measure): the tracked arc position
+  // (goal points), or the swept angle in the goal's sense as a share of the edge's length
+  // (swept-angle goals; without an edge, of the circle through the start point).
+  double progress_m() const;
 
  private:
   double Progress() const;  // kSweptAngle: swept angle in the goal's sense, deg
@@ -80,6 +84,7 @@ class GoalTracker {
   std::shared_ptr<const ContourPath> edge_;
   SweepTracker sweep_;
   double arc_m_ = 0;
+  double start_radius_m_ = 0;  // swept-angle goals: the start point's distance from the centre
   double max_distance_m_ = 0;
   bool left_band_ = false;
   Point2 left_at_{};

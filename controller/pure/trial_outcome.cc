@@ -1,5 +1,6 @@
 #include "controller/pure/trial_outcome.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -23,8 +24,49 @@ const char* OutcomeName(Outcome outcome) {
       return "lost_edge";
     case Outcome::kControllerFault:
       return "controller_fault";
+    case Outcome::kStalled:
+      return "stalled";
   }
   return "?";
+}
+
+std::string ValidateStallRule(double stall_mm, double stall_window_s) {
+  std::ostringstream os;
+  if (!std::isfinite(stall_mm) || stall_mm <= 0 || stall_mm > 1000) {
+    os << "stall_mm = " << stall_mm << " is out of range (0, 1000] mm";
+  } else if (!std::isfinite(stall_window_s) || stall_window_s < 0 || stall_window_s > 3600) {
+    os << "stall_window_s = " << stall_window_s << " is out of range [0, 3600] s (0: off)";
+  }
+  return os.str();
+}
+
+void StallWatch::Start(double stall_m, double window_s, double t_s, double progress_m) {
+  stall_m_ = stall_m;
+  window_s_ = window_s;
+  mark_t_s_ = last_t_s_ = t_s;
+  mark_m_ = furthest_m_ = progress_m;
+}
+
+bool StallWatch::Add(double t_s, double progress_m) {
+  last_t_s_ = t_s;
+  furthest_m_ = std::max(furthest_m_, progress_m);
+  if (furthest_m_ > mark_m_ + stall_m_) {
+    mark_t_s_ = t_s;
+    mark_m_ = furthest_m_;
+    return false;
+  }
+  return window_s_ > 0 && t_s - mark_t_s_ >= window_s_;
+}
+
+std::string StallWatch::Detail() const {
+  std::ostringstream os;
+  os.setf(std::ios::fixed);
+  os.precision(2);
+  os << 1e3 * (furthest_m_ - mark_m_) << " mm of progress over the last ";
+  os.precision(1);
+  os << last_t_s_ - mark_t_s_ << " s, " << 1e3 * stall_m_ << " mm or less in " << window_s_
+     << " s is stalled (furthest " << 1e3 * furthest_m_ << " mm along the edge)";
+  return os.str();
 }
 
 void SweepTracker::Reset(double centre_x, double centre_y, double x, double y) {

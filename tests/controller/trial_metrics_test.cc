@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "controller/pure/trial_goal.h"
@@ -112,6 +113,71 @@ std::vector<Point2> Arc(const Point2& c, double r, double a0, double sweep, int 
     p.push_back({c[0] + r * std::cos(a), c[1] + r * std::sin(a)});
   }
   return p;
+}
+
+// The stall rule at the object trials' settings: the law's speed at dL 0.5 mm (2.1 mm/s) never
+// stalls; a cup held in place stalls once the window has passed since its last real progress.
+TEST(StallWatchTest, AHeldCupStallsAfterTheWindowAndAMovingOneNever) {
+  const double period_s = 0.15, speed_m_s = 0.5e-3 * (1 - std::exp(-1.0)) / period_s;
+  StallWatch moving;
+  moving.Start(1e-3 * kObjectStallMm, kObjectStallWindowS, 0, 0);
+  for (int i = 1; i <= 2000; ++i) {
+    ASSERT_FALSE(moving.Add(i * period_s, speed_m_s * i * period_s)) << i;
+  }
+  // Moves 30 mm, then held at 30 mm with the arm's landing jitter (+-1.4 mm, under stall_mm).
+  StallWatch held;
+  held.Start(1e-3 * kObjectStallMm, kObjectStallWindowS, 0, 0);
+  double stalled_at_s = -1, reached_s = 0;
+  for (int i = 1; i <= 1000 && stalled_at_s < 0; ++i) {
+    const double t = i * period_s;
+    double s = std::min(speed_m_s * t, 0.030);
+    if (s >= 0.030 && reached_s == 0) reached_s = t;
+    if (s >= 0.030) s += 1.4e-3 * std::sin(0.7 * i);
+    if (held.Add(t, s)) stalled_at_s = t;
+  }
+  ASSERT_GT(stalled_at_s, 0);
+  // The last mark is set within the last stall_mm before 30 mm or by the jitter's first peak
+  // after it (the window then runs from there): about one window after the cup stopped.
+  EXPECT_GE(stalled_at_s, reached_s - 1e-3 * kObjectStallMm / speed_m_s + kObjectStallWindowS);
+  EXPECT_LE(stalled_at_s, reached_s + kObjectStallWindowS + 2.0);
+  EXPECT_NE(held.Detail().find("furthest 31.4"), std::string::npos) << held.Detail();
+}
+
+TEST(StallWatchTest, BackingUpIsNoProgressAndSlowProgressIsProgress) {
+  // Backs up 5 mm and returns: only passing the furthest point by more than stall_mm counts.
+  StallWatch back;
+  back.Start(0.002, 10, 0, 0.010);
+  EXPECT_FALSE(back.Add(4, 0.005));
+  EXPECT_FALSE(back.Add(8, 0.0115));  // 1.5 mm past the furthest: not yet progress
+  EXPECT_TRUE(back.Add(10, 0.0118));
+  // 2.1 mm every 9.9 s: each passes the mark before the window ends.
+  StallWatch slow;
+  slow.Start(0.002, 10, 0, 0);
+  for (int i = 1; i <= 50; ++i) ASSERT_FALSE(slow.Add(9.9 * i, 0.0021 * i)) << i;
+  // A window of 0 is off.
+  StallWatch off;
+  off.Start(0.002, 0, 0, 0);
+  EXPECT_FALSE(off.Add(3000, 0));
+  EXPECT_STREQ(OutcomeName(Outcome::kStalled), "stalled");
+  EXPECT_EQ(ValidateStallRule(2, 20), "");
+  EXPECT_NE(ValidateStallRule(0, 20).find("stall_mm"), std::string::npos);
+  EXPECT_NE(ValidateStallRule(2, -1).find("stall_window_s"), std::string::npos);
+  EXPECT_NE(ValidateStallRule(2, NAN).find("[0, 3600]"), std::string::npos);
+}
+
+TEST(TrialGoalTest, ProgressIsTheArcOrTheSweptShareOfTheLoop) {
+  const Point2 c{0.65, 0};
+  const double r = 0.033;
+  const auto arc = Arc(c, r, 0, M_PI / 2, 100);  // a quarter turn counter-clockwise
+  GoalTracker ccw, cw;
+  ccw.Start(TrialGoal::SweptAngle(c, kLoopSweepDeg), nullptr, arc[0]);
+  cw.Start(TrialGoal::SweptAngle(c, -kLoopSweepDeg), nullptr, arc[0]);
+  for (size_t i = 1; i < arc.size(); ++i) {
+    ccw.Add(arc[i]);
+    cw.Add(arc[i]);
+  }
+  EXPECT_NEAR(ccw.progress_m(), M_PI / 2 * r, 1e-9);
+  EXPECT_NEAR(cw.progress_m(), -M_PI / 2 * r, 1e-9);  // the wrong way round
 }
 
 TEST(TrialGoalTest, SweptAngleIsReachedOnlyInItsSense) {
