@@ -197,6 +197,17 @@ void ParallelFor(int count, int threads, const std::function<void(int)>& fn) {
   for (std::thread& t : pool) t.join();
 }
 
+// Mean and sample sd (n - 1) of `v`; 0 for what fewer values cannot give.
+void MeanAndSd(const std::vector<double>& v, double* mean, double* sd) {
+  *mean = *sd = 0;
+  if (v.empty()) return;
+  for (double x : v) *mean += x / static_cast<double>(v.size());
+  if (v.size() < 2) return;
+  double ss = 0;
+  for (double x : v) ss += (x - *mean) * (x - *mean);
+  *sd = std::sqrt(ss / static_cast<double>(v.size() - 1));
+}
+
 }  // namespace
 
 bool RunSimTierTable(const SimTierSpec& spec,
@@ -232,6 +243,7 @@ bool RunSimTierTable(const SimTierSpec& spec,
       if (results[i].outcome == Outcome::kRunning) results[i].detail = e;
     });
     double wall = 0, steps = 0, compression = 0;
+    std::array<std::vector<double>, 3> sigma_r, s_c, dr;  // per beta, over the successes
     for (int i = 0; i < n; ++i) {
       const TrialResult& r = results[i];
       const int b = i / spec.seeds;
@@ -241,15 +253,14 @@ bool RunSimTierTable(const SimTierSpec& spec,
       ++row.trials[b];
       if (r.outcome != Outcome::kSuccess) continue;
       ++row.successes[b];
-      row.sigma_r_mm[b] += r.metrics.sigma_r_mm;
-      row.s_c[b] += r.metrics.s_c;
-      row.dr_mm[b] += r.metrics.dr_mm;
+      sigma_r[b].push_back(r.metrics.sigma_r_mm);
+      s_c[b].push_back(r.metrics.s_c);
+      dr[b].push_back(r.metrics.dr_mm);
     }
     for (int b = 0; b < 3; ++b) {
-      const double k = std::max(1, row.successes[b]);
-      row.sigma_r_mm[b] /= k;
-      row.s_c[b] /= k;
-      row.dr_mm[b] /= k;
+      MeanAndSd(sigma_r[b], &row.sigma_r_mm[b], &row.sigma_r_sd_mm[b]);
+      MeanAndSd(s_c[b], &row.s_c[b], &row.s_c_sd[b]);
+      MeanAndSd(dr[b], &row.dr_mm[b], &row.dr_sd_mm[b]);
     }
     row.us_per_step = steps > 0 ? wall / steps * 1e6 : 0;
     row.approach_compression_mm = compression;
@@ -290,7 +301,8 @@ std::string SimTierCsv(const std::vector<SimTierRow>& rows) {
   std::ostringstream os;
   os << "tier,us_per_step,approach_compression_mm,pbar_0.7mm_pa,pbar_2.5mm_pa,pbar_3.2mm_pa,"
         "diff_2.5mm_pa";
-  for (const char* m : {"sigma_r_mm", "s_c", "dr_mm", "successes", "trials"}) {
+  for (const char* m : {"sigma_r_mm", "s_c", "dr_mm", "sigma_r_sd_mm", "s_c_sd", "dr_sd_mm",
+                        "successes", "trials"}) {
     for (double b : kFig6Beta) os << ',' << m << "_beta" << b;
   }
   os << ",objects\n";
@@ -298,7 +310,8 @@ std::string SimTierCsv(const std::vector<SimTierRow>& rows) {
     os << r.tier << ',' << r.us_per_step << ',' << r.approach_compression_mm;
     for (double p : r.static_pbar_pa) os << ',' << p;
     os << ',' << r.static_diff_pa;
-    for (const auto* a : {&r.sigma_r_mm, &r.s_c, &r.dr_mm}) {
+    for (const auto* a :
+         {&r.sigma_r_mm, &r.s_c, &r.dr_mm, &r.sigma_r_sd_mm, &r.s_c_sd, &r.dr_sd_mm}) {
       for (double v : *a) os << ',' << v;
     }
     for (const auto* a : {&r.successes, &r.trials}) {

@@ -93,6 +93,9 @@ struct SimTierRow {
                                            // probe_press_mm
   double static_diff_pa = 0;               // |(dPx, dPy)| at 2.5 mm inside
   std::array<double, 3> sigma_r_mm{}, s_c{}, dr_mm{};  // per kFig6Beta, mean over successes
+  // Their sample sd over the successful seeds (0 with fewer than two); the standard error of a
+  // mean is sd / sqrt(successes).
+  std::array<double, 3> sigma_r_sd_mm{}, s_c_sd{}, dr_sd_mm{};
   std::array<int, 3> successes{}, trials{};
   std::string objects;  // "name outcome (end); ..." ("" when skipped or not available)
 };

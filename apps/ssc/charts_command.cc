@@ -35,22 +35,25 @@ bool RunTiers(const SimTierSpec& spec, const std::string& csv, std::string* erro
   std::printf(
       "tiers (P_ref 100 Pa, dL 5 mm, seeds %llu..%llu; published: Pbar 40/100/200 Pa at "
       "0.7/2.5/3.2 mm, |dP| ~200 Pa, sigma_r 1.36/-/1.89 mm, s_c 11/21/31 %%, dr -2.5 "
-      "mm at beta 1.5/2.5/3.5):\n",
+      "mm at beta 1.5/2.5/3.5; Fig. 6 as mean+-sd over the successful seeds):\n",
       static_cast<unsigned long long>(spec.seed),
       static_cast<unsigned long long>(spec.seed + spec.seeds - 1));
   std::vector<SimTierRow> rows;
   const bool ok = RunSimTierTable(
       spec,
       [](const SimTierRow& r) {
+        // Fig. 6 per beta: mean +- sd over the successful seeds.
         std::printf(
             "  %-7s %8.1f us/step  compression %.2f mm  Pbar %.0f/%.0f/%.0f Pa  |dP| %.0f Pa  "
-            "sigma_r %.2f/%.2f/%.2f mm  s_c %.1f/%.1f/%.1f %%  dr %.2f mm  successes %d/%d "
-            "%d/%d %d/%d\n",
+            "sigma_r %.2f+-%.2f/%.2f+-%.2f/%.2f+-%.2f mm  s_c %.1f+-%.1f/%.1f+-%.1f/%.1f+-%.1f %%  "
+            "dr %.2f+-%.2f/%.2f+-%.2f/%.2f+-%.2f mm  successes %d/%d %d/%d %d/%d\n",
             r.tier.c_str(), r.us_per_step, r.approach_compression_mm, r.static_pbar_pa[0],
             r.static_pbar_pa[1], r.static_pbar_pa[2], r.static_diff_pa, r.sigma_r_mm[0],
-            r.sigma_r_mm[1], r.sigma_r_mm[2], 100 * r.s_c[0], 100 * r.s_c[1], 100 * r.s_c[2],
-            r.dr_mm[0], r.successes[0], r.trials[0], r.successes[1], r.trials[1], r.successes[2],
-            r.trials[2]);
+            r.sigma_r_sd_mm[0], r.sigma_r_mm[1], r.sigma_r_sd_mm[1], r.sigma_r_mm[2],
+            r.sigma_r_sd_mm[2], 100 * r.s_c[0], 100 * r.s_c_sd[0], 100 * r.s_c[1],
+            100 * r.s_c_sd[1], 100 * r.s_c[2], 100 * r.s_c_sd[2], r.dr_mm[0], r.dr_sd_mm[0],
+            r.dr_mm[1], r.dr_sd_mm[1], r.dr_mm[2], r.dr_sd_mm[2], r.successes[0], r.trials[0],
+            r.successes[1], r.trials[1], r.successes[2], r.trials[2]);
         if (!r.objects.empty()) std::printf("          objects: %s\n", r.objects.c_str());
         std::fflush(stdout);
       },
