@@ -344,7 +344,9 @@ ControllerType EdgeTrackControllerType() {
         "1: re-tare the chambers in air on the way down and subtract the offsets", &P::tare_in_air},
        {"tare_clearance_mm", "mm", 0.5, 50,
         "the air re-tare uses the readings at least this far above the hold height",
-        &P::tare_clearance_mm}});
+        &P::tare_clearance_mm}},
+      // More positions to curve than the fit holds would leave the fit a line without a word.
+      {{&P::circle_points, &P::fit_points}});
 }
 
 }  // namespace ssc

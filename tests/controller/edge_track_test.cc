@@ -283,6 +283,13 @@ TEST(EdgeTrackTest, IsRegisteredWithItsKeys) {
       << error;
   EXPECT_FALSE(ParseControllerChoice("edge_track", "fit_points=2", &choice, &error));
   EXPECT_NE(error.find("fit_points"), std::string::npos);
+  // A fit that could never curve is refused, naming both keys.
+  EXPECT_FALSE(
+      ParseControllerChoice("edge_track", "fit_points=6,circle_points=8", &choice, &error));
+  EXPECT_NE(error.find("circle_points"), std::string::npos) << error;
+  EXPECT_NE(error.find("fit_points"), std::string::npos) << error;
+  EXPECT_TRUE(ParseControllerChoice("edge_track", "fit_points=8,circle_points=4", &choice, &error))
+      << error;
 }
 
 }  // namespace
