@@ -58,15 +58,11 @@ def main():
         p.error("--press-n: each in [0.1, 10] N")
     if not -5 <= a.to_mm <= 7:
         p.error("--to-mm: in [-5, 7] mm")
-    if "SSC_PLUGIN_LIB" not in os.environ:
-        p.error("set SSC_PLUGIN_LIB to the built plugin (build/lib/libssc_plugin.so)")
-    os.environ.setdefault("SSC_SOURCE_DIR", str(ROOT))
-    sys.path.insert(0, str(ROOT / "tests" / "plugin"))
-    import mujoco
     import numpy as np
-    import flex_lip_test as rig_module
 
-    mujoco.mj_loadPluginLibrary(os.environ["SSC_PLUGIN_LIB"])
+    import flex_rig
+
+    mujoco, rig_module = flex_rig.load(p)
     tool, variant = "ssc_tool_flex.xml", None
     sectors = int(rig_module.skirt_parameters()["sectors"])
     if a.set:

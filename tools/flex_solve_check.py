@@ -12,11 +12,6 @@ Usage (from the repository, after a build):
       --iterations 10,12,15,20,100
 """
 import argparse
-import os
-import pathlib
-import sys
-
-ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 
 def main():
@@ -30,15 +25,11 @@ def main():
         p.error(f"--iterations {a.iterations!r}: expected whole numbers, comma-separated")
     if not all(1 <= v <= 10000 for v in caps):
         p.error("--iterations: each in [1, 10000]")
-    if "SSC_PLUGIN_LIB" not in os.environ:
-        p.error("set SSC_PLUGIN_LIB to the built plugin (build/lib/libssc_plugin.so)")
-    os.environ.setdefault("SSC_SOURCE_DIR", str(ROOT))
-    sys.path.insert(0, str(ROOT / "tests" / "plugin"))
-    import mujoco
     import numpy as np
-    import flex_lip_test as rig_module
 
-    mujoco.mj_loadPluginLibrary(os.environ["SSC_PLUGIN_LIB"])
+    import flex_rig
+
+    mujoco, rig_module = flex_rig.load(p)
     inertia = mujoco.mjtWarning.mjWARN_INERTIA
     runs = []
     for cap in caps:
