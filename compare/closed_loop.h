@@ -68,6 +68,7 @@ struct ClosedLoopComparison {
   DiskTrialMetrics log, twin;
   std::string twin_outcome;
   std::string parameters;  // where P_ref, beta, dL, force came from
+  std::string controller;  // the controller that ran, with its values ("fast:lead=0.5,...")
   double path_distance_mean_mm = 0, path_distance_max_mm = 0;  // twin path to the logged path
 };
 // `start_t_s` < 0: the start is the first sample whose pressures show an edge (mean and

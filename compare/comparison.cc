@@ -222,6 +222,7 @@ bool RunComparison(const CompareOptions& o, CompareResult* r, std::string* error
   if (o.closed_loop) {
     if (!RunClosedLoop(o, std::move(loop), scene_log, args, loop_config, r, error)) return false;
     r->closed.parameters = params;
+    r->closed.controller = loop_config.controller.Text();
   }
   return WriteComparisonReport(o.out_dir, s, r->replay, &r->history,
                                o.closed_loop ? &r->closed : nullptr, error);

@@ -115,11 +115,18 @@ ObjectPose DiskPoseFromLog(const LoadedLog& loaded, double contact_depth_m) {
       "the log (disk benchmark: centre = the TCP where the recording starts, top = the "
       "lowest steady TCP height + the twin's lip depth at the approach force)";
   if (!a.history.empty() && !std::isnan(a.start_offset_m)) {
-    const double first = std::hypot(a.history.front().x_m - o.x_m, a.history.front().y_m - o.y_m);
-    char buf[200];
+    // The lab's scripts record the history from RTDE, in the UR Base frame (base_link turned
+    // 180 deg about z): the distance is measured in the disk's frame, from whichever reading of
+    // the history puts its first point by the disk (the centre lies ~0.6 m from either origin).
+    const HistoryRow& h = a.history.front();
+    const double as_logged = std::hypot(h.x_m - o.x_m, h.y_m - o.y_m);
+    const double turned = std::hypot(-h.x_m - o.x_m, -h.y_m - o.y_m);
+    char buf[240];
     std::snprintf(buf, sizeof(buf),
-                  "first controller iteration %.1f mm from the centre (start_offset %.1f mm)",
-                  first * 1e3, a.start_offset_m * 1e3);
+                  "first controller iteration %.1f mm from the centre%s (start_offset %.1f mm)",
+                  std::min(as_logged, turned) * 1e3,
+                  turned < as_logged ? ", its history read in the UR Base frame" : "",
+                  a.start_offset_m * 1e3);
     o.note = buf;
   }
   return o;

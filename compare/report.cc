@@ -175,6 +175,7 @@ json ClosedLoopJson(const ClosedLoopComparison& closed) {
   return {{"twin_outcome", closed.twin_outcome},
           {"start_t_s", closed.start_t_s},
           {"parameters", closed.parameters},
+          {"controller", closed.controller},
           {"log", Metrics(closed.log)},
           {"twin", Metrics(closed.twin)},
           {"path_distance_mean_mm", Num(closed.path_distance_mean_mm)},
@@ -184,9 +185,10 @@ json ClosedLoopJson(const ClosedLoopComparison& closed) {
 void WriteClosedLoopMarkdown(const ClosedLoopComparison& closed, std::ostream& md) {
   const DiskTrialMetrics& a = closed.log;
   const DiskTrialMetrics& b = closed.twin;
-  md << "\n## Closed loop\n\nThe twin's controller from the log's start (t = "
-     << Fmt("%.2f", closed.start_t_s) << " s) with " << closed.parameters << "; outcome "
-     << closed.twin_outcome << ".\n\n| metric | robot log | twin |\n| --- | --- | --- |\n"
+  md << "\n## Closed loop\n\nThe twin's controller `" << closed.controller
+     << "` from the log's start (t = " << Fmt("%.2f", closed.start_t_s) << " s) with "
+     << closed.parameters << "; outcome " << closed.twin_outcome
+     << ".\n\n| metric | robot log | twin |\n| --- | --- | --- |\n"
      << Fmt("| dr (mm) | %.2f | %.2f |\n", a.dr_mm, b.dr_mm)
      << Fmt("| sigma_r (mm) | %.2f | %.2f |\n", a.sigma_r_mm, b.sigma_r_mm)
      << Fmt("| s_c | %.3f | %.3f |\n", a.s_c, b.s_c)

@@ -48,6 +48,7 @@ void FinishSpec(ObjectSpec* spec, double start_arc_m, double inset_m, const Poin
     t.goal = TrialGoal::SweptAngle(sweep_centre, area > 0 ? kLoopSweepDeg : -kLoopSweepDeg);
   } else {
     t.goal = TrialGoal::GoalPoint(end_arc_m);
+    t.goal.start_arc_m = start_arc_m;
   }
   t.goal.band_m = kFollowBandM;
 }

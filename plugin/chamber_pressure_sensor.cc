@@ -446,13 +446,21 @@ void ChamberPressureSensor::Visualize(const mjModel* m, mjData* d, const mjvOpti
   (void)m;
 }
 
-const ChamberPressureDiagnostics* FindChamberPressureDiagnostics(const mjModel* m,
-                                                                 const mjData* d) {
+const ChamberPressureDiagnostics* FindChamberPressureDiagnostics(const mjModel* m, const mjData* d,
+                                                                 std::string* why) {
   int slot = -1;
   const mjpPlugin* plugin = mjp_getPlugin(kChamberPressurePluginName, &slot);
-  if (plugin == nullptr) return nullptr;
-  for (int i = 0; i < m->nplugin; ++i) {
-    if (m->plugin[i] == slot && d->plugin_data[i] != 0) return SensorOf(d, i);
+  std::vector<int> found;
+  for (int i = 0; plugin != nullptr && i < m->nplugin; ++i) {
+    if (m->plugin[i] == slot && d->plugin_data[i] != 0) found.push_back(i);
+  }
+  if (found.size() == 1) return SensorOf(d, found[0]);
+  if (why != nullptr) {
+    *why = found.empty()
+               ? std::string("scene has no ") + kChamberPressurePluginName + " sensor"
+               : "scene has " + std::to_string(found.size()) + " " + kChamberPressurePluginName +
+                     " sensors (a cup each): a trial follows with one cup; remove the "
+                     "others";
   }
   return nullptr;
 }

@@ -85,9 +85,11 @@ class ChamberPressureDiagnostics {
   virtual void Measure(const mjModel* m, const mjData* d, ChamberPressureSample* sample) const = 0;
 };
 
-// The diagnostics of the first ssc.chamber_pressure instance of `d`, or nullptr when the model
-// has none. The one way for tools to reach a sensor.
-const ChamberPressureDiagnostics* FindChamberPressureDiagnostics(const mjModel* m, const mjData* d);
+// The diagnostics of the ssc.chamber_pressure instance of `d`: the one way for tools to reach a
+// sensor. nullptr when the model has none, or more than one (a scene with two cups: which one a
+// trial follows with cannot be guessed); `why` (may be null) then says which.
+const ChamberPressureDiagnostics* FindChamberPressureDiagnostics(const mjModel* m, const mjData* d,
+                                                                 std::string* why = nullptr);
 
 // Per-run noise seed kept in mjData's plugin state (combined with the config's `seed`);
 // mj_resetData sets it back to 0, so set it after each reset.

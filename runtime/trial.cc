@@ -114,11 +114,8 @@ std::unique_ptr<ContourTrial> ContourTrial::Create(const mjModel* m, mjData* d,
     return nullptr;
   }
   std::unique_ptr<ContourTrial> trial(new ContourTrial(m, d, config, keep_log));
-  const ChamberPressureDiagnostics* sensor = FindChamberPressureDiagnostics(m, d);
-  if (sensor == nullptr) {
-    *error = "scene has no ssc.chamber_pressure sensor";
-    return nullptr;
-  }
+  const ChamberPressureDiagnostics* sensor = FindChamberPressureDiagnostics(m, d, error);
+  if (sensor == nullptr) return nullptr;
   trial->tool_site_ = sensor->site_id();
   trial->pressure_instance_ = sensor->instance();
   trial->pressure_adr_ = sensor->sensor_adr();

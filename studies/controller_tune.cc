@@ -10,12 +10,14 @@
 #include <nlopt.hpp>
 #include <sstream>
 
+#include "common/csv_cell.h"
 #include "common/output_file.h"
 #include "controller/pure/trial_outcome.h"
 #include "studies/equivalence.h"
 #include "studies/map_scores.h"
 #include "studies/sweep_io.h"
 #include "studies/trial_io.h"
+#include "studies/trial_manifest.h"
 #include "studies/unit_box_search.h"
 
 namespace ssc {
@@ -117,6 +119,12 @@ bool ParseTuneSearch(const ControllerType& type, const std::string& text,
         k.hi > range[1]) {
       *error = "key '" + k.key + "': '" + item.substr(eq + 1) +
                "' is not lo:hi with lo < hi, both numbers within " + Range(range[0], range[1]);
+      return false;
+    }
+    if (k.controller_index >= 0 && type.keys[static_cast<std::size_t>(k.controller_index)].whole &&
+        !(std::ceil(k.lo) < std::floor(k.hi))) {
+      *error = "key '" + k.key + "' takes whole numbers: '" + item.substr(eq + 1) +
+               "' holds fewer than two to search between";
       return false;
     }
     keys->push_back(k);
@@ -238,7 +246,7 @@ std::string TuneCsvHeader(const std::vector<TuneKey>& keys) {
 
 std::string TuneCsvRow(const TuneEvaluation& e, std::size_t keys) {
   std::ostringstream os;
-  os << e.label << ",\"" << e.controller << '"';
+  os << e.label << ',' << CsvCell(e.controller);
   for (std::size_t i = 0; i < keys; ++i) os << ',' << (i < e.values.size() ? Num(e.values[i]) : "");
   os << ',' << e.trials << ',' << e.successes << ',';
   if (e.refused.empty()) {
@@ -252,10 +260,7 @@ std::string TuneCsvRow(const TuneEvaluation& e, std::size_t keys) {
   if (e.refused.empty()) {
     os << "ran";
   } else {
-    std::string why = e.refused;
-    for (std::size_t at = why.find('"'); at != std::string::npos; at = why.find('"', at + 2))
-      why.insert(at, 1, '"');
-    os << "\"refused: " << why << '"';
+    os << CsvCell("refused: " + e.refused);
   }
   return os.str();
 }
@@ -278,8 +283,9 @@ bool Evaluate(const mjModel* m, const TuneSpec& spec, const TrialConfig& config,
   const fs::path dir = fs::path(spec.out_dir) / "evals" / dir_name;
   std::error_code ec;
   fs::create_directories(dir, ec);
+  // The folder is this search's (RunTune holds its lock and checked tune.json): an earlier run
+  // of the same search made the same points, so its rows resume as a sweep's do.
   sweep.out_csv = (dir / "sweep.csv").string();
-  fs::remove(sweep.out_csv, ec);  // this run's rows only, never a resumed earlier search's
   if (const std::string bad = CheckSweepGrid(sweep); !bad.empty()) {
     *error = label + ": " + bad;
     return false;
@@ -297,6 +303,12 @@ bool Evaluate(const mjModel* m, const TuneSpec& spec, const TrialConfig& config,
   std::vector<double> speeds;
   e->label = label;
   e->trials = static_cast<int>(rows.rows.size());
+  if (e->trials != spec.seeds) {
+    *error = label + ": " + sweep.out_csv + " holds " + std::to_string(e->trials) +
+             " trials where the evaluation ran " + std::to_string(spec.seeds) +
+             ": the folder changed under the search";
+    return false;
+  }
   for (const SweepRowKey& r : rows.rows) {
     if (r.outcome == OutcomeName(Outcome::kSuccess) && r.duration_s > 0) {
       speeds.push_back(r.s_mm / r.duration_s);
@@ -315,6 +327,40 @@ bool Evaluate(const mjModel* m, const TuneSpec& spec, const TrialConfig& config,
     e->speed_ci_mm_s = StudentT95(n - 1) * std::sqrt(ss / (n - 1) / n);
   }
   e->score = TuneScore(e->successes, e->trials, e->speed_mm_s, spec.min_success);
+  return true;
+}
+
+// What defines a search's results: the trials' options and the search's own.
+SweepManifest TuneManifest(const mjModel* m, const TuneSpec& spec) {
+  SweepManifest manifest = TrialManifest(m, spec.sweep.scene_name, spec.sweep.base);
+  manifest["seed"] = std::to_string(spec.sweep.seed);
+  manifest["controller"] = spec.sweep.base.controller.Text();
+  std::string box, references;
+  for (const TuneKey& k : spec.keys) box += k.key + "=" + Num(k.lo) + ":" + Num(k.hi) + ",";
+  for (const auto& [name, config] : spec.references)
+    references += name + "=" + config.controller.Text() + ";";
+  manifest["search"] = box;
+  manifest["references"] = references;
+  manifest["seeds"] = std::to_string(spec.seeds);
+  manifest["evaluations"] = std::to_string(spec.evaluations);
+  manifest["min_success"] = Num(spec.min_success);
+  manifest["algorithm"] = spec.algorithm;
+  return manifest;
+}
+
+// Takes the output folder before anything in it is touched: its lock (one search at a time) and
+// tune.json (an earlier search with other options is refused, naming them, and loses nothing).
+bool OwnTuneFolder(const mjModel* m, const TuneSpec& spec, SweepOutputLock* lock,
+                   std::string* error) {
+  namespace fs = std::filesystem;
+  const std::string table = (fs::path(spec.out_dir) / "tune.csv").string();
+  if (!lock->Acquire(table, error)) return false;
+  std::error_code ec;
+  const bool has_results =
+      fs::exists(table, ec) || fs::exists(fs::path(spec.out_dir) / "evals", ec);
+  if (!CheckOrWriteSweepManifest(table, has_results, TuneManifest(m, spec), error)) {
+    return false;
+  }
   return true;
 }
 
@@ -346,6 +392,8 @@ bool RunTune(const mjModel* m, const TuneSpec& spec,
     *error = why;
     return false;
   }
+  SweepOutputLock lock;
+  if (!OwnTuneFolder(m, spec, &lock, error)) return false;
   for (const auto& [name, config] : spec.references) {
     TuneEvaluation e;
     if (!Evaluate(m, spec, config, name, &e, error)) return false;
@@ -354,10 +402,17 @@ bool RunTune(const mjModel* m, const TuneSpec& spec,
     result->evaluations.push_back(e);
   }
   const std::size_t n = spec.keys.size();
+  const ControllerType* type = FindControllerType(spec.sweep.base.controller.name);
+  // A count or a switch is searched on its whole numbers: the point is rounded to one.
   auto to_values = [&](const std::vector<double>& x) {
     std::vector<double> v(n);
-    for (std::size_t i = 0; i < n; ++i)
-      v[i] = spec.keys[i].lo + std::clamp(x[i], 0.0, 1.0) * (spec.keys[i].hi - spec.keys[i].lo);
+    for (std::size_t i = 0; i < n; ++i) {
+      const TuneKey& k = spec.keys[i];
+      v[i] = k.lo + std::clamp(x[i], 0.0, 1.0) * (k.hi - k.lo);
+      if (type && k.controller_index >= 0 &&
+          type->keys[static_cast<std::size_t>(k.controller_index)].whole)
+        v[i] = std::clamp(std::round(v[i]), std::ceil(k.lo), std::floor(k.hi));
+    }
     return v;
   };
   // The start: the base config's values, clamped into the search box.

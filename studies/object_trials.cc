@@ -6,6 +6,7 @@
 #include <sstream>
 #include <utility>
 
+#include "common/csv_cell.h"
 #include "geometry/dimensions.h"
 
 namespace ssc {
@@ -130,20 +131,16 @@ std::string ObjectTableHeader() {
 }
 
 std::string ObjectTableRow(const ObjectTrialRow& r) {
+  // The numbers fit the buffer; the free-text detail goes after it, whole.
   char buf[512];
-  std::string detail = r.result.detail;
-  for (char& ch : detail) {
-    if (ch == ',' || ch == '"') ch = ';';
-  }
-  std::snprintf(buf, sizeof(buf),
-                "%s,%s,%g,%llu,%s,%.3f,%.3f,%.2f,%.2f,%.2f,%.1f,%.1f,%.2f,%d,%.1f,%.3f,%s,%s",
-                r.object.c_str(), r.kind.c_str(), r.param, static_cast<unsigned long long>(r.seed),
-                OutcomeName(r.result.outcome), r.result.metrics.contour_mean_mm,
-                r.result.metrics.contour_max_mm, r.end_arc_mm, r.end_swept_deg,
-                r.end_fillet_radius_mm, r.result.metrics.s_mm, r.result.follow_time_s,
-                r.result.metrics.speed_mm_s, r.result.iterations, r.step_cost_us,
-                r.approach_compression_mm, r.tier.c_str(), detail.c_str());
-  return buf;
+  std::snprintf(
+      buf, sizeof(buf), "%s,%s,%g,%llu,%s,%.3f,%.3f,%.2f,%.2f,%.2f,%.1f,%.1f,%.2f,%d,%.1f,%.3f,%s,",
+      r.object.c_str(), r.kind.c_str(), r.param, static_cast<unsigned long long>(r.seed),
+      OutcomeName(r.result.outcome), r.result.metrics.contour_mean_mm,
+      r.result.metrics.contour_max_mm, r.end_arc_mm, r.end_swept_deg, r.end_fillet_radius_mm,
+      r.result.metrics.s_mm, r.result.follow_time_s, r.result.metrics.speed_mm_s,
+      r.result.iterations, r.step_cost_us, r.approach_compression_mm, r.tier.c_str());
+  return buf + CsvCell(r.result.detail);
 }
 
 std::string FilletProfileCsv(const ObjectTrialRow& row) {

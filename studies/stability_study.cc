@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <string_view>
 
@@ -174,17 +175,21 @@ StabilityResult RunStabilityStudy(const mjModel* model, const StabilitySpec& spe
   result.reference = row(0);
   const StabilityRow& ref = result.reference;
   for (const Integrator& in : kIntegrators) {
-    double largest_ok = 0;
+    double largest_ok = std::numeric_limits<double>::quiet_NaN();  // none unchanged yet
+    double smallest_ms = std::numeric_limits<double>::infinity();
     for (std::size_t i = 1; i < jobs.size(); ++i) {
       if (jobs[i].integrator.id != in.id || out[i].empty()) continue;
       StabilityRow r = row(i);
       r.unchanged = r.stable && r.outcome == ref.outcome &&
                     std::fabs(r.r_mean_mm - ref.r_mean_mm) <= spec.dr_tol_mm &&
                     std::fabs(r.s_mm - ref.s_mm) <= spec.s_tol * ref.s_mm;
-      if (r.unchanged) largest_ok = std::max(largest_ok, r.timestep_ms);
+      if (r.unchanged && !(largest_ok >= r.timestep_ms)) largest_ok = r.timestep_ms;
+      smallest_ms = std::min(smallest_ms, r.timestep_ms);
       result.rows.push_back(r);
     }
-    if (!result.interrupted) result.largest_unchanged_ms.emplace_back(in.name, largest_ok);
+    // An integrator none of whose steps ran has nothing to judge.
+    if (!result.interrupted && std::isfinite(smallest_ms))
+      result.largest_unchanged_ms.emplace_back(in.name, largest_ok);
   }
   return result;
 }

@@ -34,7 +34,8 @@ struct StabilityRow {
 struct StabilityResult {
   StabilityRow reference;          // RK4, 0.5 ms
   std::vector<StabilityRow> rows;  // integrator by integrator, steps in the given order
-  std::vector<std::pair<std::string, double>> largest_unchanged_ms;  // per integrator
+  // Per integrator with a step run: NaN when none of its steps kept the results unchanged.
+  std::vector<std::pair<std::string, double>> largest_unchanged_ms;
   // SIGINT/SIGTERM (studies/job_runner.h): `rows` holds the finished trials, judged when the
   // reference finished (none otherwise); largest_unchanged_ms is empty (it needs every step).
   bool interrupted = false;

@@ -471,20 +471,36 @@ bool CheckOrWriteSweepManifest(const std::string& csv_path, bool csv_has_rows,
   return WriteWholeFile(path, SweepManifestJson(now), error);
 }
 
+namespace {
+
+constexpr const char* kRowDigestColumn = "row_digest";
+
+std::string RowDigest(std::string_view row) {
+  char hex[32];
+  std::snprintf(hex, sizeof(hex), "%016llx",
+                static_cast<unsigned long long>(Fnv1a64(row.data(), row.size())));
+  return hex;
+}
+
+std::string WithDigest(std::string_view row) { return std::string(row) + "," + RowDigest(row); }
+
+}  // namespace
+
 bool ResumableTable::Open(const std::string& path, const std::string& header,
                           const SweepManifest& manifest, const RowCheck& check,
                           const std::string& what, std::string* error) {
   path_ = path;
-  header_ = header;
+  header_ = header + "," + kRowDigestColumn;
   kept_.clear();
   std::string text;
-  if (!lock_.Acquire(path, error) || !ReadCsvForResume(path, header, what, &text, error)) {
+  if (!lock_.Acquire(path, error) || !ReadCsvForResume(path, header_, what, &text, error)) {
     return false;
   }
   std::vector<std::string> keys, whys;  // per whole row: its key ("" when refused) and why
-  CsvRows rows = ParseCsvRows(text, header, [&](const std::vector<std::string_view>& f, int) {
+  CsvRows rows = ParseCsvRows(text, header_, [&](const std::vector<std::string_view>& f, int) {
+    const std::vector<std::string_view> fields(f.begin(), f.end() - 1);
     std::string why;
-    keys.push_back(check(f, &why));
+    keys.push_back(check(fields, &why));
     whys.push_back(why);
     return true;
   });
@@ -492,8 +508,16 @@ bool ResumableTable::Open(const std::string& path, const std::string& header,
   std::vector<std::string> keep;
   int problems = 0;
   for (size_t i = 0; i < rows.lines.size(); ++i) {
-    const std::string& line = rows.lines[i];
+    // The digest seals the row as the study wrote it: a row changed since (an outcome edited
+    // to contradict its own detail) cannot be trusted as a finished trial.
+    const std::string& sealed = rows.lines[i];
+    const std::size_t comma = sealed.rfind(',');
+    const std::string line = sealed.substr(0, comma);
     std::string key = keys[i], why = whys[i];
+    if (!key.empty() && sealed.compare(comma + 1, std::string::npos, RowDigest(line)) != 0) {
+      key.clear();
+      why = std::string(kRowDigestColumn) + " does not match the row: changed since it was written";
+    }
     if (!key.empty() && kept_.count(key)) {
       why = "a second row for " + key;
       key.clear();
@@ -527,11 +551,14 @@ std::string ResumableTable::Kept(const std::string& key) const {
 }
 
 bool ResumableTable::Append(std::string_view row, std::string* error) {
-  return writer_.Append(row, error);
+  return writer_.Append(WithDigest(row), error);
 }
 
 bool ResumableTable::Rewrite(const std::vector<std::string>& rows, std::string* error) {
-  return RewriteSweepCsv(path_, header_, rows, error);
+  std::vector<std::string> sealed;
+  sealed.reserve(rows.size());
+  for (const std::string& row : rows) sealed.push_back(WithDigest(row));
+  return RewriteSweepCsv(path_, header_, sealed, error);
 }
 
 std::uint64_t Fnv1a64(const void* data, std::size_t size) {

@@ -155,7 +155,10 @@ bool CheckOrWriteSweepManifest(const std::string& csv_path, bool csv_has_rows,
 // sweep's lock), the options that define its rows beside it (TABLE.json, compared on resume:
 // other options are refused naming the differences), rows appended whole as trials finish, and
 // on resume only whole rows kept that `check` accepts, once per key; a row refused or repeated
-// is dropped, named on stderr, and its trial runs again.
+// is dropped, named on stderr, and its trial runs again. Each row ends in a row_digest column
+// (FNV-1a of the rest of the row, added on Append and Rewrite, checked and stripped on Open): a
+// row changed since it was written is refused like any other. Rows in and out of this class are
+// the study's own, without the digest.
 class ResumableTable {
  public:
   // The row's key from its fields, or "" with *why saying why the row cannot be this run's.

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "common/csv_cell.h"
 #include "common/output_file.h"
 #include "controller/pure/robot_effects.h"
 
@@ -16,13 +17,6 @@ std::string Num(double v, int precision = 6) {
   char buf[64];
   std::snprintf(buf, sizeof(buf), "%.*g", precision, v);
   return buf;
-}
-
-// CSV cells never contain commas or quotes from us except the free-text detail.
-std::string CsvText(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) out += (c == '"') ? '\'' : c;
-  return out + "\"";
 }
 
 }  // namespace
@@ -107,7 +101,7 @@ std::string SweepCsvRow(const std::string& scene, const TrialConfig& c, int repe
      << Num(m.r_mean_mm) << ',' << Num(m.dr_mm) << ',' << Num(m.sigma_r_mm) << ',' << Num(m.s_c)
      << ',' << Num(m.duration_s) << ',' << Num(m.speed_mm_s) << ',' << Num(m.speed_body_d_s) << ','
      << Num(m.contour_mean_mm) << ',' << Num(m.contour_max_mm) << ',' << Num(r.swept_deg) << ','
-     << r.iterations << ',' << Num(r.sim_time_s) << ',' << CsvText(r.detail);
+     << r.iterations << ',' << Num(r.sim_time_s) << ',' << CsvCell(r.detail);
   return os.str();
 }
 

@@ -146,12 +146,12 @@ void PrintComparison(const CompareResult& r) {
   if (r.closed.ran) {
     const ClosedLoopComparison& cl = r.closed;
     std::printf(
-        "closed loop (%s): twin %s; dr %.2f vs %.2f mm (log), sigma_r %.2f vs %.2f mm, "
-        "s_c %.3f vs %.3f, duration %.1f vs %.1f s; path distance mean %.2f, max %.2f "
+        "closed loop (controller %s; %s): twin %s; dr %.2f vs %.2f mm (log), sigma_r %.2f vs "
+        "%.2f mm, s_c %.3f vs %.3f, duration %.1f vs %.1f s; path distance mean %.2f, max %.2f "
         "mm\n",
-        cl.parameters.c_str(), cl.twin_outcome.c_str(), cl.twin.dr_mm, cl.log.dr_mm,
-        cl.twin.sigma_r_mm, cl.log.sigma_r_mm, cl.twin.s_c, cl.log.s_c, cl.twin.duration_s,
-        cl.log.duration_s, cl.path_distance_mean_mm, cl.path_distance_max_mm);
+        cl.controller.c_str(), cl.parameters.c_str(), cl.twin_outcome.c_str(), cl.twin.dr_mm,
+        cl.log.dr_mm, cl.twin.sigma_r_mm, cl.log.sigma_r_mm, cl.twin.s_c, cl.log.s_c,
+        cl.twin.duration_s, cl.log.duration_s, cl.path_distance_mean_mm, cl.path_distance_max_mm);
   }
 }
 

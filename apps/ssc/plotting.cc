@@ -6,15 +6,49 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <thread>
 
 #include "runtime/mujoco_model.h"
 
 extern char** environ;
 
 namespace ssc {
+namespace {
+
+// A plot is never waited for without end: past kPlotTimeoutS it is killed and named.
+constexpr double kPlotTimeoutS = 300;
+
+bool WaitBounded(pid_t pid, const std::string& script, int* status) {
+  const auto start = std::chrono::steady_clock::now();
+  while (true) {
+    const pid_t done = waitpid(pid, status, WNOHANG);
+    if (done == pid) return true;
+    if (done < 0 && errno != EINTR) {
+      std::fprintf(stderr, "plot failed: waiting for %s: %s\n", script.c_str(),
+                   std::strerror(errno));
+      return false;
+    }
+    const double waited_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (waited_s > kPlotTimeoutS) {
+      kill(pid, SIGKILL);
+      while (waitpid(pid, status, 0) < 0 && errno == EINTR) {
+      }
+      std::fprintf(stderr,
+                   "plot failed: %s did not finish in %.0f s and was stopped (the results "
+                   "are written; a memory limit such as ulimit -v can stall Python)\n",
+                   script.c_str(), kPlotTimeoutS);
+      return false;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
+}  // namespace
 
 bool RunPlotScript(const std::string& script, const std::vector<std::string>& args) {
   const std::string root = SourceDir();
@@ -30,9 +64,15 @@ bool RunPlotScript(const std::string& script, const std::vector<std::string>& ar
   argv.push_back(const_cast<char*>(script_path.c_str()));
   for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
-  std::vector<std::string> env_text = {"MPLBACKEND=Agg"};
+  // One BLAS thread: a plot needs no more, and OpenBLAS waits for ever on threads it cannot
+  // start (an address-space limit, ulimit -v).
+  std::vector<std::string> env_text = {"MPLBACKEND=Agg", "OPENBLAS_NUM_THREADS=1",
+                                       "OMP_NUM_THREADS=1"};
   for (char** e = environ; *e != nullptr; ++e) {
-    if (std::strncmp(*e, "MPLBACKEND=", 11) != 0) env_text.emplace_back(*e);
+    const bool ours = std::strncmp(*e, "MPLBACKEND=", 11) == 0 ||
+                      std::strncmp(*e, "OPENBLAS_NUM_THREADS=", 21) == 0 ||
+                      std::strncmp(*e, "OMP_NUM_THREADS=", 16) == 0;
+    if (!ours) env_text.emplace_back(*e);
   }
   std::vector<char*> envp;
   for (std::string& e : env_text) envp.push_back(e.data());
@@ -55,13 +95,7 @@ bool RunPlotScript(const std::string& script, const std::vector<std::string>& ar
     _exit(127);
   }
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) {
-      std::fprintf(stderr, "plot failed: waiting for %s: %s\n", script.c_str(),
-                   std::strerror(errno));
-      return false;
-    }
-  }
+  if (!WaitBounded(pid, script, &status)) return false;
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     std::fprintf(stderr, "plot failed: %s %s %d\n", script.c_str(),
                  WIFEXITED(status) ? "exited with" : "killed by signal",

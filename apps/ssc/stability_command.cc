@@ -33,8 +33,12 @@ void PrintStabilityTable(const StabilityResult& result) {
     if (i + 1 < rows.size() && rows[i + 1].integrator == r.integrator) continue;
     for (const auto& [name, largest_ms] : result.largest_unchanged_ms) {
       if (name != r.integrator) continue;
-      std::printf("%s: largest time step with unchanged results: %.2f ms\n", name.c_str(),
-                  largest_ms);
+      if (std::isnan(largest_ms)) {
+        std::printf("%s: no time step tried gave unchanged results\n", name.c_str());
+      } else {
+        std::printf("%s: largest time step with unchanged results: %.2f ms\n", name.c_str(),
+                    largest_ms);
+      }
     }
   }
 }

@@ -34,6 +34,10 @@ std::string ControllerNames() {
   return names;
 }
 
+NumberRange KeyRange(const ControllerParamKey& k) {
+  return k.whole ? NumberRange::Whole(k.min, k.max) : NumberRange::Closed(k.min, k.max);
+}
+
 std::string ControllerChoice::Validate() const {
   if (custom) return "";
   const ControllerType* type = FindControllerType(name);
@@ -48,10 +52,10 @@ std::string ControllerChoice::Validate() const {
   }
   for (size_t i = 0; i < values.size(); ++i) {
     const ControllerParamKey& k = type->keys[i];
-    if (!std::isfinite(values[i]) || values[i] < k.min || values[i] > k.max) {
+    if (!KeyRange(k).Contains(values[i])) {
       std::ostringstream os;
-      os << "controller " << name << ": " << k.key << " = " << values[i] << " is out of range ["
-         << FormatNumber(k.min) << ", " << FormatNumber(k.max) << "] " << k.unit;
+      os << "controller " << name << ": " << k.key << " = " << values[i] << " is out of range "
+         << KeyRange(k).ToString() << (k.unit == "1" ? "" : " " + k.unit);
       return os.str();
     }
   }
@@ -136,7 +140,7 @@ bool ParseControllerValues(const ControllerType& type, const std::string& params
     seen[i] = true;
     const ControllerParamKey& k = type.keys[i];
     std::string why;
-    if (!ParseNumber(value, NumberRange::Closed(k.min, k.max), &(*values)[i], &why)) {
+    if (!ParseNumber(value, KeyRange(k), &(*values)[i], &why)) {
       *error = "controller " + name + ": " + key + " = '" + value + "': " + why +
                (k.unit.empty() ? "" : " (" + k.unit + ")");
       return false;
@@ -172,7 +176,8 @@ std::string ControllerKeyTable() {
     for (const ControllerParamKey& k : t.keys) {
       os << "  " << k.key << " = " << FormatNumber(k.default_value)
          << (k.unit.empty() || k.unit == "1" ? "" : " " + k.unit) << " in [" << FormatNumber(k.min)
-         << ", " << FormatNumber(k.max) << "]: " << k.what << "\n";
+         << ", " << FormatNumber(k.max) << "]" << (k.whole ? ", whole" : "") << ": " << k.what
+         << "\n";
     }
   }
   return os.str();

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "common/strict_number.h"
 #include "controller/pure/contour_law.h"
 #include "controller/pure/controller.h"
 
@@ -30,7 +31,11 @@ struct ControllerParamKey {
   std::string key, unit;
   double default_value = 0, min = 0, max = 0;
   std::string what;
+  bool whole = false;  // whole numbers only: counts, and on/off switches (0 or 1)
 };
+
+// The values a key takes: [min, max], whole numbers only where the key is a count or a switch.
+NumberRange KeyRange(const ControllerParamKey& k);
 
 using ControllerValues = std::vector<double>;  // one per key, in key order
 using ControllerFactory =
@@ -66,6 +71,7 @@ struct ParamField {
   double min, max;
   const char* what;
   double P::*field;
+  bool whole = false;  // a count or an on/off switch: whole numbers only
 };
 
 // A rule between two fields of P: the first may not exceed the second.
@@ -87,7 +93,7 @@ ControllerType MakeControllerType(const char* name, const char* what,
   std::vector<double P::*> members;
   const P defaults{};
   for (const ParamField<P>& f : fields) {
-    t.keys.push_back({f.key, f.unit, defaults.*(f.field), f.min, f.max, f.what});
+    t.keys.push_back({f.key, f.unit, defaults.*(f.field), f.min, f.max, f.what, f.whole});
     members.push_back(f.field);
   }
   const auto params_of = [members](const ControllerValues& values) {

@@ -93,7 +93,7 @@ ControllerType CrimpHopControllerType() {
       {{"leak_ratio", "1", 0.01, 1, "a crimped chamber reads below this x the least other one",
         &P::leak_ratio},
        {"stall_iterations", "1", 1, 50, "iterations in a row with the signature",
-        &P::stall_iterations},
+        &P::stall_iterations, true},
        {"stall_share", "1", 0, 1, "... while it moved less than this share of its steps",
         &P::stall_share},
        {"lift_mm", "mm", 0.5, 20, "hop height above the hold height", &P::lift_mm},

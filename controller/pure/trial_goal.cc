@@ -43,6 +43,9 @@ std::string TrialGoal::Validate() const {
     }
   } else if (!std::isfinite(goal_arc_m) || goal_arc_m < 0) {
     os << "goal goal_arc_m = " << goal_arc_m << " is out of range [0, inf) m";
+  } else if (!std::isnan(start_arc_m) && !(start_arc_m >= 0 && start_arc_m <= goal_arc_m)) {
+    os << "goal start_arc_m = " << start_arc_m << " is out of range [0, goal_arc_m = " << goal_arc_m
+       << "] m";
   }
   if (!std::isfinite(band_m) || band_m < 0 || band_m > 1) {
     os << "goal band_m = " << band_m << " is out of range [0, 1] m";
@@ -61,11 +64,20 @@ void GoalTracker::Start(const TrialGoal& goal, std::shared_ptr<const ContourPath
   start_radius_m_ = std::hypot(p[0] - goal_.centre[0], p[1] - goal_.centre[1]);
   arc_m_ = 0;
   max_distance_m_ = 0;
+  path_m_ = 0;
+  last_ = p;
   left_band_ = false;
-  if (edge_) Track(p, 0, edge_->Length());
+  if (!edge_) return;
+  if (goal_.kind == TrialGoal::Kind::kGoalPoint && std::isfinite(goal_.start_arc_m)) {
+    Track(p, goal_.start_arc_m - kArcTrackWindowM, goal_.start_arc_m + kArcTrackWindowM);
+  } else {
+    Track(p, 0, edge_->Length());
+  }
 }
 
 void GoalTracker::Add(const Point2& p) {
+  path_m_ += std::hypot(p[0] - last_[0], p[1] - last_[1]);
+  last_ = p;
   if (goal_.kind == TrialGoal::Kind::kSweptAngle) sweep_.Add(p[0], p[1]);
   if (edge_) Track(p, arc_m_ - kArcTrackWindowM, ForwardReach(p));
 }
@@ -106,9 +118,14 @@ double GoalTracker::progress_m() const {
   return Progress() / 360.0 * loop_m;
 }
 
+double GoalTracker::PathNeededM() const {
+  if (goal_.kind != TrialGoal::Kind::kGoalPoint || !std::isfinite(goal_.start_arc_m)) return 0;
+  return std::max(0.0, goal_.goal_arc_m - goal_.start_arc_m - 2 * goal_.band_m);
+}
+
 bool GoalTracker::ProgressReached() const {
   if (goal_.kind == TrialGoal::Kind::kSweptAngle) return Progress() >= std::fabs(goal_.sweep_deg);
-  return edge_ != nullptr && arc_m_ >= goal_.goal_arc_m;
+  return edge_ != nullptr && arc_m_ >= goal_.goal_arc_m && path_m_ >= PathNeededM();
 }
 
 GoalStatus GoalTracker::status() const {
@@ -130,6 +147,10 @@ std::string GoalTracker::Detail() const {
     os << "swept " << Progress() << " deg";
   } else {
     os << "reached the goal point, " << arc_m_ * 1e3 << " mm along the edge";
+    if (arc_m_ >= goal_.goal_arc_m && path_m_ < PathNeededM()) {
+      os << " under the body, but the cup moved " << path_m_ * 1e3 << " mm of the "
+         << PathNeededM() * 1e3 << " mm needed";
+    }
   }
   if (!goal_.never_followed.empty() && ProgressReached()) os << ", but " << goal_.never_followed;
   return os.str();

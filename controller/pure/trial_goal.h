@@ -18,6 +18,7 @@
 #ifndef SSC_CONTROLLER_PURE_TRIAL_GOAL_H_
 #define SSC_CONTROLLER_PURE_TRIAL_GOAL_H_
 
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -40,6 +41,10 @@ struct TrialGoal {
   Point2 centre{kWorkspaceX, kWorkspaceY};  // kSweptAngle: the swept angle is measured about it
   double sweep_deg = kLoopSweepDeg;         // kSweptAngle: signed, > 0 counter-clockwise
   double goal_arc_m = 0;                    // kGoalPoint: arc position of the goal on the edge
+  // kGoalPoint: arc position of the start on the edge (NaN: unknown, the nearest point of the
+  // whole edge). A thin wedge passes close to the start on its far side: the tracked position
+  // starts here, not there.
+  double start_arc_m = std::numeric_limits<double>::quiet_NaN();
   double band_m = 0;           // > 0: the cup centre must stay this close to the tracked edge
   std::string never_followed;  // non-empty: why this goal never counts as followed
 
@@ -67,6 +72,7 @@ class GoalTracker {
   std::string Detail() const;
   double swept_deg() const { return sweep_.swept_deg(); }    // signed, 0 for kGoalPoint goals
   double arc_m() const { return arc_m_; }                    // tracked arc position (edge given)
+  double path_m() const { return path_m_; }                  // the cup centre's path so far
   double max_distance_m() const { return max_distance_m_; }  // from the tracked edge so far
   // How far along the goal the cup is, m (the stall rule's measure): the tracked arc position
   // (goal points), or the swept angle in the goal's sense as a share of the edge's length
@@ -76,6 +82,9 @@ class GoalTracker {
  private:
   double Progress() const;  // kSweptAngle: swept angle in the goal's sense, deg
   bool ProgressReached() const;
+  // A goal point counts only after the cup centre covered the edge between start and goal less
+  // what lies under its body at each end (2 band_m): a success needs a path.
+  double PathNeededM() const;
   void Track(const Point2& p, double s_min, double s_max);
   // The largest arc position the tracked one may reach from p this sample.
   double ForwardReach(const Point2& p) const;
@@ -86,6 +95,8 @@ class GoalTracker {
   double arc_m_ = 0;
   double start_radius_m_ = 0;  // swept-angle goals: the start point's distance from the centre
   double max_distance_m_ = 0;
+  double path_m_ = 0;
+  Point2 last_{};
   bool left_band_ = false;
   Point2 left_at_{};
 };

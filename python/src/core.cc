@@ -107,6 +107,24 @@ nb::dict Dict(std::initializer_list<std::pair<const char*, nb::object>> items) {
   throw nb::python_error();
 }
 
+// Ctrl-C (KeyboardInterrupt) or SystemExit raised inside a Python controller: kept here while
+// the trial it stopped unwinds, and raised again when the binding returns to Python (never
+// swallowed into a controller fault). Touched only with the GIL held.
+std::unique_ptr<nb::python_error>& PendingInterrupt() {
+  static std::unique_ptr<nb::python_error> pending;
+  return pending;
+}
+
+// Raises the pending interrupt, or one Python's signal handler has noted since the GIL was
+// released (a Ctrl-C during the physics).
+void RaisePendingInterrupt() {
+  if (std::unique_ptr<nb::python_error> e = std::move(PendingInterrupt())) {
+    e->restore();
+    throw nb::python_error();
+  }
+  if (PyErr_CheckSignals() != 0) throw nb::python_error();
+}
+
 // timeout_s as the bindings take it: 0 = the default, else the trial's own range check.
 void SetTimeout(double timeout_s, TrialConfig* config) {
   if (timeout_s != 0) config->timeout_s = timeout_s;
@@ -457,7 +475,13 @@ class PyController : public Controller {
       }
       fault_.clear();
       return c;
-    } catch (const nb::python_error& e) {
+    } catch (nb::python_error& e) {
+      if (e.matches(PyExc_KeyboardInterrupt) || e.matches(PyExc_SystemExit)) {
+        fault_ = "interrupted: " + PythonErrorText(e);
+        if (!PendingInterrupt())
+          PendingInterrupt() = std::make_unique<nb::python_error>(std::move(e));
+        return bad;
+      }
       fault_ = PythonErrorText(e);
     } catch (const std::exception&) {
       fault_ = "the controller returned " +
@@ -561,8 +585,13 @@ class SteppedTrial {
   }
   std::array<double, 2> ControllerStep() const { return trial_->controller_command().step_m; }
   bool RunToNextIteration() {
-    nb::gil_scoped_release release;
-    return trial_->RunToNextIteration();
+    bool more = false;
+    {
+      nb::gil_scoped_release release;
+      more = trial_->RunToNextIteration();
+    }
+    RaisePendingInterrupt();
+    return more;
   }
   void ApplyStep(std::array<double, 2> step_m) {
     // NaN or inf would reach the controls and throw the tool; refuse them here.
@@ -646,8 +675,9 @@ class SilPlant {
     if (!data_) Fail(error);
     site_ = mj_name2id(model_.get(), mjOBJ_SITE, kToolSiteName);
     if (site_ < 0) Fail(scene + ": no tool site '" + std::string(kToolSiteName) + "'");
-    const ChamberPressureDiagnostics* p = FindChamberPressureDiagnostics(model_.get(), data_.get());
-    if (!p) Fail(scene + ": no ssc.chamber_pressure sensor");
+    const ChamberPressureDiagnostics* p =
+        FindChamberPressureDiagnostics(model_.get(), data_.get(), &error);
+    if (!p) Fail(scene + ": " + error);
     pressure_adr_ = p->sensor_adr();
     const int f = mj_name2id(model_.get(), mjOBJ_SENSOR, kToolForceSensorName);
     const int t = mj_name2id(model_.get(), mjOBJ_SENSOR, kToolTorqueSensorName);
@@ -919,6 +949,7 @@ NB_MODULE(_core, m) {
                            : nullptr;
           if (trial) r = stop_at_s > 0 ? trial->Run(stop_at_s) : trial->Run();
         }
+        RaisePendingInterrupt();
         if (!error.empty()) Fail(error);
         return ResultDict(ResolveScenePath(scene_path), config, r);
       },

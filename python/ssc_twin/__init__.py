@@ -58,11 +58,14 @@ def load_plugin(path=None):
 
 
 def read_sweep(csv_path):
-    """The rows of a sweep CSV (written by sweep()) as a dict of NumPy arrays, one per column.
+    """The rows of a sweep CSV (written by sweep()) as a dict of NumPy arrays, one per column:
+    numbers as float arrays (whole-number columns as int64), text as str arrays with the CSV's
+    quoting undone (a detail may hold commas and quotes).
 
-    Raises ValueError naming the file when it is not a sweep CSV (another header, binary data).
+    Raises ValueError naming the file when it is not a sweep CSV (another header, binary data,
+    a row with another number of fields).
     """
-    import numpy as np
+    import csv
     path = _os.fspath(csv_path)
     if not _os.path.isfile(path):
         raise ValueError(f"{path}: not a regular file (the sweep CSV to read)")
@@ -73,12 +76,30 @@ def read_sweep(csv_path):
         raise ValueError(f"{path}: not a sweep CSV (its first line is {shown!r}, expected the "
                          "header scene,pref_pa,beta,step_mm,repeat,seed,outcome,...)")
     try:
-        table = np.genfromtxt(path, delimiter=",", names=True, dtype=None, encoding="utf-8",
-                              invalid_raise=True)
-    except ValueError as e:
+        with open(path, newline="", encoding="utf-8") as f:
+            rows = list(csv.reader(f, strict=True))
+    except (UnicodeDecodeError, csv.Error) as e:
         raise ValueError(f"{path}: cannot read as a sweep CSV: {e}") from None
-    table = np.atleast_1d(table)  # one row: arrays of length 1, not 0-d scalars
-    return {name: table[name] for name in table.dtype.names}
+    names, body = rows[0], rows[1:]
+    for line, row in enumerate(body, start=2):
+        if len(row) != len(names):
+            raise ValueError(f"{path}: line {line} has {len(row)} fields, the header "
+                             f"{len(names)}: not a whole sweep row")
+    return {name: _column([row[i] for row in body]) for i, name in enumerate(names)}
+
+
+def _column(cells):
+    """One CSV column as a NumPy array: int64 when every cell is a whole number, float when every
+    cell is a number (nan included), str otherwise."""
+    import numpy as np
+    try:
+        return np.array([int(c) for c in cells], dtype=np.int64)
+    except ValueError:
+        pass
+    try:
+        return np.array([float(c) for c in cells], dtype=float)
+    except ValueError:
+        return np.array(cells, dtype=str)
 
 
 try:

@@ -9,6 +9,7 @@ skipped, saying so, without one.
 import importlib
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -218,6 +219,140 @@ def run_sil(args, cwd):
     env = dict(os.environ, SSC_PYTHON=sys.executable)
     return subprocess.run(cmd + args, cwd=cwd, env=env, capture_output=True, text=True,
                           timeout=600)
+
+
+class SilBounds(unittest.TestCase):
+    """Every script ends, every failure is one 'ssc sil:' line with its documented code, and
+    nothing the script starts or writes outlives the run or lands outside OUT."""
+
+    def setUp(self):
+        self.out = tempfile.mkdtemp(prefix="ssc_sil_bounds_")
+        self.addCleanup(shutil.rmtree, self.out, True)
+
+    def script(self, text, name="s.py"):
+        path = os.path.join(self.out, name)
+        with open(path, "w") as f:
+            f.write(text)
+        return path
+
+    def sil(self, *args, timeout=120):
+        start = time.monotonic()
+        p = run_sil(["--out", os.path.join(self.out, "run")] + list(args), self.out)
+        self.assertLess(time.monotonic() - start, timeout, p.stdout + p.stderr)
+        return p
+
+    def assert_one_line(self, p, code, text):
+        self.assertEqual(p.returncode, code, p.stdout + p.stderr)
+        self.assertIn(text, p.stdout + p.stderr)
+        self.assertNotIn("Traceback", p.stderr)
+
+    def test_a_sleep_loop_after_shutdown_ends(self):
+        p = self.sil("--max-sim", "2", self.script("import time\nwhile True:\n    time.sleep(1)\n"))
+        self.assert_one_line(p, 1, "calls to a sleep after the node shut down in a row")
+
+    def test_an_input_loop_ends(self):
+        p = self.sil(self.script("while True:\n    input('go? ')\n"))
+        self.assertEqual(p.returncode, 1, p.stderr[-2000:])
+        self.assertIn("calls to input() in a row", p.stdout)
+
+    def test_a_busy_loop_ends_at_the_wall_clock_limit(self):
+        p = self.sil("--max-wall", "2", self.script("while True:\n    pass\n"), timeout=30)
+        self.assertEqual(p.returncode, 1, p.stderr[-2000:])
+        self.assertIn("the wall-clock limit (--max-wall 2 s)", p.stdout)
+
+    def test_a_script_that_swallows_the_stop_still_ends(self):
+        text = ("while True:\n    try:\n        while True:\n            pass\n"
+                "    except BaseException:\n        pass\n")
+        report = os.path.join(self.out, "report.json")
+        p = self.sil("--max-wall", "1", "--report", report, self.script(text), timeout=40)
+        self.assertEqual(p.returncode, 1, p.stderr[-2000:])
+        with open(report) as f:
+            self.assertIn("wall-clock limit", json.load(f)["stopped_by"])
+
+    def test_children_end_with_the_run_and_temp_files_stay_in_out(self):
+        text = ("import subprocess, tempfile\n"
+                "p = subprocess.Popen(['sleep', '300'])\n"
+                "open('child.pid', 'w').write(str(p.pid))\n"
+                "fd, path = tempfile.mkstemp()\n"
+                "open('temp.path', 'w').write(path)\n")
+        p = self.sil(self.script(text))
+        self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
+        self.assertIn("ended 1 process(es) the script left running", p.stdout)
+        with open(os.path.join(self.out, "child.pid")) as f:
+            pid = int(f.read())
+        with open(os.path.join(self.out, "temp.path")) as f:
+            temp = f.read()
+        self.assertFalse(os.path.exists("/proc/%d" % pid), "the script's child outlived the run")
+        self.assertTrue(temp.startswith(os.path.join(self.out, "run", "tmp") + os.sep), temp)
+
+    def test_bad_scripts_and_reports_are_one_line_each(self):
+        fifo = os.path.join(self.out, "fifo.py")
+        os.mkfifo(fifo)
+        binary = os.path.join(self.out, "bin.py")
+        with open(binary, "wb") as f:
+            f.write(b"\x7fELF\x00\x01")
+        cases = [
+            ([self.script("def (:\n", "syntax.py")], 2, "syntax.py:1: not valid Python"),
+            ([binary], 2, "not Python source (binary data)"),
+            ([self.out], 2, "is a directory, not a script"),
+            ([fifo], 2, "not a regular file"),
+            ([os.path.join(self.out, "absent.py")], 2, "no such file"),
+            ([self.script("from rospy import no_such_name\n", "name.py")], 3,
+             "the twin's stand-in lacks it"),
+            (["--report", os.path.join(self.out, "no", "r.json"), self.script("x = 1\n", "ok.py")],
+             2, "--report"),
+            (["--set", "x=1", "--set", "x=2", self.script("x = 0\n", "knob.py")], 2,
+             "--set x: given twice"),
+        ]
+        for args, code, text in cases:
+            with self.subTest(args=args):
+                start = time.monotonic()
+                p = self.sil(*args)
+                self.assert_one_line(p, code, text)
+                self.assertIn("ssc sil: ", p.stdout + p.stderr)
+                self.assertLess(time.monotonic() - start, 30)
+        self.assertFalse(os.path.exists(os.path.join(self.out, "no")))
+
+    def test_a_file_size_limit_is_named_not_a_traceback(self):
+        text = "with open('big.bin', 'wb') as f:\n    f.write(b'x' * (1 << 20))\n"
+        script = self.script(text)
+        cmd = [SSC, "sil"] if SSC else [sys.executable, "-m", "ssc_twin.sil"]
+        import resource
+
+        def limit():
+            resource.setrlimit(resource.RLIMIT_FSIZE, (1 << 16, 1 << 16))
+        p = subprocess.run(cmd + ["--out", os.path.join(self.out, "run"), script], cwd=self.out,
+                           env=dict(os.environ, SSC_PYTHON=sys.executable), capture_output=True,
+                           text=True, timeout=120, preexec_fn=limit)
+        self.assert_one_line(p, 1, "the disk is full or a size limit was hit")
+
+
+class LimitsUnit(unittest.TestCase):
+    """The stuck rule alone: no simulated time for the stuck span stops the script; a waiting
+    operator does not count."""
+
+    class FakeWorld:
+        sim_time = 0.0
+
+    def test_no_simulated_time_for_the_stuck_span_stops(self):
+        from ssc_twin.sil import limits
+        w = self.FakeWorld()
+        lim = limits.Limits(w, max_wall_s=60, stuck_wall_s=0.2, max_idle_calls=10, grace_s=1,
+                            give_up=lambda: None)
+        lim._tick(None, None)
+        w.sim_time = 1.0
+        time.sleep(0.25)
+        lim._tick(None, None)  # the clock moved: progress
+        lim.waiting_for_operator = True
+        time.sleep(0.25)
+        lim._tick(None, None)  # waiting for a key press is not stuck
+        lim.waiting_for_operator = False
+        time.sleep(0.25)
+        with self.assertRaises(limits.RunLimit) as e:
+            lim._tick(None, None)
+        self.assertIn("no simulated time passed", str(e.exception))
+        with self.assertRaises(limits.RunLimit):  # raised again at every tick
+            lim._tick(None, None)
 
 
 class SilLoop(unittest.TestCase):

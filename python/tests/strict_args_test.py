@@ -157,6 +157,39 @@ class StrictArgumentsTest(unittest.TestCase):
         self.assertEqual(table["seed"].shape, (1,))
         self.assertEqual(len(table["outcome"]), 1)
 
+    def test_read_sweep_gives_back_every_fault_the_sweep_wrote(self):
+        # A writer and its reader: details holding commas, quotes, line breaks and UTF-8, as a
+        # Python controller's exception writes them, come back as text (no CSV quotes left).
+        messages = ["plain", "a, b, c", 'said "no", twice', "two\nlines", "caf\u00e9; \\x",
+                    '"', ",", "'quoted', \"both\""]
+
+        class Faulty:
+            made = [0]
+
+            def __init__(self):
+                self.message = messages[Faulty.made[0] % len(messages)]
+                Faulty.made[0] += 1
+
+            def __call__(self, reading):
+                raise ValueError(self.message)
+
+        csv = os.path.join(self.tmp, "faults.csv")
+        ssc_twin.sweep(pref=[100], beta=[2], step_mm=[7.5], repeats=len(messages), threads=1,
+                       out_csv=csv, controller=Faulty)
+        table = ssc_twin.read_sweep(csv)
+        self.assertEqual(list(table["outcome"]), ["controller_fault"] * len(messages))
+        for detail, message in zip(table["detail"], messages):
+            self.assertIn("ValueError: " + message.replace("\n", " "), detail)
+            self.assertFalse(detail.startswith('"'), detail)
+
+    def test_ctrl_c_inside_a_python_controller_raises(self):
+        def interrupted(reading):
+            raise KeyboardInterrupt
+
+        with self.assertRaises(KeyboardInterrupt):
+            ssc_twin.run_trial(scene="disk_benchmark_fast", controller=interrupted,
+                               keep_log=False)
+
     def test_compare_tcp_offset_in_mm(self):
         rec = os.path.join(self.tmp, "rec")
         ssc_twin.write_robot_log(rec)

@@ -238,7 +238,7 @@ class ReliabilityTest(unittest.TestCase):
         self.assertIn("%d of 3 trials already in" % len(kept), r.stdout)
         self.assertEqual(r.stdout.count(" seed 1 "), 3 - len(kept))  # only the others ran
         final = rows(table)
-        timing = ("step_cost_us",)
+        timing = ("step_cost_us", "row_digest")  # the digest seals the timing too
         same = lambda t: [{k: v for k, v in x.items() if k not in timing} for x in t]
         self.assertEqual(same(final), same(rows(os.path.join(whole, "objects.csv"))))
         for x in kept:  # the rows of the killed run, not recomputed
@@ -253,6 +253,21 @@ class ReliabilityTest(unittest.TestCase):
         r = run(args + ["--out", out])
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertIn("seed '7' is not one of this run's", r.stderr)
+        self.assertEqual(r.stdout.count(" seed 1 "), 1)
+        self.assertEqual(same(rows(table)), same(final))
+        # An outcome edited to contradict its own detail: the row is not as the study wrote it.
+        with open(table) as f:
+            lines = f.read().splitlines()
+        edited = next(csv.reader([lines[1]]))
+        self.assertNotEqual(edited[4], "failure_I", edited)
+        edited[4] = "failure_I"
+        buf = io.StringIO()
+        csv.writer(buf, lineterminator="").writerow(edited)
+        with open(table, "w") as f:
+            f.write("\n".join([lines[0], buf.getvalue()] + lines[2:]) + "\n")
+        r = run(args + ["--out", out])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("row_digest does not match the row", r.stderr)
         self.assertEqual(r.stdout.count(" seed 1 "), 1)
         self.assertEqual(same(rows(table)), same(final))
         # Other options would mix rows: refused, naming the difference.
@@ -349,6 +364,81 @@ class ReliabilityTest(unittest.TestCase):
         if best:
             self.assertIn(best[0].split(",")[0][len("best score: "):],
                           [x["label"] for x in ran])
+
+    # A command owns its folder before it touches anything in it.
+
+    def test_tune_owns_its_folder_before_touching_an_evaluation(self):
+        out = os.path.join(self.tmp, "tune_own")
+        args = ["tune", "--controller", "fast", "--search", "step_max_mm=8:12", "--seeds", "1",
+                "--evals", "2", "--timeout", "2", "--threads", "1", "--reference", "none",
+                "--no-plot", "--out", out]
+        first = run(args)
+        self.assertEqual(first.returncode, 0, first.stderr)
+        eval1 = os.path.join(out, "evals", "eval_1", "sweep.csv")
+        with open(eval1) as f:
+            kept = f.read()
+        table = rows(os.path.join(out, "tune.csv"))
+        # Other options: refused before an evaluation's rows are touched, naming the difference.
+        r = run(args[:-2] + ["--seeds", "2", "--out", out])
+        self.assertEqual(r.returncode, 1, r.stdout)
+        self.assertIn("seeds: 1 in the file, 2 now", r.stderr)
+        with open(eval1) as f:
+            self.assertEqual(f.read(), kept)
+        self.assertEqual(rows(os.path.join(out, "tune.csv")), table)
+        # A second search on the same folder while one runs: refused, naming the first.
+        p = subprocess.Popen([SSC] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             text=True)
+        try:
+            deadline = time.time() + 30
+            while not os.path.exists(os.path.join(out, "tune.csv.lock")):
+                self.assertLess(time.time(), deadline, "the first search never took the lock")
+                time.sleep(0.01)
+            r = run(args)
+            self.assertEqual(r.returncode, 1, r.stdout)
+            self.assertIn("pid %d" % p.pid, r.stderr)
+        finally:
+            p.communicate(timeout=120)
+        # The same options again: the search's own rows resume, every evaluation as before.
+        again = run(args)
+        self.assertEqual(again.returncode, 0, again.stderr)
+        self.assertEqual(rows(os.path.join(out, "tune.csv")), table)
+        self.assertEqual(leftovers(out), [])
+
+    # Results that cannot be right are refused.
+
+    def test_a_scene_with_two_cups_is_refused(self):
+        with open(os.path.join(SRC, "scenes", "disk_benchmark_gantry.xml")) as f:
+            xml = f.read()
+        attach = '<attach model="ssc_tool" body="tool" prefix="ssc_"/>'
+        self.assertIn(attach, xml)
+        xml = xml.replace(attach, attach + '<attach model="ssc_tool" body="tool" prefix="two_"/>')
+        start, end = xml.index("<keyframe>"), xml.index("</keyframe>") + len("</keyframe>")
+        path = os.path.join(SRC, "scenes", ".reliability_%d_two_cups.xml" % os.getpid())
+        with open(path, "w") as f:
+            f.write(xml[:start] + xml[end:])
+        self.scenes.append(path)
+        r = run(["trial", "--scene", path, "--out", os.path.join(self.tmp, "two_cups")])
+        self.assertEqual(r.returncode, 1, r.stdout)
+        self.assertIn("2 ssc.chamber_pressure sensors", r.stderr)
+        self.assertFalse(os.path.exists(os.path.join(self.tmp, "two_cups")))
+
+    def test_stability_with_no_step_unchanged_says_so(self):
+        # Euler at 8 ms against the RK4 0.5 ms reference: nothing unchanged, or a real step.
+        out = os.path.join(self.tmp, "stability_none")
+        r = run(["stability", "--scene", "disk_benchmark_fast", "--steps-ms", "8",
+                 "--threads", "1", "--out", out])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        judged = rows(os.path.join(out, "stability.csv"))
+        for integrator in {x["integrator"] for x in judged}:
+            unchanged = [x for x in judged if x["integrator"] == integrator
+                         and x["unchanged"] == "1"]
+            line = [ln for ln in r.stdout.splitlines() if ln.startswith(integrator + ": ")]
+            self.assertEqual(len(line), 1, r.stdout)
+            if unchanged:
+                self.assertIn("largest time step with unchanged results: 8.00 ms", line[0])
+            else:
+                self.assertIn("no time step tried gave unchanged results", line[0])
+        self.assertNotIn("0.00 ms", r.stdout)
 
     def test_a_full_disk_fails_compare_whole(self):
         disk = os.path.join(self.tmp, "full")

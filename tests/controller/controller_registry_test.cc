@@ -95,6 +95,34 @@ TEST(ControllerRegistryTest, UnknownKeysBadValuesAndRepeatsAreRefusedNamingTheKe
   }
 }
 
+// Counts and on/off switches take whole numbers only: 0.0001 is not "on", 8.5 points is no count.
+TEST(ControllerRegistryTest, WholeKeysRefuseFractionsNamingTheKey) {
+  ControllerChoice choice;
+  std::string error;
+  for (const char* bad : {"tare_in_air=0.0001", "tare_in_air=0.5", "timing=0.9"}) {
+    EXPECT_FALSE(ParseControllerChoice("fast", bad, &choice, &error)) << bad;
+    EXPECT_NE(error.find("not a whole number"), std::string::npos) << bad << ": " << error;
+  }
+  EXPECT_FALSE(ParseControllerChoice("edge_track", "fit_points=8.5", &choice, &error));
+  EXPECT_NE(error.find("fit_points"), std::string::npos) << error;
+  EXPECT_TRUE(ParseControllerChoice("fast", "tare_in_air=1,timing=0", &choice, &error)) << error;
+  // Values set directly (a tune point, a binding) go through the same check.
+  ASSERT_TRUE(ParseControllerChoice("fast", "", &choice, &error));
+  const ControllerType* fast = FindControllerType("fast");
+  for (size_t i = 0; i < fast->keys.size(); ++i) {
+    if (fast->keys[i].key == "tare_in_air") choice.values[i] = 0.0001;
+  }
+  EXPECT_NE(choice.Validate().find("tare_in_air"), std::string::npos) << choice.Validate();
+  // Every switch of every controller is a whole key.
+  for (const ControllerType& t : ControllerTypes()) {
+    for (const ControllerParamKey& k : t.keys) {
+      if (k.what.rfind("1: ", 0) == 0) {
+        EXPECT_TRUE(k.whole) << t.name << "." << k.key;
+      }
+    }
+  }
+}
+
 TEST(ControllerRegistryTest, ThePublishedLawIsTheDefaultAndTakesNoParameters) {
   ControllerChoice choice;
   EXPECT_TRUE(choice.IsPublished());

@@ -219,6 +219,29 @@ TEST(TrialGoalTest, GoalPointFollowsTheEdgeAndIgnoresNearbyParts) {
   EXPECT_FALSE(blind.reached());
 }
 
+// A wedge thinner than the cup: its far side, and the goal on it, pass under the body at the
+// start. The tracked position starts at the start's own arc, and the goal counts only after the
+// cup moved along the edge; standing still, nothing is reached.
+TEST(TrialGoalTest, AGoalPointNeedsAPathFromTheStart) {
+  const double a = M_PI / 180;  // a 1 deg wedge, apex at the origin, edges 60 mm long
+  auto edge = std::make_shared<ContourPath>(ContourPath::Polygon(
+      {{-0.060, 0}, {0, 0}, {-0.060 * std::cos(a), 0.060 * std::sin(a)}}, false));
+  TrialGoal goal = TrialGoal::GoalPoint(0.100);
+  goal.band_m = kFollowBandM;
+  goal.start_arc_m = 0.040;
+  ASSERT_EQ(goal.Validate(), "");
+  GoalTracker still;
+  const Point2 start{-0.020, 0.005};  // 20 mm before the apex, 5 mm toward the far side
+  still.Start(goal, edge, start);
+  EXPECT_NEAR(still.arc_m(), 0.040, 1e-9);  // its own edge, not the far side that passes nearer
+  for (int i = 0; i < 50; ++i) still.Add(start);
+  EXPECT_NE(still.status(), GoalStatus::kReached) << still.Detail();
+  EXPECT_EQ(still.path_m(), 0);
+  // A start arc past the goal is refused.
+  goal.start_arc_m = 0.2;
+  EXPECT_NE(goal.Validate().find("start_arc_m"), std::string::npos);
+}
+
 // Issue 12: following means the edge stays under the cup body all the way round.
 TEST(TrialGoalTest, LeavingTheBandLosesTheGoal) {
   const Point2 c{0.65, 0};

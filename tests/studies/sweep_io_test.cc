@@ -8,11 +8,15 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "common/csv_cell.h"
 #include "common/output_file.h"
+#include "studies/controller_tune.h"
+#include "studies/object_trials.h"
 #include "studies/trial_io.h"
 
 namespace ssc {
@@ -178,10 +182,83 @@ TEST_F(SweepIoTest, AStudyTableResumesByTheSweepsRules) {
   std::ifstream in(table);
   std::stringstream text;
   text << in.rdbuf();
-  EXPECT_EQ(text.str(), header + "\ndisk,1,success\nhole,1,timeout\nhole,2,success\n");
+  // Each row sealed with its digest (FNV-1a of the rest of the row, 16 hex digits).
+  std::string unsealed;
+  std::stringstream lines(text.str());
+  for (std::string line; std::getline(lines, line);) {
+    const size_t comma = line.rfind(',');
+    ASSERT_NE(comma, std::string::npos) << line;
+    EXPECT_EQ(line.size() - comma - 1, line.rfind("row_digest") == comma + 1 ? 10u : 16u) << line;
+    unsealed += line.substr(0, comma) + "\n";
+  }
+  EXPECT_EQ(unsealed, header + "\ndisk,1,success\nhole,1,timeout\nhole,2,success\n");
+  // A row changed since it was written (an outcome edited by hand) is not trusted.
+  {
+    std::string edited = text.str();
+    const size_t at = edited.find("hole,1,timeout");
+    ASSERT_NE(at, std::string::npos);
+    edited.replace(at, 14, "hole,1,success");
+    std::ofstream(table, std::ios::trunc) << edited;
+    ResumableTable t;
+    ASSERT_TRUE(t.Open(table, header, manifest, check, "test", &error)) << error;
+    EXPECT_EQ(t.Kept("hole 1"), "");
+    EXPECT_EQ(t.Kept("disk 1"), "disk,1,success");
+    EXPECT_EQ(t.kept(), 2u);
+  }
   ResumableTable other;
   EXPECT_FALSE(other.Open(table, header, {{"seeds", "3"}}, check, "test", &error));
   EXPECT_NE(error.find("seeds: 2 in the file, 3 now"), std::string::npos) << error;
+}
+
+// Every table the project writes and every reader of it agree on a free-text cell: random
+// details with commas, quotes, line breaks and UTF-8 come back whole from each writer through
+// the resume reader (one whole row, the header's field count) and CsvCellText; a line break
+// becomes a space (rows never span lines). A fixed seed: the same 400 cases each run.
+TEST_F(SweepIoTest, EveryWriterAndReaderAgreeOnFreeText) {
+  std::mt19937 rng(20261128);
+  const std::vector<std::string> alphabet = {"a", "Z", "0",  ",",        "\"", "\"\"", "\n", "\r",
+                                             " ", ";", "\\", "\xc3\xa9", "'",  "=",    ":"};
+  for (int n = 0; n < 400; ++n) {
+    std::string detail, expected;
+    const int length = static_cast<int>(rng() % 40);
+    for (int i = 0; i < length; ++i) {
+      const std::string& piece = alphabet[rng() % alphabet.size()];
+      detail += piece;
+      expected += piece == "\n" || piece == "\r" ? " " : piece;
+    }
+    TrialResult result;
+    result.detail = detail;
+    ObjectTrialRow object;
+    object.object = "corner_a090";
+    object.kind = "corner";
+    object.tier = "gantry";
+    object.result.detail = detail;
+    TuneEvaluation tuned;
+    tuned.label = "eval 1";
+    tuned.controller = "fast:" + detail;
+    tuned.refused = "x" + detail;  // never empty: an empty reason means the point ran
+    const std::vector<std::pair<std::string, std::string>> tables = {
+        {SweepCsvHeader(), SweepCsvRow("disk_benchmark_fast", TrialConfig(), 1, result)},
+        {ObjectTableHeader(), ObjectTableRow(object)},
+        {TuneCsvHeader({}), TuneCsvRow(tuned, 0)}};
+    for (const auto& [header, row] : tables) {
+      std::string last, second;
+      const CsvRows rows = ParseCsvRows(header + "\n" + row + "\n", header,
+                                        [&](const std::vector<std::string_view>& f, int) {
+                                          last = CsvCellText(f.back());
+                                          second = CsvCellText(f[1]);
+                                          return true;
+                                        });
+      ASSERT_EQ(rows.lines.size(), 1u) << "detail '" << detail << "': " << row;
+      EXPECT_EQ(rows.dropped, 0);
+      if (header == TuneCsvHeader({})) {
+        EXPECT_EQ(second, "fast:" + expected) << row;
+        EXPECT_EQ(last, "refused: x" + expected) << row;
+      } else {
+        EXPECT_EQ(last, expected) << row;
+      }
+    }
+  }
 }
 
 TEST_F(SweepIoTest, ResumingWithOtherOptionsIsRefusedNamingTheDifference) {

@@ -14,16 +14,18 @@ modules), then everything installed. Around it:
 import argparse
 import ast
 import builtins
+import errno
 import inspect
 import json
 import os
 import sys
+import tempfile
 import time as _time
 import traceback
 import types
 
 from .. import _core
-from . import noop, world as world_mod
+from . import limits as limits_mod, noop, world as world_mod
 
 STANDINS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "standins")
 
@@ -55,6 +57,9 @@ def parse_args(argv):
                         "on this machine (with --plots: the real matplotlib draws)")
     p.add_argument("--max-sim", type=max_sim, default=600.0, metavar="S",
                    help="shut the node down after S simulated seconds (default 600)")
+    p.add_argument("--max-wall", type=max_wall, default=DEFAULT_MAX_WALL_S, metavar="S",
+                   help="end the script after S wall-clock seconds, whatever it does "
+                        "(default %(default)g)")
     p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="run as if the script's knob line read NAME = VALUE (the first plain "
                         "assignment to NAME in main(), else at module level); the file is "
@@ -73,6 +78,15 @@ def parse_args(argv):
 # ssc's seeds: whole numbers doubles hold exactly (common/strict_number.h), as every ssc --seed.
 MAX_SEED = _core.max_seed
 MAX_SIM_S = 86400.0
+DEFAULT_MAX_WALL_S = 3600.0
+# A script that makes no simulated time pass for this long is stuck in a loop of its own (a busy
+# loop, or input() or a sleep after the node shut down): it is ended.
+STUCK_WALL_S = 60.0
+# Calls into the twin that pass no simulated time (input() answered, a sleep after shutdown) in
+# a row before the script counts as looping on them.
+MAX_IDLE_CALLS = 1000
+# After a limit is hit, a script that swallows the stop gets this long before the runner leaves.
+STOP_GRACE_WALL_S = 10.0
 
 
 def seed(text):
@@ -95,6 +109,16 @@ def max_sim(text):
     return value
 
 
+def max_wall(text):
+    try:
+        value = float(text)
+    except ValueError:
+        value = float("nan")
+    if not 0.0 < value <= MAX_SIM_S:
+        raise argparse.ArgumentTypeError("%r: wall-clock seconds in (0, %g]" % (text, MAX_SIM_S))
+    return value
+
+
 def pause_cost(text):
     if text == world_mod.MEASURED:
         return text
@@ -109,10 +133,14 @@ def pause_cost(text):
 
 def apply_knobs(tree, knobs, script):
     """Replaces the value of the first plain `NAME = ...` in main() (else at module level)."""
+    seen = set()
     for knob in knobs:
         if "=" not in knob:
             raise BadInput("--set %r: expected NAME=VALUE" % knob)
         name, value = (s.strip() for s in knob.split("=", 1))
+        if name in seen:  # a typo, not an override: which value was meant is unknowable
+            raise BadInput("--set %s: given twice" % name)
+        seen.add(name)
         try:
             new_value = ast.parse(value, mode="eval").body
         except SyntaxError:
@@ -212,114 +240,226 @@ def _virtual_time(w):
     return saved
 
 
-def run(opts):
-    script = os.path.abspath(opts.script)
+def _fail(message, status):
+    print("ssc sil: %s" % message, file=sys.stderr)
+    return status
+
+
+def check_inputs(opts):
+    """The script, --out and --report, checked before anything runs or is written: None, or the
+    exit status after a 'ssc sil:' line."""
+    script = opts.script
+    if not os.path.lexists(script):
+        return _fail("%s: no such file (the lab script to run)" % script, EXIT_BAD_INPUT)
+    if os.path.isdir(script):
+        return _fail("%s: is a directory, not a script (give the .py file)" % script,
+                     EXIT_BAD_INPUT)
     if not os.path.isfile(script):
-        print("ssc sil: no such script: %s" % opts.script, file=sys.stderr)
-        return EXIT_BAD_INPUT
+        return _fail("%s: not a regular file (a FIFO, device, socket or dangling link): give "
+                     "the .py file" % script, EXIT_BAD_INPUT)
     out = os.path.abspath(opts.out)
-    tmp_dir = os.path.join(out, "tmp")
     if os.path.exists(out) and not os.path.isdir(out):
-        print("ssc sil: --out: %r exists and is not a directory" % opts.out, file=sys.stderr)
-        return EXIT_BAD_INPUT
-    with open(script) as f:
-        source = f.read()
+        return _fail("--out: %r exists and is not a directory" % opts.out, EXIT_BAD_INPUT)
+    if opts.report:
+        report = os.path.abspath(opts.report)
+        parent = os.path.dirname(report)
+        if os.path.isdir(report):
+            return _fail("--report: %r is a directory (give a file to write)" % opts.report,
+                         EXIT_BAD_INPUT)
+        if not os.path.isdir(parent):
+            return _fail("--report: %r: its folder %s does not exist" % (opts.report, parent),
+                         EXIT_BAD_INPUT)
+        if not os.access(parent, os.W_OK) or (os.path.exists(report)
+                                              and not os.access(report, os.W_OK)):
+            return _fail("--report: %r cannot be written (permission denied)" % opts.report,
+                         EXIT_BAD_INPUT)
+    return None
+
+
+def compile_script(opts):
+    """The script's code with its knobs set, or (None, status) after a 'ssc sil:' line."""
+    script = os.path.abspath(opts.script)
+    try:
+        with open(script, "rb") as f:
+            raw = f.read()
+    except OSError as e:
+        return None, _fail("%s: cannot read: %s" % (opts.script, e.strerror), EXIT_BAD_INPUT)
+    if b"\0" in raw:
+        return None, _fail("%s: not Python source (binary data)" % opts.script, EXIT_BAD_INPUT)
+    try:
+        source = raw.decode("utf-8")
+    except UnicodeDecodeError as e:
+        return None, _fail("%s: not Python source (not UTF-8 text at byte %d)" % (
+            opts.script, e.start), EXIT_BAD_INPUT)
     try:
         tree = apply_knobs(ast.parse(source, filename=script), opts.set, opts.script)
-    except BadInput as e:
-        print("ssc sil: %s" % e, file=sys.stderr)
-        return EXIT_BAD_INPUT
-    code = compile(tree, script, "exec")
+        return compile(tree, script, "exec"), None
+    except SyntaxError as e:
+        return None, _fail("%s:%s: not valid Python: %s" % (opts.script, e.lineno, e.msg),
+                           EXIT_BAD_INPUT)
+    except (BadInput, ValueError) as e:
+        return None, _fail(str(e), EXIT_BAD_INPUT)
 
+
+def make_world(opts, tmp_dir):
+    """The twin's world, or (None, status) after a 'ssc sil:' line."""
     try:  # the scene, checked before anything is written (the C++ loader's message)
         w = world_mod.install(world_mod.World(scene=opts.scene, seed=opts.seed,
                                               realtime=opts.realtime, tmp_dir=tmp_dir,
                                               pause_cost_s=opts.pause_cost, verbose=opts.verbose))
     except (RuntimeError, ValueError) as e:
-        print("ssc sil: --scene: %s" % e, file=sys.stderr)
-        return EXIT_ERROR
+        return None, _fail("--scene: %s" % e, EXIT_ERROR)
     except OSError as e:  # the World makes OUT/tmp
-        print("ssc sil: --out: cannot create %s: %s" % (e.filename or tmp_dir, e.strerror),
-              file=sys.stderr)
-        return EXIT_BAD_INPUT
+        return None, _fail("--out: cannot create %s: %s" % (e.filename or tmp_dir, e.strerror),
+                           EXIT_BAD_INPUT)
     if opts.viewer:
         from .viewer import Viewer
         try:
             w.viewer = Viewer(w)
         except Exception as e:  # no display, no OpenGL
-            print("ssc sil: --viewer: cannot open the viewer (%s)" % e, file=sys.stderr)
-            return EXIT_ERROR
-    # The node shuts down at the simulated time limit (a script waiting forever ends).
-    w._push(opts.max_sim, lambda: setattr(w, "shutdown", True), 0)
+            return None, _fail("--viewer: cannot open the viewer (%s)" % e, EXIT_ERROR)
+    return w, None
 
-    sys.path[:0] = [STANDINS, os.path.dirname(script)]
-    for name in list(sys.modules):  # a real rospy imported earlier must not shadow ours
-        if name.split(".")[0] in ("rospy", "tf", "rtde_control", "rtde_receive", "std_msgs",
-                                  "geometry_msgs", "sensor_msgs", "suction_cup", "tae_psoc",
-                                  "netft_utils"):
-            del sys.modules[name]
-    noop.install(plots=opts.plots)
-    if opts.plots:
-        import matplotlib.pyplot as pyplot
-        pyplot.pause = noop.real_pause(pyplot)
-    redirect = TmpRedirect(tmp_dir, out)
-    home = os.environ.get("HOME")
-    os.environ["HOME"] = out
-    saved_time = None if opts.realtime else _virtual_time(w)
-    saved_input = builtins.input
-    if not opts.interactive:
-        def answer(prompt=""):
-            print("%s[ssc sil: Enter]" % prompt)
-            return ""
-        builtins.input = answer
-    saved_argv = sys.argv
-    sys.argv = [script] + list(opts.args)
-    status, problem = EXIT_OK, ""
-    wall0 = _time.perf_counter()
-    redirect.install()
-    w.wall_start = _time.perf_counter() - w.sim_time  # real time is paced from the script's start
-    try:
-        exec(code, {"__name__": "__main__", "__file__": script, "__builtins__": builtins})
-    except SystemExit as e:
-        status = EXIT_OK if e.code in (None, 0) else EXIT_ERROR
-        problem = "" if status == EXIT_OK else "SystemExit(%r)" % (e.code,)
-    except ModuleNotFoundError as e:
-        status, problem = EXIT_MISSING, "module %s (no stand-in, not installed)" % e.name
-    except (AttributeError, NotImplementedError) as e:
+
+STANDIN_MODULES = ("rospy", "tf", "rtde_control", "rtde_receive", "std_msgs", "geometry_msgs",
+                   "sensor_msgs", "suction_cup", "tae_psoc", "netft_utils")
+
+
+def classify_failure(e, script):
+    """(status, problem) for an exception that ended the script."""
+    if isinstance(e, SystemExit):
+        ok = e.code in (None, 0)
+        return (EXIT_OK, "") if ok else (EXIT_ERROR, "SystemExit(%r)" % (e.code,))
+    if isinstance(e, limits_mod.RunLimit):
+        return EXIT_ERROR, "stopped: %s" % e
+    if isinstance(e, ModuleNotFoundError):
+        return EXIT_MISSING, "module %s (no stand-in, not installed)" % e.name
+    if isinstance(e, ImportError) and (e.name or "").split(".")[0] in STANDIN_MODULES:
+        return EXIT_MISSING, "%s (the twin's stand-in lacks it)" % e
+    if isinstance(e, OSError) and e.errno in (errno.ENOSPC, errno.EDQUOT, errno.EFBIG):
+        return EXIT_ERROR, "cannot write %s: %s (the disk is full or a size limit was hit)" % (
+            e.filename or "a file", e.strerror)
+    if isinstance(e, (AttributeError, NotImplementedError)):
         traceback.print_exc()
         lab = lab_code_inconsistency(e, os.path.dirname(script))
         if lab:
-            status, problem = EXIT_ERROR, lab
-        else:
-            where = traceback.extract_tb(e.__traceback__)[-1]
-            status, problem = EXIT_MISSING, "%s at %s:%d: %s" % (
-                type(e).__name__, os.path.basename(where.filename), where.lineno, e)
-    except BaseException as e:  # the script's own failure: report it, as python would
-        status, problem = EXIT_ERROR, "%s: %s" % (type(e).__name__, e)
-        traceback.print_exc()
+            return EXIT_ERROR, lab
+        where = traceback.extract_tb(e.__traceback__)[-1]
+        return EXIT_MISSING, "%s at %s:%d: %s" % (
+            type(e).__name__, os.path.basename(where.filename), where.lineno, e)
+    traceback.print_exc()  # the script's own failure: report it, as python would
+    return EXIT_ERROR, "%s: %s" % (type(e).__name__, e)
+
+
+class ScriptSandbox:
+    """What the script sees while it runs, installed and taken back whole: the stand-ins on its
+    path, /tmp and ~ under OUT (tempfile too), virtual time, input() answered, its argv."""
+
+    def __init__(self, opts, w, limits, script, out, tmp_dir):
+        self.opts, self.w, self.limits = opts, w, limits
+        self.script, self.out, self.tmp_dir = script, out, tmp_dir
+        self.saved = {}
+
+    def install(self):
+        opts, w = self.opts, self.w
+        sys.path[:0] = [STANDINS, os.path.dirname(self.script)]
+        for name in list(sys.modules):  # a real rospy imported earlier must not shadow ours
+            if name.split(".")[0] in STANDIN_MODULES:
+                del sys.modules[name]
+        noop.install(plots=opts.plots)
+        if opts.plots:
+            import matplotlib.pyplot as pyplot
+            pyplot.pause = noop.real_pause(pyplot)
+        self.redirect = TmpRedirect(self.tmp_dir, self.out)
+        self.saved["env"] = {k: os.environ.get(k) for k in ("HOME", "TMPDIR")}
+        os.environ["HOME"] = self.out
+        os.environ["TMPDIR"] = self.tmp_dir
+        self.saved["tempdir"] = tempfile.tempdir
+        tempfile.tempdir = self.tmp_dir
+        self.saved["time"] = None if opts.realtime else _virtual_time(w)
+        self.saved["input"] = builtins.input
+        builtins.input = self._input
+        self.saved["argv"] = sys.argv
+        sys.argv = [self.script] + list(opts.args)
+        w.on_idle = self.limits.idle_call
+        self.redirect.install()
+        self.limits.install()
+
+    def _input(self, prompt=""):
+        if self.opts.interactive:
+            self.limits.waiting_for_operator = True
+            try:
+                return self.saved["input"](prompt)
+            finally:
+                self.limits.waiting_for_operator = False
+        self.limits.idle_call("input()")
+        print("%s[ssc sil: Enter]" % prompt)
+        return ""
+
+    def uninstall(self):
+        self.limits.uninstall()
+        self.redirect.uninstall()
+        if self.saved["time"]:
+            _time.time, _time.sleep = self.saved["time"]
+        builtins.input = self.saved["input"]
+        sys.argv = self.saved["argv"]
+        tempfile.tempdir = self.saved["tempdir"]
+        for k, v in self.saved["env"].items():
+            if v is None:
+                os.environ.pop(k, None)
+            else:
+                os.environ[k] = v
+        self.w.on_idle = None
+
+
+def run_script(code, script, sandbox):
+    """Runs the script in the sandbox: (status, problem)."""
+    runner_pid = os.getpid()
+    status, problem = EXIT_OK, ""
+    sandbox.install()
+    try:
+        try:
+            exec(code, {"__name__": "__main__", "__file__": script, "__builtins__": builtins})
+        finally:
+            if os.getpid() != runner_pid:  # a child the script forked: it ends here, silently
+                os._exit(0)
+    except BaseException as e:
+        status, problem = classify_failure(e, script)
     finally:
-        redirect.uninstall()
-        wall = _time.perf_counter() - wall0
-        if saved_time:
-            _time.time, _time.sleep = saved_time
-        builtins.input = saved_input
-        sys.argv = saved_argv
-        if home is not None:
-            os.environ["HOME"] = home
-        w.logger.set_enabled(False)
-        if w.viewer is not None:
-            w.viewer.close()
+        sandbox.uninstall()
+    return status, problem
+
+
+def write_report(opts, summary):
+    """--report, whole or not at all: False after a 'ssc sil:' line."""
+    tmp = opts.report + ".tmp%d" % os.getpid()
+    try:
+        with open(tmp, "w") as f:
+            json.dump(summary, f, indent=1)
+        os.replace(tmp, opts.report)
+        return True
+    except OSError as e:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+        _fail("--report: cannot write %s: %s" % (opts.report, e.strerror), EXIT_ERROR)
+        return False
+
+
+def summarize(opts, script, out, w, status, problem, wall, limits, children):
     mats = sorted(os.path.join(dp, f) for dp, _, fs in os.walk(out) for f in fs
                   if f.endswith(".mat"))
     summary = {"script": script, "status": status, "problem": problem,
                "sim_time_s": round(w.sim_time, 4), "wall_time_s": round(wall, 3),
                "logger_recordings": w.logger.started, "mat_files": mats,
                "hit_time_limit": w.shutdown and w.sim_time >= opts.max_sim - 1e-9,
+               "stopped_by": limits.reason, "children_ended": children,
                "plt_pause": w.pause_summary()}
     print("ssc sil: %s: %s; %.2f s simulated in %.2f s wall%s" % (
         os.path.basename(script), "finished" if status == EXIT_OK else
         ("missing interface: " + problem if status == EXIT_MISSING else "failed: " + problem),
         w.sim_time, wall, " (stopped at --max-sim)" if summary["hit_time_limit"] else ""))
+    if children:
+        print("ssc sil: ended %d process(es) the script left running" % children)
     ps = summary["plt_pause"]
     if ps:
         print("ssc sil: plt.pause: %d calls; the script's CPU per call (median, this machine): "
@@ -329,16 +469,57 @@ def run(opts):
                   else "the argument + %g s" % ps["cost"]))
     for m in mats:
         print("ssc sil: saved %s" % m)
-    if opts.report:
-        with open(opts.report, "w") as f:
-            json.dump(summary, f, indent=1)
+    return summary
+
+
+def run(opts):
+    bad = check_inputs(opts)
+    if bad is not None:
+        return bad
+    script = os.path.abspath(opts.script)
+    out = os.path.abspath(opts.out)
+    tmp_dir = os.path.join(out, "tmp")
+    code, bad = compile_script(opts)
+    if code is None:
+        return bad
+    w, bad = make_world(opts, tmp_dir)
+    if w is None:
+        return bad
+    # The node shuts down at the simulated time limit (a script waiting forever ends).
+    w._push(opts.max_sim, lambda: setattr(w, "shutdown", True), 0)
+    wall0 = _time.perf_counter()
+    finish = {}
+
+    def give_up():  # a script that swallowed the stop: write what there is and leave
+        sandbox.uninstall()
+        finish["status"], finish["problem"] = EXIT_ERROR, "stopped: %s" % limits.reason
+        return leave(_time.perf_counter() - wall0, hard=True)
+
+    def leave(wall, hard=False):
+        children = limits_mod.end_children(os.getpid())
+        summary = summarize(opts, script, out, w, finish["status"], finish["problem"], wall,
+                            limits, children)
+        ok = write_report(opts, summary) if opts.report else True
+        status = finish["status"] if ok else EXIT_ERROR
+        if hard or w.viewer is not None:
+            # The passive viewer's GL thread does not survive the interpreter's teardown (a hang
+            # or a crash in about half the runs under Xvfb): everything is written; leave now.
+            sys.stdout.flush()
+            sys.stderr.flush()
+            os._exit(status)
+        return status
+
+    limits = limits_mod.Limits(w, opts.max_wall, STUCK_WALL_S, MAX_IDLE_CALLS,
+                               STOP_GRACE_WALL_S, give_up)
+    limits_mod.watch_forks()
+    sandbox = ScriptSandbox(opts, w, limits, script, out, tmp_dir)
+    w.wall_start = _time.perf_counter() - w.sim_time  # real time is paced from the script's start
+    finish["status"], finish["problem"] = run_script(code, script, sandbox)
+    wall = _time.perf_counter() - wall0
+    w.logger.set_enabled(False)
     if w.viewer is not None:
-        # The passive viewer's GL thread does not survive the interpreter's teardown (a hang or
-        # a crash in about half the runs under Xvfb): everything is written; leave now.
-        sys.stdout.flush()
-        sys.stderr.flush()
-        os._exit(status)
-    return status
+        w.viewer.close()
+    return leave(wall)
 
 
 def main(argv=None):

@@ -143,6 +143,7 @@ class World:
         self.pump_duty = 0
         self.sampling = False                # the pressure board streams after its START command
         self.shutdown = False
+        self.on_idle = None                  # called by a sleep after shutdown (runner's limits)
         self.subscribers = {}                # topic -> [(callback, args)]
         self.published_types = {}            # topic -> message class (the master's topic list)
         self.services = {}
@@ -181,6 +182,8 @@ class World:
         try:
             while True:
                 if self.shutdown:
+                    if self.on_idle is not None:
+                        self.on_idle("a sleep after the node shut down")
                     return
                 t_next = self._events[0][0] if self._events else t_s
                 t_stop = min(t_next, t_s)
