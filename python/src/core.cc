@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "common/exit_codes.h"
 #include "common/strict_number.h"
 #include "common/tool_names.h"
 #include "compare/comparison.h"
@@ -1344,6 +1345,13 @@ NB_MODULE(_core, m) {
   m.attr("LAB_DISK_CENTRE_BASE_LINK_M") = nb::make_tuple(kLabDiskCentreX, kLabDiskCentreY);
   m.attr("LAB_DISK_ENGAGE_Z_M") = kLabDiskEngageZ;
   m.attr("TOOL_CENTRE_OFFSET_M") = kToolCentreOffsetM;
+  // How a trial ends (controller/pure/trial_outcome.h, trial_goal.h), for the SIL's verdict.
+  nb::dict exit_codes;
+  for (const ExitCodeRow& row : kExitCodeTable) exit_codes[row.name] = static_cast<int>(row.code);
+  m.attr("EXIT_CODES") = exit_codes;  // common/exit_codes.h
+  m.attr("OFF_EDGE_PA") = TrialThresholds{}.off_edge_pa;
+  m.attr("GRASP_PA") = TrialThresholds{}.grasp_pa;
+  m.attr("LOOP_SWEEP_DEG") = kLoopSweepDeg;
   m.def("write_lab_mat", &WriteLabMat, "recording"_a, "mat_dir"_a, "append_txt"_a, "args"_a,
         "The lab's DataLog_<stamp>_<append_txt>.mat from a logger recording (folder or one of "
         "its CSVs) and the script's arguments (Pref, beta, d_lat, ..., edgeFollowing_history "

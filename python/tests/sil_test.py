@@ -8,6 +8,7 @@ skipped, saying so, without one.
 """
 import importlib
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -276,7 +277,9 @@ class SilBounds(unittest.TestCase):
                 "fd, path = tempfile.mkstemp()\n"
                 "open('temp.path', 'w').write(path)\n")
         p = self.sil(self.script(text))
-        self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
+        # The script ran to its end without touching anything: the trial failed (exit 5).
+        self.assertEqual(p.returncode, 5, p.stdout + p.stderr)
+        self.assertIn("the trial: never touched the object", p.stdout)
         self.assertIn("ended 1 process(es) the script left running", p.stdout)
         with open(os.path.join(self.out, "child.pid")) as f:
             pid = int(f.read())
@@ -292,12 +295,12 @@ class SilBounds(unittest.TestCase):
         with open(binary, "wb") as f:
             f.write(b"\x7fELF\x00\x01")
         cases = [
-            ([self.script("def (:\n", "syntax.py")], 2, "syntax.py:1: not valid Python"),
-            ([binary], 2, "not Python source (binary data)"),
-            ([self.out], 2, "is a directory, not a script"),
-            ([fifo], 2, "not a regular file"),
-            ([os.path.join(self.out, "absent.py")], 2, "no such file"),
-            ([self.script("from rospy import no_such_name\n", "name.py")], 3,
+            ([self.script("def (:\n", "syntax.py")], 4, "syntax.py:1: not valid Python"),
+            ([binary], 4, "not Python source (binary data)"),
+            ([self.out], 4, "is a directory, not a script"),
+            ([fifo], 4, "not a regular file"),
+            ([os.path.join(self.out, "absent.py")], 3, "no such file"),
+            ([self.script("from rospy import no_such_name\n", "name.py")], 6,
              "the twin's stand-in lacks it"),
             (["--report", os.path.join(self.out, "no", "r.json"), self.script("x = 1\n", "ok.py")],
              2, "--report"),
@@ -325,6 +328,39 @@ class SilBounds(unittest.TestCase):
                            env=dict(os.environ, SSC_PYTHON=sys.executable), capture_output=True,
                            text=True, timeout=120, preexec_fn=limit)
         self.assert_one_line(p, 1, "the disk is full or a size limit was hit")
+
+
+class VerdictUnit(unittest.TestCase):
+    """The SIL's verdict alone, on made-up samples: the trial's outcomes in the trial's order."""
+
+    def run_path(self, vacuum_of, force_n=1.8, turns=1.0, centre=(0.65, 0.0), r=0.033, n=400):
+        from ssc_twin.sil.verdict import Verdict
+        v = Verdict(centre)
+        v.add(0.0, [0.0] * 4, (0, 0), 0.3)  # in air: the F/T's tare
+        for i in range(n + 1):
+            a = 2 * math.pi * turns * i / n
+            xy = (centre[0] + r * math.cos(a), centre[1] + r * math.sin(a)) if centre else (0, 0)
+            v.add(0.01 * i, vacuum_of(i), xy, force_n)
+        return v
+
+    def test_a_loop_in_contact_is_a_success_either_way_round(self):
+        for turns in (1.0, -1.0):
+            v = self.run_path(lambda i: [300, 150, 200, 250], turns=turns)
+            self.assertEqual(v.final(), "success")
+            self.assertGreater(abs(v.summary()["swept_deg"]), 355)
+
+    def test_each_failure_and_the_untouched_cup(self):
+        grasp = self.run_path(lambda i: [20000] * 4 if i > 100 else [300] * 4)
+        self.assertEqual(grasp.final(), "failure_II")
+        off = self.run_path(lambda i: [0.0] * 4 if i > 100 else [300] * 4)
+        self.assertEqual(off.final(), "failure_I")
+        air = self.run_path(lambda i: [8.2] * 4, force_n=0.3)  # the tare: nothing pressed
+        self.assertEqual(air.final(), "never_touched")
+        self.assertAlmostEqual(air.summary()["peak_vacuum_pa"], 8.2)
+        half = self.run_path(lambda i: [300] * 4, turns=0.5)
+        self.assertEqual(half.final(), "timeout")
+        no_disk = self.run_path(lambda i: [300] * 4, centre=None)
+        self.assertEqual(no_disk.final(), "timeout")
 
 
 class LimitsUnit(unittest.TestCase):
@@ -362,8 +398,11 @@ class SilLoop(unittest.TestCase):
         p = run_sil(["--out", out, "--report", report, LAB_STYLE], out)
         self.assertEqual(p.returncode, 0, p.stdout[-3000:] + p.stderr[-3000:])
         self.assertIn("lab_style_disk: success 1", p.stdout)
+        self.assertIn("the trial: success", p.stdout)
         with open(report) as f:
             summary = json.load(f)
+        self.assertEqual(summary["verdict"]["outcome"], "success", summary)
+        self.assertGreater(abs(summary["verdict"]["swept_deg"]), 355)
         self.assertEqual(len(summary["mat_files"]), 1, summary)
         mat = summary["mat_files"][0]
         self.assertRegex(os.path.basename(mat), r"^DataLog_\d{4}_\d{4}_\d{6}_seb_testEdgeFollowing_"
@@ -379,7 +418,7 @@ class SilLoop(unittest.TestCase):
         with open(script, "w") as f:
             f.write("import rospy\nimport rtde_io\n")
         p = run_sil(["--out", out, script], out)
-        self.assertEqual(p.returncode, 3, p.stdout + p.stderr)
+        self.assertEqual(p.returncode, 6, p.stdout + p.stderr)
         self.assertIn("missing interface: module rtde_io", p.stdout)
 
     def test_the_real_plot_draws_and_its_pause_costs_simulated_time(self):
@@ -396,7 +435,9 @@ class SilLoop(unittest.TestCase):
         p = subprocess.run(cmd + ["--plots", "--pause-cost", "0.2", "--report", report,
                                   "--out", out, script], cwd=out, env=env, capture_output=True,
                            text=True, timeout=300)
-        self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
+        # It draws and pauses, never touching anything: the trial's verdict is exit 5.
+        self.assertEqual(p.returncode, 5, p.stdout + p.stderr)
+        self.assertIn("the trial: never touched the object", p.stdout)
         self.assertIn("paused 0.210", p.stdout)
         with open(report) as f:
             pauses = json.load(f)["plt_pause"]
@@ -441,7 +482,7 @@ class SilViewer(unittest.TestCase):
         env = dict(os.environ, SSC_PYTHON=sys.executable)
         p = subprocess.run(["xvfb-run", "-a"] + cmd + ["--viewer", "--out", out, script], cwd=out,
                            env=env, capture_output=True, text=True, timeout=300)
-        self.assertEqual(p.returncode, 0, p.stdout[-2000:] + p.stderr[-2000:])
+        self.assertEqual(p.returncode, 5, p.stdout[-2000:] + p.stderr[-2000:])  # never touched
         self.assertIn("moved True", p.stdout)
 
     def test_viewer_without_a_display_says_so(self):
@@ -464,9 +505,10 @@ class LabCheckout(unittest.TestCase):
         script = os.path.join(repo, "src", "SDL_ur_control_edgeFollowing_livePlot_oneDiskRevolution.py")
         out = tempfile.mkdtemp(prefix="ssc_sil_lab_")
         p = run_sil(["--out", out, "--max-sim", "5", script], out)
-        # It starts: the node comes up and moves (exit 0 at the time limit); at the lab's HEAD it
-        # stops on the lab's own missing setCalibrationMatrix, named as the lab's bug.
-        if p.returncode != 0:
+        # It starts: the node comes up and moves (at the time limit the trial has no outcome yet:
+        # exit 5); at the lab's HEAD it stops on the lab's own missing setCalibrationMatrix,
+        # named as the lab's bug.
+        if p.returncode != 5:
             self.assertEqual(p.returncode, 1, p.stdout[-3000:] + p.stderr[-3000:])
             self.assertIn("the lab's own code, not the twin:", p.stdout)
             self.assertIn("rtdeHelp.setCalibrationMatrix", p.stdout)

@@ -197,7 +197,8 @@ class ReliabilityTest(unittest.TestCase):
         with open(os.path.join(out, "objects.csv")) as f:
             lines = f.read().splitlines()
         self.assertEqual(len(lines), 1 + finished)  # the header and whole rows, no blank ones
-        self.assertTrue(all(line.count(",") == lines[0].count(",") for line in lines), lines)
+        widths = {len(row) for row in csv.reader(lines)}
+        self.assertEqual(widths, {len(next(csv.reader(lines[:1])))}, lines)
         self.assertEqual(leftovers(out), [])
 
     def test_sigterm_mid_stability_keeps_only_judged_rows(self):
@@ -369,9 +370,11 @@ class ReliabilityTest(unittest.TestCase):
 
     def test_tune_owns_its_folder_before_touching_an_evaluation(self):
         out = os.path.join(self.tmp, "tune_own")
-        args = ["tune", "--controller", "fast", "--search", "step_max_mm=8:12", "--seeds", "1",
-                "--evals", "2", "--timeout", "2", "--threads", "1", "--reference", "none",
-                "--no-plot", "--out", out]
+        def tune(seeds, folder=out):
+            return ["tune", "--controller", "fast", "--search", "step_max_mm=8:12", "--seeds",
+                    str(seeds), "--evals", "2", "--timeout", "2", "--threads", "1",
+                    "--reference", "none", "--no-plot", "--out", folder]
+        args = tune(1)
         first = run(args)
         self.assertEqual(first.returncode, 0, first.stderr)
         eval1 = os.path.join(out, "evals", "eval_1", "sweep.csv")
@@ -379,21 +382,22 @@ class ReliabilityTest(unittest.TestCase):
             kept = f.read()
         table = rows(os.path.join(out, "tune.csv"))
         # Other options: refused before an evaluation's rows are touched, naming the difference.
-        r = run(args[:-2] + ["--seeds", "2", "--out", out])
+        r = run(tune(2))
         self.assertEqual(r.returncode, 1, r.stdout)
         self.assertIn("seeds: 1 in the file, 2 now", r.stderr)
         with open(eval1) as f:
             self.assertEqual(f.read(), kept)
         self.assertEqual(rows(os.path.join(out, "tune.csv")), table)
-        # A second search on the same folder while one runs: refused, naming the first.
-        p = subprocess.Popen([SSC] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                             text=True)
+        # A second search on a folder while one runs there: refused, naming the first.
+        busy = os.path.join(self.tmp, "tune_busy")
+        p = subprocess.Popen([SSC] + tune(1, busy), stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True)
         try:
             deadline = time.time() + 30
-            while not os.path.exists(os.path.join(out, "tune.csv.lock")):
+            while not os.path.exists(os.path.join(busy, "tune.csv.lock")):
                 self.assertLess(time.time(), deadline, "the first search never took the lock")
                 time.sleep(0.01)
-            r = run(args)
+            r = run(tune(1, busy))
             self.assertEqual(r.returncode, 1, r.stdout)
             self.assertIn("pid %d" % p.pid, r.stderr)
         finally:

@@ -25,11 +25,16 @@ import traceback
 import types
 
 from .. import _core
-from . import limits as limits_mod, noop, world as world_mod
+from . import limits as limits_mod, noop, verdict as verdict_mod, world as world_mod
 
 STANDINS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "standins")
 
-EXIT_OK, EXIT_ERROR, EXIT_BAD_INPUT, EXIT_MISSING = 0, 1, 2, 3
+# The project's exit codes (common/exit_codes.h, docs/exit_codes.md).
+_CODES = _core.EXIT_CODES
+EXIT_OK, EXIT_ERROR, EXIT_USAGE = _CODES["ok"], _CODES["failed"], _CODES["usage"]
+EXIT_MISSING_INPUT, EXIT_BAD_DATA = _CODES["missing_input"], _CODES["bad_data"]
+EXIT_TRIAL_FAILED, EXIT_MISSING = _CODES["trial_failed"], _CODES["missing_interface"]
+EXIT_INTERRUPTED = _CODES["interrupted"]
 
 
 class BadInput(Exception):
@@ -70,9 +75,26 @@ def parse_args(argv):
                    help="read input() from the terminal (default: answer Enter)")
     p.add_argument("--report", metavar="FILE", help="write a JSON summary of the run")
     p.add_argument("--verbose", action="store_true", help="print what the twin's nodes do")
+    p.add_argument("--no-progress", action="store_true",
+                   help="no progress lines (default: one every %g s of wall clock)"
+                        % PROGRESS_WALL_S)
+    p.add_argument("--version", action="version",
+                   version="ssc sil (ssc_twin %s, MuJoCo %s)" % (_package_version(),
+                                                                 _core.mujoco_version()))
     p.add_argument("script", help="the lab script (.py)")
     p.add_argument("args", nargs=argparse.REMAINDER, help="the script's own arguments")
     return p.parse_args(argv)
+
+
+PROGRESS_WALL_S = 30.0
+
+
+def _package_version():
+    try:
+        from importlib.metadata import version
+        return version("ssc_twin")
+    except Exception:  # a build tree's staged package has no metadata
+        return "(build tree)"
 
 
 # ssc's seeds: whole numbers doubles hold exactly (common/strict_number.h), as every ssc --seed.
@@ -250,29 +272,29 @@ def check_inputs(opts):
     exit status after a 'ssc sil:' line."""
     script = opts.script
     if not os.path.lexists(script):
-        return _fail("%s: no such file (the lab script to run)" % script, EXIT_BAD_INPUT)
+        return _fail("%s: no such file (the lab script to run)" % script, EXIT_MISSING_INPUT)
     if os.path.isdir(script):
         return _fail("%s: is a directory, not a script (give the .py file)" % script,
-                     EXIT_BAD_INPUT)
+                     EXIT_BAD_DATA)
     if not os.path.isfile(script):
         return _fail("%s: not a regular file (a FIFO, device, socket or dangling link): give "
-                     "the .py file" % script, EXIT_BAD_INPUT)
+                     "the .py file" % script, EXIT_BAD_DATA)
     out = os.path.abspath(opts.out)
     if os.path.exists(out) and not os.path.isdir(out):
-        return _fail("--out: %r exists and is not a directory" % opts.out, EXIT_BAD_INPUT)
+        return _fail("--out: %r exists and is not a directory" % opts.out, EXIT_USAGE)
     if opts.report:
         report = os.path.abspath(opts.report)
         parent = os.path.dirname(report)
         if os.path.isdir(report):
             return _fail("--report: %r is a directory (give a file to write)" % opts.report,
-                         EXIT_BAD_INPUT)
+                         EXIT_USAGE)
         if not os.path.isdir(parent):
             return _fail("--report: %r: its folder %s does not exist" % (opts.report, parent),
-                         EXIT_BAD_INPUT)
+                         EXIT_USAGE)
         if not os.access(parent, os.W_OK) or (os.path.exists(report)
                                               and not os.access(report, os.W_OK)):
             return _fail("--report: %r cannot be written (permission denied)" % opts.report,
-                         EXIT_BAD_INPUT)
+                         EXIT_USAGE)
     return None
 
 
@@ -283,22 +305,22 @@ def compile_script(opts):
         with open(script, "rb") as f:
             raw = f.read()
     except OSError as e:
-        return None, _fail("%s: cannot read: %s" % (opts.script, e.strerror), EXIT_BAD_INPUT)
+        return None, _fail("%s: cannot read: %s" % (opts.script, e.strerror), EXIT_MISSING_INPUT)
     if b"\0" in raw:
-        return None, _fail("%s: not Python source (binary data)" % opts.script, EXIT_BAD_INPUT)
+        return None, _fail("%s: not Python source (binary data)" % opts.script, EXIT_BAD_DATA)
     try:
         source = raw.decode("utf-8")
     except UnicodeDecodeError as e:
         return None, _fail("%s: not Python source (not UTF-8 text at byte %d)" % (
-            opts.script, e.start), EXIT_BAD_INPUT)
+            opts.script, e.start), EXIT_BAD_DATA)
     try:
         tree = apply_knobs(ast.parse(source, filename=script), opts.set, opts.script)
         return compile(tree, script, "exec"), None
     except SyntaxError as e:
         return None, _fail("%s:%s: not valid Python: %s" % (opts.script, e.lineno, e.msg),
-                           EXIT_BAD_INPUT)
+                           EXIT_BAD_DATA)
     except (BadInput, ValueError) as e:
-        return None, _fail(str(e), EXIT_BAD_INPUT)
+        return None, _fail(str(e), EXIT_USAGE)
 
 
 def make_world(opts, tmp_dir):
@@ -308,10 +330,11 @@ def make_world(opts, tmp_dir):
                                               realtime=opts.realtime, tmp_dir=tmp_dir,
                                               pause_cost_s=opts.pause_cost, verbose=opts.verbose))
     except (RuntimeError, ValueError) as e:
-        return None, _fail("--scene: %s" % e, EXIT_ERROR)
+        missing = "no such file" in str(e)
+        return None, _fail("--scene: %s" % e, EXIT_MISSING_INPUT if missing else EXIT_BAD_DATA)
     except OSError as e:  # the World makes OUT/tmp
         return None, _fail("--out: cannot create %s: %s" % (e.filename or tmp_dir, e.strerror),
-                           EXIT_BAD_INPUT)
+                           EXIT_USAGE)
     if opts.viewer:
         from .viewer import Viewer
         try:
@@ -430,6 +453,27 @@ def run_script(code, script, sandbox):
     return status, problem
 
 
+class Progress:
+    """A line on stderr every PROGRESS_WALL_S of wall clock: how far the run is and what the cup
+    did so far (called from the simulation's loop, in the script's thread)."""
+
+    def __init__(self, w, max_sim_s):
+        self.w, self.max_sim_s = w, max_sim_s
+        self.start = self.last = _time.monotonic()
+
+    def __call__(self):
+        now = _time.monotonic()
+        if now - self.last < PROGRESS_WALL_S:
+            return
+        self.last = now
+        v = self.w.verdict.summary()
+        state = verdict_mod.WORDS[v["outcome"]] if self.w.verdict.outcome else (
+            "not touched yet" if v["touched_at_s"] is None else "following")
+        print("ssc sil: %.0f of %.0f s simulated in %.0f s wall: %s, peak vacuum %.1f Pa, swept "
+              "%.0f deg" % (self.w.sim_time, self.max_sim_s, now - self.start, state,
+                            v["peak_vacuum_pa"], v["swept_deg"]), file=sys.stderr, flush=True)
+
+
 def write_report(opts, summary):
     """--report, whole or not at all: False after a 'ssc sil:' line."""
     tmp = opts.report + ".tmp%d" % os.getpid()
@@ -448,16 +492,22 @@ def write_report(opts, summary):
 def summarize(opts, script, out, w, status, problem, wall, limits, children):
     mats = sorted(os.path.join(dp, f) for dp, _, fs in os.walk(out) for f in fs
                   if f.endswith(".mat"))
-    summary = {"script": script, "status": status, "problem": problem,
+    verdict = w.verdict.summary()
+    if status == EXIT_OK and verdict["outcome"] != "success":
+        status = EXIT_TRIAL_FAILED
+    summary = {"script": script, "status": status, "problem": problem, "verdict": verdict,
                "sim_time_s": round(w.sim_time, 4), "wall_time_s": round(wall, 3),
                "logger_recordings": w.logger.started, "mat_files": mats,
                "hit_time_limit": w.shutdown and w.sim_time >= opts.max_sim - 1e-9,
                "stopped_by": limits.reason, "children_ended": children,
                "plt_pause": w.pause_summary()}
-    print("ssc sil: %s: %s; %.2f s simulated in %.2f s wall%s" % (
-        os.path.basename(script), "finished" if status == EXIT_OK else
-        ("missing interface: " + problem if status == EXIT_MISSING else "failed: " + problem),
-        w.sim_time, wall, " (stopped at --max-sim)" if summary["hit_time_limit"] else ""))
+    ran = ("finished" if status in (EXIT_OK, EXIT_TRIAL_FAILED) else
+           ("missing interface: " + problem if status == EXIT_MISSING else "failed: " + problem))
+    print("ssc sil: %s: %s; the trial: %s (peak vacuum %.1f Pa, swept %.0f deg); %.2f s "
+          "simulated in %.2f s wall%s" % (
+              os.path.basename(script), ran, verdict_mod.WORDS[verdict["outcome"]],
+              verdict["peak_vacuum_pa"], verdict["swept_deg"], w.sim_time, wall,
+              " (stopped at --max-sim)" if summary["hit_time_limit"] else ""))
     if children:
         print("ssc sil: ended %d process(es) the script left running" % children)
     ps = summary["plt_pause"]
@@ -469,7 +519,7 @@ def summarize(opts, script, out, w, status, problem, wall, limits, children):
                   else "the argument + %g s" % ps["cost"]))
     for m in mats:
         print("ssc sil: saved %s" % m)
-    return summary
+    return summary, status
 
 
 def run(opts):
@@ -497,10 +547,10 @@ def run(opts):
 
     def leave(wall, hard=False):
         children = limits_mod.end_children(os.getpid())
-        summary = summarize(opts, script, out, w, finish["status"], finish["problem"], wall,
-                            limits, children)
+        summary, status = summarize(opts, script, out, w, finish["status"], finish["problem"],
+                                    wall, limits, children)
         ok = write_report(opts, summary) if opts.report else True
-        status = finish["status"] if ok else EXIT_ERROR
+        status = status if ok else EXIT_ERROR
         if hard or w.viewer is not None:
             # The passive viewer's GL thread does not survive the interpreter's teardown (a hang
             # or a crash in about half the runs under Xvfb): everything is written; leave now.
@@ -512,6 +562,8 @@ def run(opts):
     limits = limits_mod.Limits(w, opts.max_wall, STUCK_WALL_S, MAX_IDLE_CALLS,
                                STOP_GRACE_WALL_S, give_up)
     limits_mod.watch_forks()
+    if not opts.no_progress:
+        w.progress = Progress(w, opts.max_sim)
     sandbox = ScriptSandbox(opts, w, limits, script, out, tmp_dir)
     w.wall_start = _time.perf_counter() - w.sim_time  # real time is paced from the script's start
     finish["status"], finish["problem"] = run_script(code, script, sandbox)

@@ -19,6 +19,7 @@ import time as _time
 import numpy as np
 
 from .rostime import Time
+from .verdict import Verdict
 
 AMBIENT_PA = 101325.0
 # Each chamber's sensor reads the ambient with its own offset (what the lab's host tares in air);
@@ -100,6 +101,7 @@ def matrix_from_rotvec(v):
     return np.eye(3) + math.sin(a) * K + (1 - math.cos(a)) * K @ K
 
 
+
 class _Event:
     __slots__ = ("t", "seq", "fn", "period")
 
@@ -135,8 +137,12 @@ class World:
         lab_x, lab_y = _core.LAB_DISK_CENTRE_BASE_LINK_M
         try:
             dx, dy, dtop = self.plant.geom_top(disk_geom)
+            disk_centre = (dx, dy)
         except Exception:  # a scene without the disk: the robot base at the scene origin
             dx, dy, dtop = -lab_x, -lab_y, float(_core.LAB_DISK_ENGAGE_Z_M) - self.tool_centre_offset_m
+            disk_centre = None
+        self.verdict = Verdict(disk_centre)
+        self.progress = None                 # called as the simulation goes (runner's lines)
         self.base_in_scene = np.array([dx + lab_x, dy + lab_y,
                                        dtop - (float(_core.LAB_DISK_ENGAGE_Z_M) - self.tool_centre_offset_m)])
         self.tcp_offset = np.zeros(6)        # RTDE setTcp: [x, y, z, rx, ry, rz] in tool0
@@ -234,13 +240,24 @@ class World:
                 self.plant.set_target(list(np.asarray(self.plant.target()) + v * (t1 - t0)))
             if t_s >= until:
                 self.velocity = None
+        t0 = self.plant.time
         self.plant.advance_to(t_s)
+        if self.plant.time > t0:
+            self._observe()
+            if self.progress is not None:
+                self.progress()
         if self.realtime:
             lag = self.plant.time - (_time.perf_counter() - self.wall_start)
             if lag > 0:
                 _time.sleep(lag)
         if self.viewer is not None:
             self.viewer.sync(self)
+
+    def _observe(self):
+        """The trial's verdict (verdict.py) from the plant as it is now."""
+        vac = self.plant.vacuum() if self.pump_duty > 0 else (0.0, 0.0, 0.0, 0.0)
+        self.verdict.add(self.plant.time, vac, self.plant.tool_position(),
+                         self.plant.force_torque()[2])
 
     def _push(self, t, fn, period):
         self._seq += 1
