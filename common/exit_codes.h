@@ -7,14 +7,14 @@
 namespace ssc {
 
 enum ExitCode : int {
-  kExitOk = 0,             // done (a trial: it succeeded)
-  kExitFailed = 1,         // failed while running: I/O, a script that raised, an internal error
-  kExitUsage = 2,          // the command line: unknown option or name, a value out of its range
-  kExitMissingInput = 3,   // a file or scene named that is not there or cannot be read
-  kExitBadData = 4,        // an input that is there but is not what it must be
-  kExitTrialFailed = 5,    // it ran, and the trial did not succeed (its outcome names why)
+  kExitOk = 0,                // done (a trial: it succeeded)
+  kExitFailed = 1,            // failed while running: I/O, a script that raised, an internal error
+  kExitUsage = 2,             // the command line: unknown option or name, a value out of its range
+  kExitMissingInput = 3,      // a file or scene named that is not there or cannot be read
+  kExitBadData = 4,           // an input that is there but is not what it must be
+  kExitTrialFailed = 5,       // it ran, and the trial did not succeed (its outcome names why)
   kExitMissingInterface = 6,  // ssc sil: the script needs an interface the twin does not have
-  kExitInterrupted = 130,  // SIGINT or SIGTERM: the finished work is kept
+  kExitInterrupted = 130,     // SIGINT or SIGTERM: the finished work is kept
 };
 
 struct ExitCodeRow {
