@@ -8,6 +8,7 @@ import csv
 import math
 import os
 import sys
+import textwrap
 
 import matplotlib
 
@@ -75,10 +76,13 @@ def main():
         ax.plot([bx, bx + 10], [by, by], "k-", lw=2.5, solid_capstyle="butt")
         ax.text(bx + 5, by + 0.03 * 2 * span, "10 mm", ha="center", va="bottom", fontsize=6)
         ax.set_title(f"{name}: {r['outcome']}", fontsize=8)
-    fig.suptitle("cup-centre paths over the test objects (P_ref 100 Pa, beta 2, dL 0.5 mm); "
-                 "axes: world x, y (mm); circles: 11 mm opening and 23 mm body at the start",
-                 fontsize=10)
-    fig.tight_layout(rect=(0, 0, 1, 0.975))  # room for the title above the first row
+    # The title wrapped to the figure's width (one object makes a narrow figure), with room
+    # for its lines above the first row.
+    title = textwrap.wrap("cup-centre paths over the test objects (P_ref 100 Pa, beta 2, dL 0.5 "
+                          "mm); axes: world x, y (mm); circles: 11 mm opening and 23 mm body at "
+                          "the start", width=max(20, int(fig.get_figwidth() * 72 / 10 / 0.6)))
+    fig.suptitle("\n".join(title), fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1, 1 - (0.2 * len(title) + 0.1) / fig.get_figheight()))
     fig.savefig(out, dpi=90)
 
     profile = os.path.join(os.path.dirname(table), "fillet_profile.csv")

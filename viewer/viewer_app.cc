@@ -38,18 +38,40 @@ struct Session {
   double next_figure_s = 0;  // the figures sample the overlay values every kFigurePeriodS
   int arm_base_body = -1;    // the arm's base (arm scenes): framed together with the cup
   bool close_up = false;     // T: the cup alone, close
+  // A test object: the overview frames the cup and the object's edge (its box, world m).
+  bool frame_object = false;
+  double object_box[4] = {0, 0, 0, 0};  // x_min, y_min, x_max, y_max
 };
 
 constexpr double kFigurePeriodS = 0.02;
+
+// The text and figure font for a frame height: the status block and the plots keep their share
+// of the frame at any size (at 540 px the 150 % font ran the text into the plots).
+int FontScaleFor(int height_px) {
+  if (height_px <= 600) return mjFONTSCALE_100;
+  if (height_px <= 1100) return mjFONTSCALE_150;
+  return mjFONTSCALE_200;
+}
 
 // The camera follows the lip (the tool site). With an arm, the overview keeps the whole arm in
 // frame: it looks at the middle of base and cup from far enough to see both.
 void FollowCup(Session* s) {
   if (!s->tracking) return;
   const mjtNum* cup = s->d->site_xpos + 3 * s->tool_site;
-  if (s->arm_base_body < 0 || s->close_up) {
+  if (s->close_up || (s->arm_base_body < 0 && !s->frame_object)) {
     for (int k = 0; k < 3; ++k) s->cam.lookat[k] = cup[k];
     s->cam.distance = 0.25;
+    return;
+  }
+  if (s->frame_object) {
+    // The box round the object's edge and the cup, seen whole with a margin.
+    const double* b = s->object_box;
+    const double x0 = std::min(b[0], cup[0]), x1 = std::max(b[2], cup[0]);
+    const double y0 = std::min(b[1], cup[1]), y1 = std::max(b[3], cup[1]);
+    s->cam.lookat[0] = 0.5 * (x0 + x1);
+    s->cam.lookat[1] = 0.5 * (y0 + y1);
+    s->cam.lookat[2] = cup[2];
+    s->cam.distance = 1.3 * std::hypot(x1 - x0, y1 - y0) + 0.08;
     return;
   }
   const mjtNum* base = s->d->xpos + 3 * s->arm_base_body;
@@ -247,7 +269,7 @@ int StartSession(const ViewerOptions& options, mjModel* model, mjData* data, Con
     model->vis.global.offwidth = std::max(model->vis.global.offwidth, options.width);
     model->vis.global.offheight = std::max(model->vis.global.offheight, options.height);
   }
-  mjr_makeContext(s->m, &s->con, mjFONTSCALE_150);
+  mjr_makeContext(s->m, &s->con, FontScaleFor(options.height));
   if (offscreen && (s->con.offWidth < options.width || s->con.offHeight < options.height)) {
     std::fprintf(stderr,
                  "ssc view: --width %d --height %d: this OpenGL renders off-screen images up to "
@@ -272,6 +294,17 @@ int StartSession(const ViewerOptions& options, mjModel* model, mjData* data, Con
   } else if (options.camera == ViewerCamera::kFree) {
     s->tracking = false;
     mjv_defaultFreeCamera(s->m, &s->cam);
+  }
+  if (options.frame_object && trial->config().target.edge) {
+    const std::vector<Point2> outline = trial->config().target.edge->Vertices(1e-3);
+    s->frame_object = !outline.empty();
+    for (size_t i = 0; i < outline.size(); ++i) {
+      const Point2& p = outline[i];
+      s->object_box[0] = i ? std::min(s->object_box[0], p[0]) : p[0];
+      s->object_box[1] = i ? std::min(s->object_box[1], p[1]) : p[1];
+      s->object_box[2] = i ? std::max(s->object_box[2], p[0]) : p[0];
+      s->object_box[3] = i ? std::max(s->object_box[3], p[1]) : p[1];
+    }
   }
   FollowCup(s);
   s->speed = options.speed;

@@ -22,6 +22,8 @@ struct ViewerOptions {
   int width = 1280, height = 720;
   double speed = 1.0;  // simulated seconds per wall second (slow motion < 1)
   ViewerCamera camera = ViewerCamera::kOverview;
+  // A test object: the overview frames the cup and the object, not the whole arm.
+  bool frame_object = false;
   // Called once the display, the scene and the trial are known to work, before anything is
   // written: creates the output locations; returns 0 or the exit code (message printed).
   std::function<int()> create_outputs;

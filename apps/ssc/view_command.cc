@@ -90,6 +90,7 @@ int RunViewCommand(int argc, char** argv) {
         std::filesystem::absolute(std::filesystem::path(dir) / ObjectSceneFile(spec, kind))
             .string();
     v.config = ObjectTrialConfig(spec, v.config);  // the options hold on objects too
+    v.frame_object = true;
   }
   v.create_outputs = [&cmd]() { return cmd.CreateOutputs(); };
   return RunViewer(v);

@@ -78,6 +78,24 @@ def legend_problems(fig):
     return problems
 
 
+def clipped_texts(fig):
+    """The titles and labels that run past the figure's edge (cut off in the saved image)."""
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    canvas = fig.bbox.padded(1)
+    texts = list(fig.texts)
+    for ax in fig.axes:
+        texts += [ax.title, ax._left_title, ax._right_title, ax.xaxis.label, ax.yaxis.label]
+    cut = []
+    for t in texts:
+        if not t.get_visible() or not t.get_text().strip():
+            continue
+        box = t.get_window_extent(renderer)
+        if box.x0 < canvas.x0 or box.x1 > canvas.x1 or box.y0 < canvas.y0 or box.y1 > canvas.y1:
+            cut.append(f"the text {t.get_text()[:50]!r} runs past the figure's edge")
+    return cut
+
+
 class FigureScriptsTest(unittest.TestCase):
     def setUp(self):
         self.tmp = tempfile.mkdtemp(prefix="ssc_figures_")
@@ -90,6 +108,8 @@ class FigureScriptsTest(unittest.TestCase):
 
         def checked_savefig(fig, path, *args, **kwargs):
             problems.extend(legend_problems(fig))
+            if kwargs.get("bbox_inches") != "tight":  # a tight box grows to hold every text
+                problems.extend(clipped_texts(fig))
             original(fig, path, *args, **kwargs)
             if self.keep:
                 os.makedirs(self.keep, exist_ok=True)
@@ -283,6 +303,9 @@ class FigureScriptsTest(unittest.TestCase):
                   ["x_mm", "diff_pa", "pbar_pa", "fillet_radius_mm"], profile)
         png = self.out("objects.png")
         self.assertEqual(self.render("plot_objects.py", [table, paths, png]), [])
+        # One object: the narrowest figure, where the title was cut at both edges.
+        one = write_csv(self.out("one.csv"), ["object", "seed", "outcome"], rows[:1])
+        self.assertEqual(self.render("plot_objects.py", [one, paths, self.out("one.png")]), [])
         self.assertTrue(os.path.exists(png))
         self.assertTrue(os.path.exists(self.out("objects_fillet.png")))
 
