@@ -304,6 +304,15 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
       s.gap_m = 0.0;
       continue;
     }
+    if (lip_.kind() == LipBody::Kind::kSkirt) {
+      // Air that enters under the skirt's rim reaches the throat through the narrowest gap
+      // under its column.
+      auto depth_fn = [](const mjtNum point[3], void* ctx) {
+        return (*static_cast<decltype(surface_depth_at)*>(ctx))(point);
+      };
+      s.gap_m = lip_.ColumnGap(i, d, origin_lip, axis_z, depth_fn, &surface_depth_at);
+      continue;
+    }
     const double depth = surface_depth_at(on_plane);
     s.gap_m = depth >= kNoSurfaceGapM ? kNoSurfaceGapM : std::max(0.0, depth - lip_tip_depth_[i]);
   }

@@ -13,6 +13,9 @@ namespace {
 
 // A skirt vertex within this much of the deepest one belongs to the rim.
 constexpr double kRimToleranceM = 0.1e-3;
+// Depth below the lip plane of the point on the axis that every skirt triangle's underside faces
+// at rest.
+constexpr double kCavityDepthM = 10e-3;
 
 // Point `p` given in body `b`'s frame, in the frame of its ancestor `root`, at the model's
 // reference pose (body offsets only: init has no mjData).
@@ -31,6 +34,23 @@ void ToSiteFrame(const mjModel* m, int site_id, const mjtNum p[3], mjtNum local[
   const mjtNum rel[3] = {p[0] - m->site_pos[3 * site_id], p[1] - m->site_pos[3 * site_id + 1],
                          p[2] - m->site_pos[3 * site_id + 2]};
   mju_rotVecQuat(local, rel, site_quat_inv);
+}
+
+// The body that carries a flex's pinned vertices: the one body several vertices share (MuJoCo
+// gives each free vertex a body of its own).
+int PinnedBody(const mjModel* m, int flex) {
+  const int adr = m->flex_vertadr[flex], n = m->flex_vertnum[flex];
+  int best = m->flex_vertbodyid[adr], best_count = 0;
+  for (int v = 0; v < n; ++v) {
+    const int b = m->flex_vertbodyid[adr + v];
+    const int count = static_cast<int>(
+        std::count(m->flex_vertbodyid + adr, m->flex_vertbodyid + adr + n, b));
+    if (count > best_count) {
+      best = b;
+      best_count = count;
+    }
+  }
+  return best;
 }
 
 std::string Fail(const std::string& what) {
@@ -227,17 +247,23 @@ bool LipBody::BindSkirt(const mjModel* m, int root, std::string* error) {
     ToSiteFrame(m, site_id_, p, local[v].data());
     depth[v] = local[v][2];
   }
-  // The pinned ring (vertices carried by the cup itself) bounds the cup's ceiling.
+  // The pinned ring: the vertices that share one body (each free vertex has its own), the cup
+  // or a body on the cup (a chamber body on its bellows); it bounds the cup's ceiling.
+  const int carrier = PinnedBody(m, flex_);
+  if (carrier != root && m->body_parentid[carrier] != root) {
+    *error = Fail("the flex skirt's pinned ring must hang from the tool site's body or its child");
+    return false;
+  }
   double pinned_radius_sum = 0.0;
   int pinned = 0;
   for (int v = 0; v < n; ++v) {
-    if (m->flex_vertbodyid[adr + v] != root) continue;
+    if (m->flex_vertbodyid[adr + v] != carrier) continue;
     pinned_radius_sum += std::hypot(local[v][0], local[v][1]);
     ++pinned;
   }
   if (pinned < 3) {
     *error = Fail("the flex skirt has " + std::to_string(pinned) +
-                  " vertices pinned to the tool site's body; need its top ring (3 or more)");
+                  " vertices pinned to its carrier body; need its top ring (3 or more)");
     return false;
   }
   const double ceiling_radius_m = pinned_radius_sum / pinned;
@@ -254,28 +280,43 @@ bool LipBody::BindSkirt(const mjModel* m, int root, std::string* error) {
                   " vertices; need 4 to " + std::to_string(kMaxLipSegments));
     return false;
   }
-  // Each rim point's column: the free vertices above it.
-  std::vector<int> free_vertex;
-  std::vector<double> free_angle;
+  // Each rim point's column: the vertices above it, from its stretch of the throat (pinned) out.
+  std::vector<int> column_vertex;
+  std::vector<double> column_angle;
   for (int v = 0; v < n; ++v) {
-    if (m->flex_vertbodyid[adr + v] == root) continue;
-    free_vertex.push_back(adr + v);
-    free_angle.push_back(std::atan2(local[v][1], local[v][0]));
+    column_vertex.push_back(adr + v);
+    column_angle.push_back(std::atan2(local[v][1], local[v][0]));
   }
   size_t longest = 0;
   column_start_.assign(1, 0);
-  for (const std::vector<int>& column : SkirtColumns(free_angle, rim_angle_rad_)) {
-    for (int k : column) column_vertex_.push_back(free_vertex[k]);
+  for (const std::vector<int>& column : SkirtColumns(column_angle, rim_angle_rad_)) {
+    for (int k : column) column_vertex_.push_back(column_vertex[k]);
     column_start_.push_back(static_cast<int>(column_vertex_.size()));
     longest = std::max(longest, column.size());
   }
   seal_vertex_ = rim_vertex_;
+  vertex_touching_.assign(n, 0);
+  // Each triangle's side toward the cavity at rest, as a sign on its winding's normal: the cavity
+  // lies under the skirt (a point on the axis well below the lip plane sees every triangle's
+  // underside, however flat the skirt's flare).
+  const double below[3] = {0.0, 0.0, kCavityDepthM};
+  const int* elems = m->flex_elem + m->flex_elemdataadr[flex_];
+  element_cavity_side_.assign(m->flex_elemnum[flex_], 1.0);
+  for (int e = 0; e < m->flex_elemnum[flex_]; ++e) {
+    const double* p[3] = {local[elems[3 * e]].data(), local[elems[3 * e + 1]].data(),
+                          local[elems[3 * e + 2]].data()};
+    const std::array<double, 3> a = TriangleAreaVector(p[0], p[1], p[2]);
+    const std::array<double, 3> f = TrianglePressureForce(p[0], p[1], p[2], 1.0, below);
+    element_cavity_side_[e] = a[0] * f[0] + a[1] * f[1] + a[2] * f[2] < 0 ? -1.0 : 1.0;
+  }
+  column_adr_ = adr;
+  column_radius_m_ = m->flex_radius[flex_];
   column_depth_.assign(longest, 0.0);
   column_radius_.assign(longest, 0.0);
   tool_geom_.assign(m->ngeom, 0);
   for (int g = 0; g < m->ngeom; ++g) tool_geom_[g] = IsInSubtree(m, m->geom_bodyid[g], root);
   rim_radius_m_ = radius_sum / static_cast<double>(rim_vertex_.size());
-  carrier_body_ = root;
+  carrier_body_ = carrier;
   return BindCarrier(m, error);
 }
 
@@ -304,6 +345,7 @@ const mjtNum* LipBody::RimPos(const mjData* d, int i) const {
 }
 
 void LipBody::MarkContacts(const mjModel* m, const mjData* d, unsigned char* touching) const {
+  std::fill(vertex_touching_.begin(), vertex_touching_.end(), 0);
   for (int i = 0; i < d->ncon; ++i) {
     const mjContact& con = d->contact[i];
     if (con.dist > 0) continue;
@@ -330,9 +372,6 @@ void LipBody::MarkContacts(const mjModel* m, const mjData* d, unsigned char* tou
         mjtNum best_d2 = 0;
         for (int k = 0; k < 3; ++k) {
           const int v = adr + elem[k];
-          if (std::find(seal_vertex_.begin(), seal_vertex_.end(), v) == seal_vertex_.end()) {
-            continue;
-          }
           const mjtNum* p = d->flexvert_xpos + 3 * v;
           const mjtNum d2 = (p[0] - con.pos[0]) * (p[0] - con.pos[0]) +
                             (p[1] - con.pos[1]) * (p[1] - con.pos[1]) +
@@ -343,11 +382,31 @@ void LipBody::MarkContacts(const mjModel* m, const mjData* d, unsigned char* tou
           }
         }
       }
+      if (vertex >= 0) vertex_touching_[vertex - adr] = 1;
       for (int r = 0; vertex >= 0 && r < num_rim_points(); ++r) {
         if (seal_vertex_[r] == vertex) touching[r] = 1;
       }
     }
   }
+}
+
+double LipBody::ColumnGap(int i, const mjData* d, const mjtNum origin[3], const mjtNum axis_z[3],
+                          double (*surface_depth_at)(const mjtNum[3], void*), void* ctx) const {
+  double gap = kNoSurfaceGapM;
+  const int adr = column_adr_;
+  for (int k = column_start_[i]; k < column_start_[i + 1] && gap > 0.0; ++k) {
+    const int v = column_vertex_[k];
+    if (vertex_touching_[v - adr]) return 0.0;
+    const mjtNum* p = d->flexvert_xpos + 3 * v;
+    const mjtNum rel[3] = {p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]};
+    const mjtNum along = mju_dot3(rel, axis_z);
+    mjtNum on_plane[3];
+    for (int q = 0; q < 3; ++q) on_plane[q] = p[q] - along * axis_z[q];
+    const double depth = surface_depth_at(on_plane, ctx);
+    if (depth >= kNoSurfaceGapM) continue;
+    gap = std::min(gap, std::max(0.0, depth - along - column_radius_m_));
+  }
+  return gap;
 }
 
 void LipBody::ApplyForces(const mjModel* m, mjData* d,
@@ -388,9 +447,6 @@ void LipBody::ApplySkirtVacuum(const mjModel* m, mjData* d,
   const mjtNum* site_pos = d->site_xpos + 3 * site_id_;
   const mjtNum* site_mat = d->site_xmat + 9 * site_id_;
   const mjtNum axis_z[3] = {site_mat[2], site_mat[5], site_mat[8]};
-  // The cavity's centre: on the axis, a little above the lip plane.
-  mjtNum cavity[3];
-  for (int k = 0; k < 3; ++k) cavity[k] = site_pos[k] - 1e-3 * axis_z[k];
   const int adr = m->flex_vertadr[flex_];
   const int* elems = m->flex_elem + m->flex_elemdataadr[flex_];
   const mjtNum zero[3] = {0, 0, 0};
@@ -406,7 +462,11 @@ void LipBody::ApplySkirtVacuum(const mjModel* m, mjData* d,
     mju_mulMatTVec3(local, site_mat, rel);
     const double vacuum = vacuum_pa[ChamberOfAngle(std::atan2(local[1], local[0]))];
     if (vacuum == 0.0) continue;
-    const std::array<double, 3> f = TrianglePressureForce(p0, p1, p2, vacuum, cavity);
+    // The side that faced the cavity at rest faces it still (a folded lobe's underside too).
+    const std::array<double, 3> n = TriangleAreaVector(p0, p1, p2);
+    const double f[3] = {element_cavity_side_[e] * vacuum * n[0],
+                         element_cavity_side_[e] * vacuum * n[1],
+                         element_cavity_side_[e] * vacuum * n[2]};
     mjtNum third[3] = {f[0] / 3.0, f[1] / 3.0, f[2] / 3.0};
     for (int k = 0; k < 3; ++k) vacuum_force_n[k] += f[k];
     for (int k = 0; k < 3; ++k) {

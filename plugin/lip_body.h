@@ -54,6 +54,12 @@ class LipBody {
   // Sets touching[i] to 1 for each rim point that MuJoCo reports in contact with a non-lip geom
   // (a skirt's: its seal point touching a geom that is not the tool's own, e.g. a wall).
   void MarkContacts(const mjModel* m, const mjData* d, unsigned char* touching) const;
+  // A skirt's passage from rim point i's rim in to the throat: air that enters under the rim
+  // reaches the opening through the narrowest gap under the column (0 where a vertex touches an
+  // object, per the last MarkContacts; kNoSurfaceGapM when no surface lies under any). Depths
+  // from `surface_depth_at(point on the lip plane, ctx)`. Allocates nothing.
+  double ColumnGap(int i, const mjData* d, const mjtNum origin[3], const mjtNum axis_z[3],
+                   double (*surface_depth_at)(const mjtNum[3], void*), void* ctx) const;
   // Whether the skirt's fold can move the rim across the opening (the sensor then follows the
   // rim's radius per wedge); segments stay on their circle by construction.
   bool rim_moves_radially() const { return kind_ == Kind::kSkirt; }
@@ -107,6 +113,10 @@ class LipBody {
   // column_vertex_[column_start_[i] .. column_start_[i + 1]).
   std::vector<int> column_start_, column_vertex_;
   mutable std::vector<int> seal_vertex_;  // per sample: each column's seal point (global id)
+  mutable std::vector<unsigned char> vertex_touching_;  // per sample, by the flex's vertex index
+  std::vector<double> element_cavity_side_;            // +1 / -1 on each triangle's winding
+  int column_adr_ = 0;                                  // the flex's first vertex (global id)
+  double column_radius_m_ = 0.0;                        // the skirt's contact radius
   mutable std::vector<double> column_depth_, column_radius_;  // scratch, longest column's size
   std::vector<unsigned char> tool_geom_;  // geoms carried by the tool (walls): never a seal
   double ceiling_area_m2_ = 0.0;

@@ -21,37 +21,48 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 # name: (value, unit, range argued from the hardware)
 SKIRT = {
-    "rim_radius_mm": (5.5, "mm", "published: the 11 mm opening"),
-    "top_radius_mm": (4.0, "mm", "3.5-5: the skirt flares out to its rim (one narrowing to its rim "
-                      "folds inward under its own press, and no real cup does); 4 mm gives about "
-                      "2 N at 1 mm of press, near the segment lip's 1.5 N"),
-    "height_mm": (3.0, "mm", "2-4: the lip's free height below the rigid body"),
-    "thickness_mm": (1.0, "mm", "0.6-1.5: a cast lip that holds its shape"),
-    "young_mpa": (1.0, "MPa", "0.6-1.5: Shore 20A-30A silicone"),
+    "throat_radius_mm": (5.5, "mm", "published: the 11 mm opening (Fig. 1c), where the chamber "
+                         "walls end and the skirt starts"),
+    "rim_radius_mm": (11.5, "mm", "published: the 23 mm outer diameter is the lip's rim (Fig. 1b)"),
+    "height_mm": (3.0, "mm", "2-4: the throat stands this far above the rim plane; in Fig. 1b "
+                  "the lip below the bellows flange is about a quarter to a third of its 23 mm "
+                  "rim as tall (6-7 mm with the flange), and the walls end about that far above "
+                  "the lip plane (Fig. 1c)"),
+    "flare": (1.5, "", "1-2: the profile's exponent, z = -height (1 - s)^flare from throat (s 0) "
+              "to rim (s 1); 1 is a straight cone; Fig. 1b and 11 show a bell that leaves the "
+              "throat steeply and meets the object nearly flat at the rim"),
+    "thickness_mm": (0.8, "mm", "0.5-1.0: translucent in Fig. 1c (the walls show through), so "
+                     "under 1 mm; a cast lip thinner than 0.5 mm tears"),
+    "young_mpa": (1.7, "MPa", "1.2-2.0: Shore 40A (Mold Max 40, the lab's default cup); "
+                  "Gent's relation gives 1.69 MPa at 40A, 1.2-2.0 over 35-45A"),
     # MuJoCo's 2-D shell bends this much more than a Kirchhoff plate of the same E, t and nu
     # (a clamped strip under uniform load, mesh-converged; tests/plugin/flex_lip_test.py measures it):
     # the MJCF modulus is the material's times this, so the skirt bends as the silicone would.
     "shell_bending_correction": (1.70, "", "measured: MuJoCo 4.0.0 shell vs plate theory"),
     "poisson": (0.45, "", "0.45-0.49: nearly incompressible rubber (0.45 keeps shells unlocked)"),
     "damping_s": (0.002, "s", "Rayleigh damping: keeps the discrete step stable at 2 ms"),
-    "mass_g": (2.0, "g", "numerical: heavier than the ~0.15 g of silicone so contacts stay stiff"),
-    "contact_radius_mm": (0.5, "mm", "half the thickness"),
+    "mass_g": (2.0, "g", "numerical: heavier than the ~0.3 g of silicone so contacts stay stiff"),
+    "contact_radius_mm": (0.4, "mm", "half the thickness"),
     "friction": (0.6, "", "0.5-1.0: silicone on acrylic or aluminium"),
     # A soft contact's force scales with the mass behind it; a skirt vertex weighs milligrams, so
     # the usual time-constant solref lets the rim sink through the object under a 1 N press. A
     # direct stiffness (MuJoCo's negative solref, critically damped) holds it on the surface.
     "contact_stiffness": (1e8, "1/s^2", "rim held within 0.01 mm of the surface under 1.4 N"),
-    # The four chamber walls (the cross that splits the opening into quadrants) are moulded with
-    # the skirt: a wall is stiff in its own plane (a silicone plate loaded edgewise) and soft
-    # across it, so the model makes each a rigid plate whose edge runs along the skirt's inside;
-    # the skirt leans on that edge and slides along it. Their lower edges are the stop that
-    # carries a grasp: pressed beyond them, the skirt would buckle under the chambers' vacuum.
-    "wall_thickness_mm": (1.0, "mm", "0.6-1.5: moulded like the lip"),
-    "wall_recess_mm": (0.5, "mm", "0.3-1: the walls' lower edge above the lip plane: clear of "
-                       "the object at the approach's press (0.2 mm), reached before the skirt "
-                       "buckles under a sealed cup's vacuum (0.7-1 mm)"),
-    "rings": (3, "", "vertex rings from the pinned top to the rim (cost grows with rings x sectors)"),
-    "sectors": (16, "", "vertices per ring: the rim has as many points as the segment lip"),
+    # The bellows between the cup's flange and the chamber body: one axial spring (Fig. 1b: a
+    # single convolution above the lip). The approach presses until the transducer reads the
+    # preload; this spring and the skirt share it.
+    "bellows_n_per_mm": (1.5, "N/mm", "0.5-3: the 1.5 N preload compresses a single-convolution "
+                         "silicone bellows by 0.5-3 mm; 1.5 N/mm is the segment lip's axial "
+                         "stiffness (1 mm at 1.5 N)"),
+    "bellows_travel_mm": (3.0, "mm", "2-4: the bellows' free travel either way before it bottoms out or stretches taut"),
+    "chamber_body_g": (5.0, "g", "3-8: the silicone chamber body and walls below the bellows"),
+    # The four chamber walls (the cross that splits the throat into quadrants) are moulded with
+    # the chamber body: stiff in their own plane, so the model makes each a rigid plate that ends
+    # at the throat (Fig. 1c: the "+" stands only inside the 11 mm opening).
+    "wall_thickness_mm": (0.8, "mm", "0.6-1.0: the lab's 2-D model uses 0.8 mm"),
+    "rings": (5, "", "vertex rings from the pinned throat to the rim: 4 rows of elements across "
+              "the 6 mm span, so a lobe can fold (cost grows with rings x sectors)"),
+    "sectors": (24, "", "vertices per ring: 3 mm apart on the rim, 1.4 mm at the throat"),
 }
 
 
@@ -59,18 +70,24 @@ def value(key):
     return SKIRT[key][0]
 
 
+LIP_PLANE_M = 0.1206  # the tool site in the cup body (models/ssc_tool.xml)
+
+
+def profile(f):
+    """(radius, height above the rim's centre line) in metres at s = f from throat to rim."""
+    r_throat, r_rim = value("throat_radius_mm") * 1e-3, value("rim_radius_mm") * 1e-3
+    return r_throat + f * (r_rim - r_throat), value("height_mm") * 1e-3 * (1.0 - f) ** value("flare")
+
+
 def skirt_flexcomp():
     rings, sectors = int(value("rings")), int(value("sectors"))
-    r_top, r_rim = value("top_radius_mm") * 1e-3, value("rim_radius_mm") * 1e-3
-    height = value("height_mm") * 1e-3
     points, elements = [], []
     for i in range(rings):
-        f = i / (rings - 1)
-        r, z = r_top + f * (r_rim - r_top), -height * (1.0 - f)  # z: +down is +z of the tool
+        r, up = profile(i / (rings - 1))
         for j in range(sectors):
-            # Rim vertices on the segment lip's angles (the middle of each of 16 arcs).
+            # Rim vertices on the middle of each of the sectors' arcs; rings alternate by half.
             a = 2.0 * math.pi * (j + 0.5 * ((i + rings - 1) % 2)) / sectors + math.pi / sectors
-            points.append((r * math.cos(a), r * math.sin(a), z))
+            points.append((r * math.cos(a), r * math.sin(a), -up))  # +z of the tool is down
     vid = lambda i, j: i * sectors + j % sectors
     for i in range(rings - 1):
         for j in range(sectors):
@@ -79,55 +96,63 @@ def skirt_flexcomp():
     point = " ".join("%.6f %.6f %.6f" % p for p in points)
     element = " ".join("%d %d %d" % e for e in elements)
     pin = " ".join(str(vid(0, j)) for j in range(sectors))
-    return f"""          <!-- The lip: a skirt MuJoCo deforms (tools/make_flex_tool.py; docs/pneumatics.md).
-               Top ring pinned to the cup, rim free at the lip plane; the pressure plugin reads
-               the rim's vertices and loads the skirt with each chamber's vacuum. -->
-          <flexcomp name="skirt" type="direct" dim="2" pos="0 0 {0.1206 - value("contact_radius_mm") * 1e-3:.6f}"
-                    radius="{value('contact_radius_mm') * 1e-3:.6f}" mass="{value('mass_g') * 1e-3:.6f}"
-                    rgba="0.15 0.35 0.85 1" group="4" point="{point}" element="{element}">
-            <elasticity young="{value('young_mpa') * value('shell_bending_correction') * 1e6:.6g}"
-                        poisson="{value('poisson')}"
-                        thickness="{value('thickness_mm') * 1e-3:.6f}" damping="{value('damping_s')}"
-                        elastic2d="both"/>
-            <contact condim="3" selfcollide="none" contype="1" conaffinity="0"
-                     friction="{value('friction')} 0.005 0.0001"
-                     solref="{contact_solref()}"
-                     solimp="0.95 0.99 0.0005"/>
-            <pin id="{pin}"/>
-          </flexcomp>
+    return f"""            <!-- The lip: a skirt MuJoCo deforms (tools/make_flex_tool.py; docs/pneumatics.md).
+                 Pinned along the throat to the chamber body, free out to the rim at the lip
+                 plane; the pressure plugin reads its columns and loads it with each chamber's
+                 vacuum. -->
+            <flexcomp name="skirt" type="direct" dim="2" pos="0 0 {LIP_PLANE_M - value("contact_radius_mm") * 1e-3:.6f}"
+                      radius="{value('contact_radius_mm') * 1e-3:.6f}" mass="{value('mass_g') * 1e-3:.6f}"
+                      rgba="0.15 0.35 0.85 1" group="4" point="{point}" element="{element}">
+              <elasticity young="{value('young_mpa') * value('shell_bending_correction') * 1e6:.6g}"
+                          poisson="{value('poisson')}"
+                          thickness="{value('thickness_mm') * 1e-3:.6f}" damping="{value('damping_s')}"
+                          elastic2d="both"/>
+              <contact condim="3" selfcollide="none" contype="1" conaffinity="0"
+                       friction="{value('friction')} 0.005 0.0001"
+                       solref="{contact_solref()}"
+                       solimp="0.95 0.99 0.0005"/>
+              <pin id="{pin}"/>
+            </flexcomp>
 """
 
 
 def chamber_walls():
-    """The four chamber walls in the cup body: each a rigid plate from the axis to the skirt's
-    inner surface (a box) with a rounded edge along the skirt's inside (a capsule) that the skirt
-    leans on; both end wall_recess_mm above the lip plane."""
-    lip_plane = 0.1206
+    """The four chamber walls in the chamber body: each a rigid plate from the axis to the throat,
+    its lower face level with the skirt's underside at the throat."""
     cr = value("contact_radius_mm") * 1e-3
-    r_top, r_rim = value("top_radius_mm") * 1e-3, value("rim_radius_mm") * 1e-3
-    height, half_t = value("height_mm") * 1e-3, 0.5 * value("wall_thickness_mm") * 1e-3
-    z_top = lip_plane - cr - height  # the skirt's pinned ring: the ceiling
-    z_edge = lip_plane - value("wall_recess_mm") * 1e-3  # the walls' lower edge
-    z_rib = z_edge - half_t  # the edge capsule's lower end (its cap reaches z_edge)
-    # The skirt's centre line runs from (r_top, z_top) to (r_rim, lip_plane - cr).
-    r_at = lambda z: r_top + (r_rim - r_top) * (z - z_top) / height
-    inset = cr + half_t  # the capsule touches the skirt's inner face at rest
-    rib_top, rib_bottom = r_top - inset, r_at(z_rib) - inset
-    lines = ["          <!-- The chamber walls (tools/make_flex_tool.py): rigid in their plane; the"
-             " skirt leans on their edges. -->"]
+    r_throat, height = value("throat_radius_mm") * 1e-3, value("height_mm") * 1e-3
+    half_t = 0.5 * value("wall_thickness_mm") * 1e-3
+    z_edge = LIP_PLANE_M - height  # the skirt's underside at the throat
+    z_top = z_edge - 3e-3
+    half_r = 0.5 * (r_throat - cr)
+    lines = ["            <!-- The chamber walls (tools/make_flex_tool.py): rigid in their plane;"
+             " they end at the throat. -->"]
     for k in range(4):
         a = 0.5 * math.pi * k  # the quadrant boundaries (plugin/pneumatics/cup_geometry.h)
         c, s = math.cos(a), math.sin(a)
-        half_r = 0.5 * rib_top
         lines.append(
-            f'          <geom name="wall_{k}" type="box" size="{half_r:.6f} {half_t:.6f} '
+            f'            <geom name="wall_{k}" type="box" size="{half_r:.6f} {half_t:.6f} '
             f'{0.5 * (z_edge - z_top):.6f}" pos="{half_r * c:.6f} {half_r * s:.6f} '
             f'{0.5 * (z_edge + z_top):.6f}" quat="{math.cos(a / 2):.6f} 0 0 {math.sin(a / 2):.6f}" {wall_contact()}/>')
-        lines.append(
-            f'          <geom name="wall_edge_{k}" type="capsule" size="{half_t:.6f}" '
-            f'fromto="{rib_top * c:.6f} {rib_top * s:.6f} {z_top:.6f} {rib_bottom * c:.6f} '
-            f'{rib_bottom * s:.6f} {z_rib:.6f}" {wall_contact()}/>')
     return "\n".join(lines) + "\n"
+
+
+def chamber_body():
+    """The body below the bellows that carries the walls and the skirt's throat: on one axial
+    slide, the bellows' spring."""
+    k = value("bellows_n_per_mm") * 1e3
+    mass = value("chamber_body_g") * 1e-3
+    throat_z = LIP_PLANE_M - value("height_mm") * 1e-3
+    r_body = value("throat_radius_mm") * 1e-3 + value("wall_thickness_mm") * 1e-3
+    return f"""          <!-- The bellows (tools/make_flex_tool.py): the chamber body hangs from the cup on one
+               axial spring; negative = pushed up (compressed). -->
+          <body name="chamber_body" gravcomp="1">
+            <joint name="bellows" type="slide" axis="0 0 1" range="{-value("bellows_travel_mm") * 1e-3:.6f} {value("bellows_travel_mm") * 1e-3:.6f}"
+                   stiffness="{k:.6g}" springref="0" damping="2" armature="0.002" limited="true"/>
+            <inertial pos="0 0 {throat_z - 2e-3:.6f}" mass="{mass:.6f}" diaginertia="1e-7 1e-7 1e-7"/>
+            <geom name="chamber_wall" class="rigid" type="cylinder" size="{r_body:.6f} 0.0070"
+                  pos="0 0 {throat_z - 0.0070:.6f}" mass="0" rgba="0.45 0.8 0.7 0.6"/>
+""" + chamber_walls() + skirt_flexcomp() + "          </body>\n"
 
 
 def contact_solref():
@@ -136,7 +161,7 @@ def contact_solref():
 
 def wall_contact():
     """The walls touch the skirt (and objects) with the skirt's own contact; group 3: no ray of
-    the pressure sensor sees them; their mass is in the cup body's."""
+    the pressure sensor sees them; their mass is in the chamber body's."""
     return (f'group="3" contype="0" conaffinity="1" condim="3" mass="0" rgba="0.95 0.55 0.1 0.6" '
             f'friction="{value("friction")} 0.005 0.0001" solref="{contact_solref()}" '
             f'solimp="0.95 0.99 0.0005"')
@@ -194,7 +219,11 @@ def tool_xml(walls=True, vacuum_load=True):
     # The segment lip and its carrier body go; the skirt takes their place.
     start = text.index('          <!-- The lip\'s carrier')
     end = text.index("        </body>\n      </body>\n    </body>\n  </worldbody>")
-    text = text[:start] + (chamber_walls() if walls else "") + skirt_flexcomp() + text[end:]
+    body = chamber_body() if walls else chamber_body().replace(chamber_walls(), "")
+    text = text[:start] + body + text[end:]
+    # The rigid 23 mm body and its skirt go: the flex skirt is what is out there.
+    text = re.sub(r'\n          <geom name="body" class="rigid".*?/>', "", text, flags=re.S)
+    text = re.sub(r'\n          <geom name="skirt" class="rigid".*?/>', "", text, flags=re.S)
     text = re.sub(r"\n  <!-- Rigid lip carrier.*?</equality>\n", "\n", text, flags=re.S)
     text = text.replace('<mujoco model="ssc_tool">', '<mujoco model="ssc_tool_flex">')
     # Each chamber's vacuum loads the skirt and the cup (the walls hold the skirt's shape).

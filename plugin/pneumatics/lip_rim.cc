@@ -79,20 +79,23 @@ int ColumnSealPoint(const double* depth_m, const double* radius_m, int n, double
   return seal;
 }
 
-std::array<double, 3> TrianglePressureForce(const double p0[3], const double p1[3],
-                                            const double p2[3], double vacuum_pa,
-                                            const double cavity_point[3]) {
-  double e1[3], e2[3], n[3], to_cavity[3];
+std::array<double, 3> TriangleAreaVector(const double p0[3], const double p1[3],
+                                         const double p2[3]) {
+  double e1[3], e2[3];
   for (int k = 0; k < 3; ++k) {
     e1[k] = p1[k] - p0[k];
     e2[k] = p2[k] - p0[k];
-    to_cavity[k] = cavity_point[k] - (p0[k] + p1[k] + p2[k]) / 3.0;
   }
-  // Half the cross product: the area vector.
-  n[0] = 0.5 * (e1[1] * e2[2] - e1[2] * e2[1]);
-  n[1] = 0.5 * (e1[2] * e2[0] - e1[0] * e2[2]);
-  n[2] = 0.5 * (e1[0] * e2[1] - e1[1] * e2[0]);
-  const double toward = n[0] * to_cavity[0] + n[1] * to_cavity[1] + n[2] * to_cavity[2];
+  return {0.5 * (e1[1] * e2[2] - e1[2] * e2[1]), 0.5 * (e1[2] * e2[0] - e1[0] * e2[2]),
+          0.5 * (e1[0] * e2[1] - e1[1] * e2[0])};
+}
+
+std::array<double, 3> TrianglePressureForce(const double p0[3], const double p1[3],
+                                            const double p2[3], double vacuum_pa,
+                                            const double cavity_point[3]) {
+  const std::array<double, 3> n = TriangleAreaVector(p0, p1, p2);
+  double toward = 0.0;
+  for (int k = 0; k < 3; ++k) toward += n[k] * (cavity_point[k] - (p0[k] + p1[k] + p2[k]) / 3.0);
   const double sign = toward < 0 ? -1.0 : 1.0;
   return {sign * vacuum_pa * n[0], sign * vacuum_pa * n[1], sign * vacuum_pa * n[2]};
 }

@@ -45,6 +45,10 @@ std::vector<std::vector<int>> SkirtColumns(const std::vector<double>& vertex_ang
 // lip covering the opening beyond it. Returns an index into the n values, -1 when n is 0.
 int ColumnSealPoint(const double* depth_m, const double* radius_m, int n, double tolerance_m);
 
+// Half the cross product of a triangle's edges p1 - p0 and p2 - p0: its area along its normal,
+// the side set by the winding.
+std::array<double, 3> TriangleAreaVector(const double p0[3], const double p1[3], const double p2[3]);
+
 // The force (N) of a pressure difference on a flat triangle p0 p1 p2 (world, m): `vacuum_pa`
 // (positive: the cavity side is at lower pressure) times the triangle's area, along its normal
 // turned toward `cavity_point` (a point inside the cavity, e.g. on the cup axis). Each vertex
