@@ -3,11 +3,14 @@
 //   - segments: geoms of lip_geom_group under the sensor site's body, each on a slide joint
 //     (models/ssc_tool.xml): ring bending couples the slides; the carrier body's shear slides
 //     and tilt hinges get springs from the lip_* keys;
-//   - skirt: a 2-D MuJoCo flex whose vertices hang under the site's body
-//     (models/ssc_tool_flex.xml): the engine's own elasticity deforms it; its deepest vertices
-//     at rest are the rim points; each rim point reads its column's seal point (the column's
-//     deepest vertex now: the rim, or the crease of a lip folded in on itself); each chamber's
-//     vacuum loads the skirt's triangles and the cup's ceiling inside the skirt's pinned ring.
+//   - skirt: a 2-D MuJoCo flex whose vertices hang under the site's body, pinned along its
+//     throat to the site's body or a body on it (a chamber body on its bellows,
+//     models/ssc_tool_flex.xml): the engine's own elasticity deforms it; its deepest vertices
+//     at rest are the rim points; each rim point's column runs from its stretch of the throat out
+//     to it; the column's seal point is its deepest vertex now (the rim, or the crease of a lobe
+//     folded in under the cup), and its passage the narrowest gap under it (air entering at the
+//     rim reaches the throat only through it); each chamber's vacuum loads the skirt's
+//     triangles on their rest underside and the ceiling inside the throat.
 // A model with lip geoms uses them; otherwise the first 2-D flex under the site's body.
 // MuJoCo adapter: the physics it calls lives in pneumatics/ (lip_ring.h, lip_rim.h).
 #ifndef SSC_PLUGIN_LIP_BODY_H_
@@ -109,7 +112,7 @@ class LipBody {
   // Skirt.
   int flex_ = -1;
   std::vector<int> rim_vertex_;  // flex vertex (global id) of each rim point
-  // The free vertices (global ids) above each rim point, column i in
+  // The vertices (global ids) above each rim point, throat to rim, column i in
   // column_vertex_[column_start_[i] .. column_start_[i + 1]).
   std::vector<int> column_start_, column_vertex_;
   mutable std::vector<int> seal_vertex_;  // per sample: each column's seal point (global id)

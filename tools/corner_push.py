@@ -1,28 +1,25 @@
 #!/usr/bin/env python3
-"""The scripted push into a concave corner (docs/pneumatics.md, "The flex skirt at a concave
-corner") for the flex skirt as it is or a variant of tools/make_flex_tool.py's parameters.
+"""The scripted push into a concave corner (issue 25's crimp push; docs/flex_skirt.md, "The
+skirt at a concave corner") for the flex skirt as it is or a variant of tools/make_flex_tool.py's
+parameters, with an optional rendered sequence.
 
-The rig of tests/plugin/flex_lip_test.py: the tool on a stiff x/y/z servo, lowered 2 mm above a
-plate to --press-mm into it with its centre 2.5 mm inside the edge y = 0, at x = 8 mm; then its
-set point moves at 20 mm/s along the edge to --to-mm and holds 0.3 s. The plate has a 270-degree
-corner at the origin (the quadrant x > 0, y > 0 is a 10 mm drop), so the stretch of lip hanging
-over the drop meets the corner's other wall, x = 0. Printed per press: where the cup ended, the
-rim's closest approach to the axis, its lowest vertex against the top face, and the four chamber
-pressures pushed / lowered (the cup set straight down where the pushed one ended).
+The rig of tests/plugin/flex_lip_test.py: the tool on a stiff x/y/z servo over a plate with a
+270-degree corner at the origin (the quadrant x > 0, y > 0 is a 10 mm drop). The cup is lowered at
+x = --from-mm, its centre 2.5 mm inside the edge y = 0, until the bellows carries the 1.5 N preload
+(the approach's stop), then its set point moves at 20 mm/s along the edge to --to-mm and holds
+0.3 s: the stretch of skirt hanging over the drop meets the corner's far wall, x = 0. Printed
+every 2 mm and at the end: where the cup is, the chamber pressures, how many skirt vertices lie
+inside the throat (a lobe folded in under the cup), the lowest vertex against the top face; at
+the end the chambers of the cup lowered straight onto the same spot, for comparison. A chamber
+is blocked when a lobe over its mouth lifts it to kPa where the lowered cup reads Pa.
 
-With --press-n the press is set by force instead, as the trial's approach sets it (1.5 N on the
-F/T): the commanded press at which the settled contact force on the plate first reaches that
-force (a scan in 0.1 mm steps, then bisection; each try a fresh rig). Printed first per force:
-the press found, the skirt's compression (the lip plane below the top face), and how far the
-rim's surface over the drop hangs below the top face, against the rim's contact radius: the rim
-catches the corner's far wall only if it hangs lower than its radius (its vertex centres below
-the wall's top edge), else it rides up over the edge.
+With --frames DIR, PNG frames (a close-up from the drop's side, the chamber body drawn
+translucent) every --frame-mm of the set point's travel; headless: MUJOCO_GL=egl (or osmesa).
 
 Usage (from the repository, after a build):
-  SSC_PLUGIN_LIB=build/lib/libssc_plugin.so .venv/bin/python tools/corner_push.py \\
-      --press-mm 0.3,1.0 --to-mm 1 [--set contact_radius_mm=0.2 --set rings=5 ...]
-  SSC_PLUGIN_LIB=build/lib/libssc_plugin.so .venv/bin/python tools/corner_push.py \\
-      --press-n 1.5 --to-mm 1 --set young_mpa=0.6 --set thickness_mm=0.6 --set height_mm=4
+  SSC_PLUGIN_LIB=build/lib/libssc_plugin.so .venv/bin/python tools/corner_push.py --to-mm -3
+  MUJOCO_GL=egl SSC_PLUGIN_LIB=build/lib/libssc_plugin.so .venv/bin/python tools/corner_push.py \\
+      --to-mm -3 --frames out/crimp --set thickness_mm=1.5
 """
 import argparse
 import os
@@ -32,39 +29,93 @@ import sys
 import tempfile
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
+INSET_M = -2.5e-3  # the cup's centre inside the edge y = 0 (the static curve's 100 Pa point)
+SPEED_M_S = 0.02
+
+
+def parse(p):
+    p.add_argument("--from-mm", type=float, default=16.0,
+                   help="where the cup is lowered, mm from the corner's far wall (x)")
+    p.add_argument("--to-mm", type=float, default=-3.0,
+                   help="the set point's end along the edge, mm from the far wall")
+    p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                   help="a skirt parameter of tools/make_flex_tool.py (repeatable)")
+    p.add_argument("--frames", help="write PNG frames to this directory")
+    p.add_argument("--frame-mm", type=float, default=2.0, help="set-point travel between frames")
+    p.add_argument("--size", default="640x400", help="frame WIDTHxHEIGHT, px")
+    a = p.parse_args()
+    if not 12 <= a.from_mm <= 30:
+        p.error("--from-mm: in [12, 30] mm (the 23 mm rim clear of the far wall)")
+    if not -8 <= a.to_mm < a.from_mm:
+        p.error("--to-mm: in [-8, --from-mm) mm")
+    if not 0.2 <= a.frame_mm <= 10:
+        p.error("--frame-mm: in [0.2, 10] mm")
+    try:
+        a.width, a.height = (int(v) for v in a.size.split("x"))
+    except ValueError:
+        p.error(f"--size {a.size!r}: expected WIDTHxHEIGHT")
+    if not (16 <= a.width <= 2048 and 16 <= a.height <= 2048):
+        p.error("--size: each side in [16, 2048] px")
+    return a
+
+
+class Frames:
+    """Close-ups of the skirt from the drop's side, the chamber body translucent."""
+
+    def __init__(self, mujoco, rig, a):
+        self.mujoco, self.rig, self.dir, self.n = mujoco, rig, a.frames, 0
+        os.makedirs(self.dir, exist_ok=True)
+        m = rig.m
+        for g in range(m.ngeom):
+            if m.geom_group[g] in (1, 3):
+                m.geom_rgba[g, 3] = min(m.geom_rgba[g, 3], 0.2)
+            elif m.geom_bodyid[g] == 0:  # the plate: light, so the skirt's blue shows against it
+                m.geom_rgba[g] = [0.85, 0.82, 0.75, 1]
+        m.vis.headlight.ambient[:] = 0.45
+        m.vis.headlight.diffuse[:] = 0.6
+        m.vis.global_.offwidth = max(m.vis.global_.offwidth, a.width)
+        m.vis.global_.offheight = max(m.vis.global_.offheight, a.height)
+        self.renderer = mujoco.Renderer(m, a.height, a.width)
+        self.cam = mujoco.MjvCamera()
+        self.cam.type = mujoco.mjtCamera.mjCAMERA_FREE
+        # From over the drop, looking back at the corner's far wall and the cup.
+        self.cam.distance, self.cam.azimuth, self.cam.elevation = 0.045, 225, -12
+        self.opt = mujoco.MjvOption()
+        for group in range(6):
+            self.opt.geomgroup[group] = 1
+            self.opt.flexgroup[group] = 1
+        self.opt.flags[mujoco.mjtVisFlag.mjVIS_FLEXVERT] = 0
+        self.opt.flags[mujoco.mjtVisFlag.mjVIS_FLEXFACE] = 1
+        self.opt.flags[mujoco.mjtVisFlag.mjVIS_FLEXEDGE] = 1
+
+    def save(self, label):
+        from PIL import Image  # matplotlib's dependency, in the project's requirements
+        d = self.rig.d
+        self.cam.lookat[:] = [d.qpos[0], d.qpos[1], 0.0]
+        self.renderer.update_scene(d, self.cam, self.opt)
+        path = os.path.join(self.dir, f"crimp_{self.n:02d}_{label}.png")
+        Image.fromarray(self.renderer.render()).save(path)
+        self.n += 1
+        return path
+
+
+def state(np, rig, throat_m):
+    """(vertices inside the throat, lowest vertex z in mm) of the skirt's free rings now."""
+    c = rig.d.qpos[:2]
+    flat = rig.rings()[1:].reshape(-1, 3)
+    r = np.hypot(flat[:, 0] - c[0], flat[:, 1] - c[1])
+    return int((r < throat_m).sum()), 1e3 * flat[:, 2].min()
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--press-mm", default="0.3,1.0", help="commanded presses, comma-separated")
-    p.add_argument("--press-n", default="",
-                   help="presses set by the settled contact force instead, N, comma-separated")
-    p.add_argument("--to-mm", type=float, default=1.0,
-                   help="the set point's end along the edge, mm from the corner's wall")
-    p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
-                   help="a skirt parameter of tools/make_flex_tool.py (repeatable)")
-    a = p.parse_args()
-    try:
-        presses = [float(v) for v in a.press_mm.split(",")]
-    except ValueError:
-        p.error(f"--press-mm {a.press_mm!r}: expected numbers, comma-separated")
-    if not all(0 < v <= 2 for v in presses):
-        p.error("--press-mm: each in (0, 2] mm")
-    try:
-        forces = [float(v) for v in a.press_n.split(",")] if a.press_n else []
-    except ValueError:
-        p.error(f"--press-n {a.press_n!r}: expected numbers, comma-separated")
-    if not all(0.1 <= v <= 10 for v in forces):
-        p.error("--press-n: each in [0.1, 10] N")
-    if not -5 <= a.to_mm <= 7:
-        p.error("--to-mm: in [-5, 7] mm")
+    a = parse(argparse.ArgumentParser(description=__doc__.split("\n")[0]))
     import numpy as np
 
     import flex_rig
 
-    mujoco, rig_module = flex_rig.load(p)
+    mujoco, rig_module = flex_rig.load(argparse.ArgumentParser())
     tool, variant = "ssc_tool_flex.xml", None
-    sectors = int(rig_module.skirt_parameters()["sectors"])
+    params = rig_module.skirt_parameters()
     if a.set:
         # The rig names the tool inside models/ (and picks the flex integrator by its name).
         fd, variant = tempfile.mkstemp(prefix="flex_push_", suffix=".xml", dir=ROOT / "models")
@@ -72,81 +123,47 @@ def main():
         cmd = [sys.executable, str(ROOT / "tools" / "make_flex_tool.py"), "--out", variant]
         for item in a.set:
             cmd += ["--set", item]
-            if item.startswith("sectors="):
-                sectors = int(float(item.split("=", 1)[1]))
+            key, _, text = item.partition("=")
+            params[key] = float(text) if key in params else params.get(key)
         subprocess.run(cmd, check=True)
         tool = os.path.basename(variant)
-
-    def plate_force(rig):
-        """Normal force of the contacts with the plate (world geoms), N: what the F/T reads."""
-        total, wrench = 0.0, np.zeros(6)
-        for i in range(rig.d.ncon):
-            if any(g >= 0 and rig.m.geom_bodyid[g] == 0 for g in rig.d.contact.geom[i]):
-                mujoco.mj_contactForce(rig.m, rig.d, i, wrench)
-                total += wrench[0]
-        return total
-
-    def press_for_force(force_n):
-        """The commanded press (mm) at which the settled plate force first reaches force_n, as
-        the approach lowering the cup meets it: a scan in 0.1 mm steps, then bisection."""
-        def settled(press_mm):
-            rig = rig_module.Rig(rig_module.concave_corner(), tool=tool).press(
-                start, press_mm, y_m=inset)
-            return plate_force(rig) - force_n, rig
-        low, high = 0.0, None
-        for k in range(1, 21):
-            f, rig = settled(0.1 * k)
-            if f >= 0:
-                high, best = 0.1 * k, rig
-                break
-            low = 0.1 * k
-        if high is None:
-            return low, rig
-        for _ in range(5):
-            mid = (low + high) / 2
-            f, rig = settled(mid)
-            if f >= 0:
-                high, best = mid, rig
-            else:
-                low = mid
-        return high, best
-
+        rig_module.skirt_parameters = lambda: params
+    throat_m = params["throat_radius_mm"] * 1e-3
     try:
-        inset, start, end = -2.5e-3, 8e-3, a.to_mm * 1e-3
-        radius_mm = rig_module.skirt_parameters()["contact_radius_mm"]
-        for item in a.set:
-            if item.startswith("contact_radius_mm="):
-                radius_mm = float(item.split("=", 1)[1])
-        if forces:  # the pushes run at the presses that give these forces
-            presses = []
-        for force in forces:
-            press, rig = press_for_force(force)
-            adr, n = rig.m.flex_vertadr[0], rig.m.flex_vertnum[0]
-            rim = rig.d.flexvert_xpos[adr:adr + n].reshape(-1, sectors, 3)[-1]
-            # The rim's surface over the drop (y > 0): its lowest point below the top face. A
-            # rim resting on the plate has its vertex centres one contact radius above it.
-            hang = radius_mm - 1e3 * rim[rim[:, 1] > 0, 2].min()
-            print(f"force {force:.2f} N (settled {plate_force(rig):.2f} N): commanded press "
-                  f"{press:.3f} mm, compression {1e3 * (rig_module.TOOL_Z_M - rig.d.qpos[2]):.3f} "
-                  f"mm; the rim over the drop hangs {hang:.3f} mm below the top face, against "
-                  f"its contact radius {radius_mm:.2f} mm: "
-                  f"{'catches the far wall' if hang > radius_mm else 'rides over it'}", flush=True)
-            presses.append(press)
-        for press in presses:
-            pushed = rig_module.Rig(rig_module.concave_corner(), tool=tool).press(
-                start, press, y_m=inset)
-            pushed.push_x(end)
-            adr, n = pushed.m.flex_vertadr[0], pushed.m.flex_vertnum[0]
-            rim = pushed.d.flexvert_xpos[adr:adr + n].reshape(-1, sectors, 3)[-1]
-            c = pushed.d.qpos[:2]
-            closest = np.hypot(rim[:, 0] - c[0], rim[:, 1] - c[1]).min()
-            lowered = rig_module.Rig(rig_module.concave_corner(), tool=tool).press(
-                pushed.d.qpos[0], press, y_m=inset)
-            print(f"press {press:.3f} mm: cup at x {1e3 * c[0]:.2f} mm (set {a.to_mm:.2f}); rim "
-                  f"closest {1e3 * closest:.2f} mm, lowest {1e3 * rim[:, 2].min():+.2f} mm "
-                  f"(vertex centre vs the top face); chambers pushed "
-                  f"{np.round(pushed.pressures()).astype(int).tolist()} / lowered "
-                  f"{np.round(lowered.pressures()).astype(int).tolist()} Pa", flush=True)
+        rig = rig_module.Rig(rig_module.concave_corner(), tool=tool)
+        rig.press_to_preload(a.from_mm * 1e-3, y_m=INSET_M)
+        frames = Frames(mujoco, rig, a) if a.frames else None
+        inside, lowest = state(np, rig, throat_m)
+        print(f"lowered at x {a.from_mm:.1f} mm: bellows {rig.bellows_n():.2f} N, the lip plane "
+              f"{1e3 * (rig_module.TOOL_Z_M - rig.d.qpos[2]):.2f} mm below the top face, lowest "
+              f"vertex {lowest:+.2f} mm, chambers {np.round(rig.pressures()).astype(int).tolist()}"
+              f" Pa", flush=True)
+        if frames:
+            print(frames.save("lowered"))
+        start, end = a.from_mm * 1e-3, a.to_mm * 1e-3
+        steps = int(abs(end - start) / SPEED_M_S / rig.m.opt.timestep)
+        per_report = max(1, int(round(2e-3 / SPEED_M_S / rig.m.opt.timestep)))
+        per_frame = max(1, int(round(a.frame_mm * 1e-3 / SPEED_M_S / rig.m.opt.timestep)))
+        for k in range(1, steps + 1):
+            rig.d.ctrl[0] = start + (end - start) * k / steps
+            mujoco.mj_step(rig.m, rig.d)
+            if k % per_report == 0 or k == steps:
+                inside, lowest = state(np, rig, throat_m)
+                print(f"set {1e3 * rig.d.ctrl[0]:+6.2f} cup {1e3 * rig.d.qpos[0]:+6.2f} mm: "
+                      f"chambers {np.round(rig.pressures()).astype(int).tolist()} Pa, "
+                      f"{inside} vertices inside the throat, lowest {lowest:+.2f} mm", flush=True)
+            if frames and (k % per_frame == 0 or k == steps):
+                print(frames.save(f"x{1e3 * rig.d.ctrl[0]:+.1f}mm"))
+        mujoco.mj_step(rig.m, rig.d, int(round(0.3 / rig.m.opt.timestep)))
+        inside, lowest = state(np, rig, throat_m)
+        if frames:
+            print(frames.save("held"))
+        lowered = rig_module.Rig(rig_module.concave_corner(), tool=tool)
+        lowered.press_to_preload(rig.d.qpos[0], y_m=INSET_M)
+        print(f"held at x {1e3 * rig.d.qpos[0]:+.2f} mm: chambers pushed "
+              f"{np.round(rig.pressures()).astype(int).tolist()} / lowered there "
+              f"{np.round(lowered.pressures()).astype(int).tolist()} Pa; {inside} vertices "
+              f"inside the throat, lowest {lowest:+.2f} mm", flush=True)
     finally:
         if variant:
             os.remove(variant)

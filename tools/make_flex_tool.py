@@ -1,12 +1,15 @@
 #!/usr/bin/env python3
 """Writes models/ssc_tool_flex.xml: models/ssc_tool.xml with its lip (16 segments on slides and
-their carrier) replaced by a skirt that MuJoCo deforms: a 2-D flex shell with the engine's own
-elasticity, pinned along its top ring to the cup and free at its rim, leaning on the four
-chamber walls, and loaded by each chamber's vacuum (the plugin's lip_vacuum_load).
+their carrier) and its rigid 23 mm body replaced by the real cup's lower part: a chamber body on
+the bellows (one axial spring), its four chamber walls ending at the 11 mm throat, and from the
+throat a flared skirt out to the 23 mm rim that MuJoCo deforms (a 2-D flex shell with the
+engine's own elasticity, pinned along the throat, free at its rim), loaded by each chamber's
+vacuum (the plugin's lip_vacuum_load).
 
-The skirt's shape and material are the one home of those facts (SKIRT below); the published cup
-fixes the rim (the 11 mm opening); the rest is argued in docs/pneumatics.md (the flex skirt) with
-its range. Run after changing either: tools/make_flex_tool.py (a test checks the file is current).
+The skirt's shape, material and bellows are the one home of those facts (SKIRT below); the
+published cup fixes the throat and the rim (Fig. 1b, 1c); the rest is argued from the photos in
+docs/flex_skirt.md with its range. Run after changing either:
+tools/make_flex_tool.py (a test checks the file is current).
 
 A variant for a sensitivity run: tools/make_flex_tool.py --set height_mm=2.5 --set friction=1.0
 --out PATH writes the model with those values to PATH (and nothing else; the values must be
@@ -42,7 +45,6 @@ SKIRT = {
     "poisson": (0.45, "", "0.45-0.49: nearly incompressible rubber (0.45 keeps shells unlocked)"),
     "damping_s": (0.002, "s", "Rayleigh damping: keeps the discrete step stable at 2 ms"),
     "mass_g": (2.0, "g", "numerical: heavier than the ~0.3 g of silicone so contacts stay stiff"),
-    "contact_radius_mm": (0.4, "mm", "half the thickness"),
     "friction": (0.6, "", "0.5-1.0: silicone on acrylic or aluminium"),
     # A soft contact's force scales with the mass behind it; a skirt vertex weighs milligrams, so
     # the usual time-constant solref lets the rim sink through the object under a 1 N press. A
@@ -73,6 +75,11 @@ def value(key):
 LIP_PLANE_M = 0.1206  # the tool site in the cup body (models/ssc_tool.xml)
 
 
+def contact_radius_m():
+    """The skirt's surface stands half its thickness off its mid-surface."""
+    return 0.5 * value("thickness_mm") * 1e-3
+
+
 def profile(f):
     """(radius, height above the rim's centre line) in metres at s = f from throat to rim."""
     r_throat, r_rim = value("throat_radius_mm") * 1e-3, value("rim_radius_mm") * 1e-3
@@ -96,12 +103,12 @@ def skirt_flexcomp():
     point = " ".join("%.6f %.6f %.6f" % p for p in points)
     element = " ".join("%d %d %d" % e for e in elements)
     pin = " ".join(str(vid(0, j)) for j in range(sectors))
-    return f"""            <!-- The lip: a skirt MuJoCo deforms (tools/make_flex_tool.py; docs/pneumatics.md).
+    return f"""            <!-- The lip: a skirt MuJoCo deforms (tools/make_flex_tool.py; docs/flex_skirt.md).
                  Pinned along the throat to the chamber body, free out to the rim at the lip
                  plane; the pressure plugin reads its columns and loads it with each chamber's
                  vacuum. -->
-            <flexcomp name="skirt" type="direct" dim="2" pos="0 0 {LIP_PLANE_M - value("contact_radius_mm") * 1e-3:.6f}"
-                      radius="{value('contact_radius_mm') * 1e-3:.6f}" mass="{value('mass_g') * 1e-3:.6f}"
+            <flexcomp name="skirt" type="direct" dim="2" pos="0 0 {LIP_PLANE_M - contact_radius_m():.6f}"
+                      radius="{contact_radius_m():.6f}" mass="{value('mass_g') * 1e-3:.6f}"
                       rgba="0.15 0.35 0.85 1" group="4" point="{point}" element="{element}">
               <elasticity young="{value('young_mpa') * value('shell_bending_correction') * 1e6:.6g}"
                           poisson="{value('poisson')}"
@@ -119,7 +126,7 @@ def skirt_flexcomp():
 def chamber_walls():
     """The four chamber walls in the chamber body: each a rigid plate from the axis to the throat,
     its lower face level with the skirt's underside at the throat."""
-    cr = value("contact_radius_mm") * 1e-3
+    cr = contact_radius_m()
     r_throat, height = value("throat_radius_mm") * 1e-3, value("height_mm") * 1e-3
     half_t = 0.5 * value("wall_thickness_mm") * 1e-3
     z_edge = LIP_PLANE_M - height  # the skirt's underside at the throat
@@ -167,7 +174,7 @@ def wall_contact():
             f'solimp="0.95 0.99 0.0005"')
 
 
-DOC = ROOT / "docs" / "pneumatics.md"
+DOC = ROOT / "docs" / "flex_skirt.md"
 BEGIN, END = "<!-- skirt table: tools/make_flex_tool.py -->", "<!-- end skirt table -->"
 
 
@@ -186,7 +193,7 @@ def parse_args(argv):
     """(check, overrides, out) from argv; exits with a message naming a bad argument."""
     import argparse
     parser = argparse.ArgumentParser(description="Writes models/ssc_tool_flex.xml and the skirt "
-                                     "table in docs/pneumatics.md, or a variant model with --out.")
+                                     "table in docs/flex_skirt.md, or a variant model with --out.")
     parser.add_argument("--check", action="store_true", help="fail when either file is stale")
     parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                         help="override a skirt parameter (only with --out): " + ", ".join(SKIRT))
@@ -226,13 +233,14 @@ def tool_xml(walls=True, vacuum_load=True):
     text = re.sub(r'\n          <geom name="skirt" class="rigid".*?/>', "", text, flags=re.S)
     text = re.sub(r"\n  <!-- Rigid lip carrier.*?</equality>\n", "\n", text, flags=re.S)
     text = text.replace('<mujoco model="ssc_tool">', '<mujoco model="ssc_tool_flex">')
-    # Each chamber's vacuum loads the skirt and the cup (the walls hold the skirt's shape).
+    # Each chamber's vacuum loads the skirt and the chamber body.
     text = text.replace('<instance name="pressure"/>',
                         '<instance name="pressure">\n        <config key="lip_vacuum_load" '
                         f'value="{int(vacuum_load)}"/>\n      </instance>')
     text = re.sub(r"<!--\n  Smart Suction Cup tool:", "<!--\n  GENERATED by tools/make_flex_tool.py from ssc_tool.xml: do not edit.\n"
-                  "  The same tool with a deformable skirt lip (a 2-D flex) instead of 16 segments,\n"
-                  "  the four chamber walls it leans on, and each chamber's vacuum loading it.\n"
+                  "  The same tool with a chamber body on a bellows spring, its walls ending at the 11 mm\n"
+                  "  throat, and a deformable skirt (a 2-D flex) from the throat to the 23 mm rim\n"
+                  "  instead of 16 segments and the rigid body; each chamber's vacuum loads it.\n"
                   "  Scenes using it must set integrator=\"discrete\" (MuJoCo integrates 2-D flex\n"
                   "  elasticity only there).\n\n  Smart Suction Cup tool:", text, count=1)
     return text

@@ -33,13 +33,14 @@ import make_flex_tool  # noqa: E402  (the one home of the skirt's parameters)
 # The argued range of each unpublished parameter (the SKIRT table's "range and why").
 RANGES = {
     "height_mm": (2.0, 4.0),
-    "thickness_mm": (0.6, 1.5),
-    "young_mpa": (0.6, 1.5),
-    "top_radius_mm": (3.5, 5.0),
+    "flare": (1.0, 2.0),
+    "thickness_mm": (0.5, 1.0),
+    "young_mpa": (1.2, 2.0),
     "friction": (0.5, 1.0),
+    "bellows_n_per_mm": (0.5, 3.0),
 }
 OBJECTS = "corner_a270,fillet"
-PRESS_MM = 0.3  # the approach's press with the skirt (docs/pneumatics.md)
+PRESS_MM = 0.3  # the approach's press with the skirt (docs/flex_skirt.md)
 
 
 def resources(variant_dir, overrides):

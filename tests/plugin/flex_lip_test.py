@@ -237,7 +237,7 @@ class SkirtSensorTest(unittest.TestCase):
         self.assertTrue(np.all(p >= SEAL_THRESHOLD_PA), p)
         # Flattened: the outer rings that stood 0.3-1.3 mm over the rim plane at rest lie on the
         # plate (within 0.05 mm of one contact radius above it), the rim pushed outward.
-        radius = skirt_parameters()["contact_radius_mm"] * 1e-3
+        radius = 0.5e-3 * skirt_parameters()["thickness_mm"]
         rings = rig.rings()
         for ring in rings[2:]:
             self.assertTrue(np.all(np.abs(ring[:, 2] - radius) < 0.05e-3), ring[:, 2])
@@ -260,7 +260,7 @@ class SkirtSensorTest(unittest.TestCase):
             flat = rig.rings()[1:].reshape(-1, 3)
             return flat[(np.abs(flat[:, 1]) < 1.5e-3) & (flat[:, 0] > 8.5e-3), 2]
 
-        radius = skirt_parameters()["contact_radius_mm"] * 1e-3
+        radius = 0.5e-3 * skirt_parameters()["thickness_mm"]
         self.assertTrue(len(over(notched)) > 0)
         self.assertLess(over(notched).max(), radius - 0.5e-3)
         self.assertGreater(over(plate).min(), radius - 0.05e-3)
@@ -272,6 +272,30 @@ class SkirtSensorTest(unittest.TestCase):
         plate = Rig(PLATE).press_to_preload(0.0)
         slotted = Rig(notch(0.004, 0.001, inner_end_m=0.004)).press_to_preload(0.0)
         self.assertLess(slotted.pressures().mean(), 0.6 * plate.pressures().mean())
+
+    def test_pushed_into_a_concave_corner_the_stretch_over_the_drop_meets_the_far_wall(self):
+        # Issue 25's push at the preload: the cup 2.5 mm inside the edge y = 0, lowered at x = 12
+        # mm, its set point moved to 2 mm past the corner's far wall (x = 0). The stretch of skirt
+        # that hangs over the drop meets that wall and is pushed in toward the axis (vertices
+        # inside the throat's radius), folding up along the wall; none of it lies across the open
+        # part of the throat (over the drop, level with the top face), and the facing chamber
+        # reads what the cup lowered straight onto the same spot reads (docs/flex_skirt.md, "The
+        # skirt at a concave corner").
+        pushed = Rig(concave_corner()).press_to_preload(12e-3, y_m=-2.5e-3)
+        lowest_before = pushed.rings()[1:, :, 2].min()
+        pushed.push_x(-2e-3)
+        c = pushed.d.qpos[:2]
+        flat = pushed.rings()[1:].reshape(-1, 3)
+        inside = np.hypot(flat[:, 0] - c[0], flat[:, 1] - c[1]) < 5.5e-3
+        self.assertGreaterEqual(inside.sum(), 4)
+        radius = 0.5e-3 * skirt_parameters()["thickness_mm"]
+        over_drop = inside & (flat[:, 0] > 0) & (flat[:, 1] > 0)
+        across = over_drop & (np.abs(flat[:, 2] - radius) < 0.3e-3)
+        self.assertFalse(across.any(), flat[inside])  # no lobe over the open mouth
+        self.assertLess(lowest_before, -2e-3)  # the stretch over the drop hung there already
+        lowered = Rig(concave_corner()).press_to_preload(c[0], y_m=-2.5e-3)
+        p, q = pushed.pressures(), lowered.pressures()
+        np.testing.assert_allclose(p, q, rtol=0.3, atol=20.0)
 
     def quadrant_columns(self, rig):
         """The skirt vertices (flat indices) of the chamber whose rim points lie at world angles
@@ -292,7 +316,7 @@ class SkirtSensorTest(unittest.TestCase):
         # mm of the axis), is blocked: its vacuum rises to the sealed chambers' while the other
         # one facing the drop stays open.
         edge = box((0.05, 0.025, 0.005), (0, -0.025, -0.005))
-        radius = skirt_parameters()["contact_radius_mm"] * 1e-3
+        radius = 0.5e-3 * skirt_parameters()["thickness_mm"]
         open_cup = Rig(edge).press(0.0, 0.5, y_m=-1.5e-3)
         folded = Rig(edge).press(0.0, 0.5, y_m=-1.5e-3)
         lobe, rest = self.quadrant_columns(folded)

@@ -97,6 +97,17 @@ TEST(LipRimTest, VacuumPullsATriangleTowardTheCavityWithPressureTimesArea) {
   EXPECT_EQ(TrianglePressureForce(p0, p0, p1, 500.0, cavity)[0], 0.0);
 }
 
+TEST(LipRimTest, TheAreaVectorFollowsTheWinding) {
+  // The same triangle as above: area 2e-6 m^2 along +x for this winding, -x for the other (a
+  // skirt keeps each triangle's winding however it folds, so a side fixed at rest stays put).
+  const double p0[3] = {1e-3, 0, 0}, p1[3] = {1e-3, 2e-3, 0}, p2[3] = {1e-3, 0, 2e-3};
+  const std::array<double, 3> a = TriangleAreaVector(p0, p1, p2);
+  EXPECT_NEAR(a[0], 2e-6, 1e-18);
+  EXPECT_NEAR(a[1], 0.0, 1e-18);
+  EXPECT_NEAR(a[2], 0.0, 1e-18);
+  EXPECT_NEAR(TriangleAreaVector(p0, p2, p1)[0], -2e-6, 1e-18);
+}
+
 TEST(LipRimTest, AFoldedRimShortensTheCurtainAndClosesTheWedgeBeyondIt) {
   // A lip hovering 0.2 mm over a plate: the curtain under the rim is the whole leak.
   CupGeometry geo;
