@@ -43,8 +43,8 @@ int PinnedBody(const mjModel* m, int flex) {
   int best = m->flex_vertbodyid[adr], best_count = 0;
   for (int v = 0; v < n; ++v) {
     const int b = m->flex_vertbodyid[adr + v];
-    const int count = static_cast<int>(
-        std::count(m->flex_vertbodyid + adr, m->flex_vertbodyid + adr + n, b));
+    const int count =
+        static_cast<int>(std::count(m->flex_vertbodyid + adr, m->flex_vertbodyid + adr + n, b));
     if (count > best_count) {
       best = b;
       best_count = count;

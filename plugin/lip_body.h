@@ -117,7 +117,7 @@ class LipBody {
   std::vector<int> column_start_, column_vertex_;
   mutable std::vector<int> seal_vertex_;  // per sample: each column's seal point (global id)
   mutable std::vector<unsigned char> vertex_touching_;  // per sample, by the flex's vertex index
-  std::vector<double> element_cavity_side_;            // +1 / -1 on each triangle's winding
+  std::vector<double> element_cavity_side_;             // +1 / -1 on each triangle's winding
   int column_adr_ = 0;                                  // the flex's first vertex (global id)
   double column_radius_m_ = 0.0;                        // the skirt's contact radius
   mutable std::vector<double> column_depth_, column_radius_;  // scratch, longest column's size

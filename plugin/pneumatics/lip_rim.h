@@ -47,7 +47,8 @@ int ColumnSealPoint(const double* depth_m, const double* radius_m, int n, double
 
 // Half the cross product of a triangle's edges p1 - p0 and p2 - p0: its area along its normal,
 // the side set by the winding.
-std::array<double, 3> TriangleAreaVector(const double p0[3], const double p1[3], const double p2[3]);
+std::array<double, 3> TriangleAreaVector(const double p0[3], const double p1[3],
+                                         const double p2[3]);
 
 // The force (N) of a pressure difference on a flat triangle p0 p1 p2 (world, m): `vacuum_pa`
 // (positive: the cavity side is at lower pressure) times the triangle's area, along its normal
