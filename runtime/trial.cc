@@ -415,6 +415,7 @@ ControllerInput ContourTrial::InputAt(double t, const Vec3& tool,
 bool ContourTrial::TakeCommand(const ControllerCommand& command, double t, const Vec3& tool) {
   if (const std::string e = CheckControllerCommand(command); !e.empty()) {
     const std::string why = controller_->FaultDetail();
+    result_.interrupted = controller_->Interrupted();
     Finish(Outcome::kControllerFault, "controller '" + config_.controller.name + "': " + e +
                                           (why.empty() ? "" : " (" + why + ")"));
     return false;

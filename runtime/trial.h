@@ -99,6 +99,8 @@ struct TrialLogRow {
 struct TrialResult {
   Outcome outcome = Outcome::kRunning;  // OutcomeName() gives its text form
   std::string detail;                   // why (e.g. the warning or the failing value)
+  // The controller was interrupted (Controller::Interrupted): no finished trial, no row.
+  bool interrupted = false;
   DiskTrialMetrics metrics;
   double follow_time_s = 0;  // duration of the follow phase, s
   double sim_time_s = 0;     // total simulated time, s

@@ -175,6 +175,7 @@ std::string RunObjectJob(const ObjectStudySpec& spec, const ObjectJob& job,
       std::fprintf(stderr, "ssc objects: %s\n", write_error.c_str());
     }
   }
+  if (row.result.interrupted) return "";  // not a finished trial: no row
   row.tier = ObjectSceneKindName(ObjectTier(spec.scene_kind, object));
   char line[256];
   std::snprintf(line, sizeof(line), "  %-18s seed %-3llu %-11s end %.1f (%s) %.1f s wall",
@@ -275,6 +276,7 @@ bool RunObjectStudy(const ObjectStudySpec& spec,
   options.threads = spec.threads;
   std::string write_error;
   const JobRunStats stats = RunJobs(set, options, [&](size_t j, const std::string& result) {
+    if (result.empty()) return;  // interrupted: no row
     const size_t a = result.find('\n'), b = result.find('\n', a + 1);
     table_rows[j] = result.substr(a + 1, b == std::string::npos ? b : b - a - 1);
     if (write_error.empty()) table.Append(table_rows[j], &write_error);

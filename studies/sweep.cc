@@ -262,8 +262,9 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
   ApproachCache approaches(m);
   ApproachCache* cache = spec.share_approach ? &approaches : nullptr;
   set.run = [&](std::size_t i) {
-    return SweepCsvRow(spec.scene_name, jobs[i].config, jobs[i].repeat,
-                       RunGuardedTrial(m, jobs[i].config, cache));
+    const TrialResult r = RunGuardedTrial(m, jobs[i].config, cache);
+    return r.interrupted ? std::string() : SweepCsvRow(spec.scene_name, jobs[i].config,
+                                                       jobs[i].repeat, r);
   };
   ScopedTrialErrorGuard guard;
   int skipped = 0, finished = 0;
@@ -275,7 +276,7 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
   options.threads = spec.threads;
   std::string write_error;
   const JobRunStats stats = RunJobs(set, options, [&](std::size_t, const std::string& row) {
-    if (!out.Append(row, &write_error)) return;
+    if (row.empty() || !out.Append(row, &write_error)) return;  // empty: interrupted, no row
     ++finished;
     if (progress) {
       SweepProgress p;

@@ -59,6 +59,9 @@ class Controller {
   // Why the last command is out of range, when the controller knows (e.g. the exception a
   // Python callable raised); "" otherwise.
   virtual std::string FaultDetail() const { return ""; }
+  // True when the fault is the host's stop reaching the controller (Ctrl-C inside a Python
+  // controller): the trial is not a finished one, and studies write no row for it.
+  virtual bool Interrupted() const { return false; }
   // A controller that reads the host's sensors before following (the approach from the air and
   // the move to the start point: e.g. to re-tare the chambers in air at the following pump
   // duty) says so here; it then gets ObserveBeforeFollowing once per control period of those

@@ -481,6 +481,7 @@ class PyController : public Controller {
         fault_ = "interrupted: " + PythonErrorText(e);
         if (!PendingInterrupt())
           PendingInterrupt() = std::make_unique<nb::python_error>(std::move(e));
+        interrupted_ = true;
         return bad;
       }
       fault_ = PythonErrorText(e);
@@ -492,8 +493,10 @@ class PyController : public Controller {
     return bad;
   }
   std::string FaultDetail() const override { return fault_; }
+  bool Interrupted() const override { return interrupted_; }
 
  private:
+  bool interrupted_ = false;
   std::shared_ptr<PyRef> fn_;
   ContourLawParams law_;
   double period_s_;
@@ -994,6 +997,7 @@ NB_MODULE(_core, m) {
           ok = RunSweep(model.get(), spec, reporter.Callback(), &summary, &error);
         }
         reporter.Raise();
+        RaisePendingInterrupt();
         if (!ok) Fail(error);
         if (summary.interrupted) {
           Interrupted("sweep interrupted: " + std::to_string(summary.ran) +
@@ -1059,6 +1063,7 @@ NB_MODULE(_core, m) {
                              nullptr, &ceilings);
         }
         reporter.Raise();
+        RaisePendingInterrupt();
         if (summary.interrupted) Interrupted("validate " + error);
         if (!ok) Fail(error);
         nb::dict d;
@@ -1148,6 +1153,7 @@ NB_MODULE(_core, m) {
           nb::gil_scoped_release release;
           ok = RunObjectStudy(spec, nullptr, &summary, &error);
         }
+        RaisePendingInterrupt();
         if (!ok) Fail(error);
         if (summary.interrupted) {
           Interrupted("objects interrupted: " + std::to_string(summary.finished) + " of " +
