@@ -263,8 +263,8 @@ bool RunSweep(const mjModel* m, const SweepSpec& spec,
   ApproachCache* cache = spec.share_approach ? &approaches : nullptr;
   set.run = [&](std::size_t i) {
     const TrialResult r = RunGuardedTrial(m, jobs[i].config, cache);
-    return r.interrupted ? std::string() : SweepCsvRow(spec.scene_name, jobs[i].config,
-                                                       jobs[i].repeat, r);
+    return r.interrupted ? std::string()
+                         : SweepCsvRow(spec.scene_name, jobs[i].config, jobs[i].repeat, r);
   };
   ScopedTrialErrorGuard guard;
   int skipped = 0, finished = 0;
