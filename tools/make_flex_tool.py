@@ -204,6 +204,8 @@ def parse_args(argv):
         key, sep, text = item.partition("=")
         if not sep or key not in SKIRT:
             parser.error(f"--set {item!r}: expected KEY=VALUE with KEY one of {', '.join(SKIRT)}")
+        if key in overrides:  # a typo, not an override: which value was meant is unknowable
+            parser.error(f"--set {key}: given twice")
         try:
             number = float(text)
         except ValueError:

@@ -125,6 +125,12 @@ def cases():
                  with_files([script("k.py", f"{name} = 0\n")],
                             lambda s, n=name: sil("--set", f"{n}=1", "--set", f"{n}=2", s)),
                  USAGE, "given twice"))
+    for key in ("rings", "thickness_mm"):
+        add(Case("keys twice", f"make_flex_tool --set {key} twice",
+                 lambda folder, k=key: subprocess.run(
+                     [PYTHON, os.path.join(SRC, "tools", "make_flex_tool.py"), "--set", f"{k}=5",
+                      "--set", f"{k}=6", "--out", "v.xml"], cwd=folder, capture_output=True,
+                     text=True, timeout=TIMEOUT_S), USAGE, f"--set {key}: given twice"))
     # A tune box over a whole key that holds fewer than two whole numbers.
     for box in ("fit_points=3.2:3.8", "start_iterations=1.1:1.9", "circle_points=4.5:4.9"):
         add(Case("whole keys", f"tune {box}",
