@@ -17,6 +17,7 @@ APT_PACKAGES=(build-essential cmake pkg-config python3 python3-venv python3-pip
   nlohmann-json3-dev libnlopt-dev libnlopt-cxx-dev
   libeigen3-dev libglfw3-dev libtinyxml2-dev libgtest-dev libgmock-dev libmatio-dev
   libstb-dev libcli11-dev nlohmann-json3-dev xvfb xauth libgl1-mesa-dri libglx-mesa0 libgl1-mesa-dev
+  libegl1 libegl-mesa0
   libopenmpi-dev openmpi-bin clang-format cppcheck)
 
 missing=()

@@ -36,6 +36,7 @@
 #include "plugin/chamber_pressure_sensor.h"
 #include "robotlog/mat_log.h"
 #include "robotlog/topic_csv.h"
+#include "runtime/approach_cache.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/tool_servo.h"
 #include "runtime/trial.h"
@@ -124,6 +125,25 @@ void RaisePendingInterrupt() {
     throw nb::python_error();
   }
   if (PyErr_CheckSignals() != 0) throw nb::python_error();
+}
+
+// Names as the bindings take them, like sweep's lists: a list (or tuple) of strings, or one
+// string of comma-separated names as the command line's --objects takes them.
+std::string NameListArg(const nb::object& names, const char* what) {
+  if (nb::isinstance<nb::str>(names)) return nb::cast<std::string>(names);
+  if (!nb::isinstance<nb::list>(names) && !nb::isinstance<nb::tuple>(names)) {
+    Invalid(std::string(what) + " must be a list of names or one comma-separated string");
+  }
+  std::string joined;
+  for (nb::handle item : names) {
+    if (!nb::isinstance<nb::str>(item)) {
+      Invalid(std::string(what) + ": " + nb::cast<std::string>(nb::repr(item)) +
+              " is not a name (a string)");
+    }
+    joined += (joined.empty() ? "" : ",") + nb::cast<std::string>(item);
+  }
+  if (joined.empty()) Invalid(std::string(what) + ": the list is empty");
+  return joined;
 }
 
 // timeout_s as the bindings take it: 0 = the default, else the trial's own range check.
@@ -579,15 +599,53 @@ class SteppedTrial {
     trial_ = ContourTrial::Create(model_, data_, config_, false, &error);
     if (!trial_) Fail(error);
   }
+  // Resets to the start of following. The approach and the move to the start read neither the
+  // seed nor the policy (runtime/approach_cache.h), so with the reset cache on, the first reset
+  // simulates them and keeps that state, and later ones with the same approach copy it and
+  // re-derive the sensor noise for their seed: the episode is the one a reset from scratch
+  // gives, to the bit (ResetCacheGivesTheEpisodeOfAResetFromScratch in package_test.py).
   void Reset(const nb::object& seed) {
     trial_->mutable_config().seed = SeedArg(seed);
     trial_->Reset();
+    if (!reset_cache_ || !CanShareApproach()) return;
+    const ApproachKey key = ApproachKeyOf(trial_->config());
+    if (follow_start_data_ && key == follow_start_key_) {
+      trial_->ResumeAtFollowStart(follow_start_data_.get(), follow_start_);
+      ++resets_from_cache_;
+      return;
+    }
+    bool following = false;
+    {
+      nb::gil_scoped_release release;
+      following = trial_->RunToFollowStart();
+    }
+    RaisePendingInterrupt();
+    if (!following) return;
+    std::string error;
+    if (!follow_start_data_) follow_start_data_ = MakeData(model_, &error);
+    if (!follow_start_data_) return;
+    mj_copyData(follow_start_data_.get(), model_, data_);
+    follow_start_ = trial_->SaveFollowStart();
+    follow_start_key_ = key;
   }
+  void SetResetCache(bool on) {
+    reset_cache_ = on;
+    if (!on) follow_start_data_.reset();
+  }
+  int ResetsFromCache() const { return resets_from_cache_; }
   // The policy: the contour law inside the trial, or Python (apply_step at each iteration).
   void SetExternalPolicy(bool on, bool controller_in_loop) {
     trial_->SetExternalPolicy(on, controller_in_loop);
   }
   std::array<double, 2> ControllerStep() const { return trial_->controller_command().step_m; }
+  // As RunTrialShared decides: the one pressure plugin, no callbacks that could feed the
+  // pressures into the physics, and a controller that does not read the approach.
+  bool CanShareApproach() const {
+    const bool callbacks = mjcb_passive || mjcb_act_dyn || mjcb_act_gain || mjcb_act_bias ||
+                           mjcb_sensor || mjcb_contactfilter;
+    return ApproachUnshareableReason(model_).empty() && !callbacks &&
+           !trial_->ControllerObservesApproach();
+  }
   bool RunToNextIteration() {
     bool more = false;
     {
@@ -652,6 +710,11 @@ class SteppedTrial {
   int tool_site() const { return trial_->tool_site(); }
 
  private:
+  bool reset_cache_ = true;
+  DataPtr follow_start_data_;  // the state at the start of following, after the approach
+  FollowStart follow_start_;
+  ApproachKey follow_start_key_{};
+  int resets_from_cache_ = 0;
   std::string scene_;
   TrialConfig config_;
   // Declared before trial_ so that the trial is destroyed first.
@@ -848,6 +911,10 @@ std::string WriteLabMat(const std::string& recording, const std::string& mat_dir
 }  // namespace ssc
 
 NB_MODULE(_core, m) {
+  // A Python controller held by a trial that Python still held at exit (a closure over the
+  // environment that owns the trial) is a cycle through C++ that Python's collector cannot see:
+  // freed by the process's end, not a leak to report on every exit.
+  nb::set_leak_warnings(false);
   using namespace ssc;
   m.doc() = "Smart Suction Cup twin: trials, sweeps, validation, probe and log comparison (C++).";
   const ContourLawParams law;  // the law's defaults have one home: ContourLawParams{}
@@ -1120,13 +1187,14 @@ NB_MODULE(_core, m) {
 
   m.def(
       "objects",
-      [](const std::string& names, const std::string& out_dir, int seeds, const nb::object& seed,
+      [](const nb::object& names, const std::string& out_dir, int seeds, const nb::object& seed,
          const std::string& scene_kind, double pref, double beta, double step_mm, int threads,
          const std::string& effects, const nb::object& controller,
          const std::string& controller_params) {
         ObjectStudySpec spec;
         std::string error;
-        if (!ObjectsByNames(names, &spec.objects, &error)) Invalid("objects: " + error);
+        if (!ObjectsByNames(NameListArg(names, "objects"), &spec.objects, &error))
+          Invalid("objects: " + error);
         if (seeds < 1 || seeds > 1000)
           Invalid("seeds = " + std::to_string(seeds) + " is out of range [1, 1000]");
         if (threads < 1 || threads > 256)
@@ -1297,7 +1365,12 @@ NB_MODULE(_core, m) {
            "scene"_a = "disk_benchmark_gantry", "pref"_a = law.p_ref_pa, "beta"_a = law.beta,
            "step_mm"_a = law.step_mm, "seed"_a = 1, "object"_a = "", "timeout_s"_a = 0.0,
            "effects"_a = "default", "controller"_a = nb::none(), "controller_params"_a = "")
-      .def("reset", &SteppedTrial::Reset, "seed"_a)
+      .def("reset", &SteppedTrial::Reset, "seed"_a,
+           "Resets to the start of following (from the kept approach when the reset cache is on "
+           "and the approach is the same: the same episode, at once).")
+      .def("set_reset_cache", &SteppedTrial::SetResetCache, "on"_a,
+           "Keep the approach's end state and start later resets from it (on by default).")
+      .def_prop_ro("resets_from_cache", &SteppedTrial::ResetsFromCache)
       .def("set_external_policy", &SteppedTrial::SetExternalPolicy, "on"_a,
            "controller_in_loop"_a = false,
            "On: each following iteration waits for apply_step instead of taking the law's step. "

@@ -16,7 +16,11 @@ installed (``pip install .[gym]``).
 """
 import os as _os
 
-import mujoco as _mujoco  # noqa: F401  loads libmujoco, which _core links (the same library)
+from . import _gl
+
+_HEADLESS_PROBLEM = _gl.choose_headless_backend()  # before mujoco picks its GL backend
+
+import mujoco as _mujoco  # noqa: E402,F401  loads libmujoco, which _core links (the same library)
 
 from . import _core
 from ._core import (Probe, SilPlant, SteppedTrial, check_seed, compare, contour_step,

@@ -24,7 +24,7 @@ import gymnasium as gym
 import numpy as np
 from gymnasium import spaces
 
-from . import _core
+from . import _core, _gl
 
 _LAW = _core.law_defaults()  # the C++ law's defaults (ContourLawParams{}), one home
 
@@ -59,12 +59,15 @@ class EdgeFollowingEnv(gym.Env):
 
     # render_fps: one step is one control iteration (CONTROL_PERIOD_S of simulated time), so a
     # video at this rate plays in real time.
-    metadata = {"render_modes": ["rgb_array", "human"], "render_fps": 1.0 / CONTROL_PERIOD_S}
+    # Without a display there is no window to draw in: "human" is not offered there (so
+    # gymnasium's check_env, which renders every mode it is offered, passes headless).
+    metadata = {"render_modes": ["rgb_array"] + ([] if _gl.no_display() else ["human"]),
+                "render_fps": 1.0 / CONTROL_PERIOD_S}
 
     def __init__(self, objects=None, include_ft=False, max_step_mm=10.0, pref=_LAW["pref"],
                  beta=_LAW["beta"], failure_penalty=10.0, terminal_reward=10.0, timeout_s=None,
                  effects="default", scene=DEFAULT_SCENE, render_mode=None, width=640, height=480,
-                 camera="cup", controller=None, controller_params=""):
+                 camera="cup", controller=None, controller_params="", reset_cache=True):
         super().__init__()
         # The scene: a name under scenes/ ("disk_benchmark_gantry", the cup on a gantry;
         # "disk_benchmark", the UR-10 arm; "disk_benchmark_light", "disk_benchmark_fast";
@@ -75,6 +78,10 @@ class EdgeFollowingEnv(gym.Env):
         if not os.path.exists(_core.scene_path(self.scene)):
             raise ValueError(f"scene {self.scene!r} not found: a name among {list_scenes()} or "
                              "an MJCF file")
+        if render_mode == "human" and _gl.no_display():
+            raise ValueError("render_mode='human' needs a display (none here: DISPLAY and "
+                             "WAYLAND_DISPLAY are unset); use render_mode='rgb_array', or run "
+                             "under xvfb-run")
         if render_mode is not None and render_mode not in self.metadata["render_modes"]:
             raise ValueError(f"render_mode must be one of {self.metadata['render_modes']} or "
                              f"None, got {render_mode!r}")
@@ -112,6 +119,9 @@ class EdgeFollowingEnv(gym.Env):
         if controller is None and controller_params:
             raise ValueError("controller_params apply to a registered controller; none given")
         self.controller, self.controller_params = controller, str(controller_params)
+        # reset() starts from the kept end of the approach (the same episode as from scratch,
+        # at once): SteppedTrial.reset. False: every reset simulates the approach.
+        self.reset_cache = bool(reset_cache)
         if controller is not None:  # refused here, not at the first reset()
             _core.check_controller(controller, self.controller_params)
         n = 10 if self.include_ft else 4
@@ -145,6 +155,7 @@ class EdgeFollowingEnv(gym.Env):
                                    controller=self.controller,
                                    controller_params=self.controller_params)
             t.set_external_policy(True, controller_in_loop=self.controller is not None)
+            t.set_reset_cache(self.reset_cache)
             self._trials[name] = t
         return self._trials[name]
 
@@ -169,11 +180,15 @@ class EdgeFollowingEnv(gym.Env):
 
     def _info(self):
         x, y, _ = self._trial.tool_position()
+        result = self._trial.result()
         return {"object": self._object or "disk_benchmark", "scene": self._trial.scene,
                 "phase": self._trial.phase,
                 "time_s": self._trial.time, "progress_mm": self._progress_mm,
                 "tool_xy_m": (x, y), "contour_distance_mm": 1e3 * self._trial.contour_distance_m(x, y),
-                "outcome": self._trial.result()["outcome"],
+                "outcome": result["outcome"],
+                # Why the episode ended (a controller's fault, the failing value), as run_trial
+                # gives it; "" while it runs.
+                "detail": result.get("detail", ""),
                 "controller_step_m": (tuple(self._trial.controller_step())
                                       if self.controller is not None else (0.0, 0.0))}
 
@@ -316,7 +331,11 @@ class _Renderer:
     def __init__(self, model, height, width):
         import mujoco
         self.model = model
-        self._renderer = mujoco.Renderer(model, height, width)
+        try:
+            self._renderer = mujoco.Renderer(model, height, width)
+        except Exception as e:  # no GL at all: say what would make one
+            raise RuntimeError(f"render_mode='rgb_array' cannot make an OpenGL context "
+                               f"({type(e).__name__}: {e}); {_gl.render_fix()}") from e
 
     def update_scene(self, data, camera, scene_option):
         self._renderer.update_scene(data, camera=camera, scene_option=scene_option)
