@@ -23,6 +23,7 @@
 #include "apps/ssc/cli.h"
 #include "plugin/chamber_pressure_sensor.h"
 #include "runtime/mujoco_model.h"
+#include "runtime/rig.h"
 #include "runtime/trial.h"
 
 namespace {
@@ -307,7 +308,8 @@ void PrintStepBreakdown(const std::vector<std::unique_ptr<Scene>>& scenes) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string scenes_arg = "disk_benchmark,disk_benchmark_gantry";
+  std::string scenes_arg = std::string(ssc::RigTierFor(ssc::RigUse::kReference).scene) + "," +
+                           ssc::RigTierNamed("gantry")->scene;
   long block_arg = 500, rounds_arg = 11;
   ssc::cli::Command cmd(
       "bench",

@@ -10,13 +10,14 @@
 
 #include "compare/closed_loop.h"
 #include "compare/report.h"
+#include "runtime/rig.h"
 
 namespace ssc {
 
 struct CompareOptions {
   std::string log_path;
-  std::string scene = "disk_replay";                 // replay scene (name or path)
-  std::string loop_scene = "disk_benchmark_gantry";  // closed loop and the lip depth
+  std::string scene = RigTierFor(RigUse::kReplay).scene;  // replay scene (name or path)
+  std::string loop_scene = DefaultScene();                // closed loop and the lip depth
   std::string out_dir = "out/compare";
   ProcessOptions processing;  // offset window, average, TCP offset
   LogFrame frame = LogFrame::kBaseLink;

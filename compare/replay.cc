@@ -11,6 +11,7 @@
 #include "controller/pure/contour_law.h"
 #include "plugin/chamber_pressure_sensor.h"
 #include "robotlog/align.h"
+#include "runtime/rig.h"
 #include "runtime/tool_servo.h"
 
 namespace ssc {
@@ -56,8 +57,8 @@ bool ReplayPath(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
   const int body = mj_name2id(m, mjOBJ_BODY, "probe");
   if (body < 0 || m->body_mocapid[body] < 0) {
     *error =
-        "the replay scene needs a mocap body named 'probe' holding the tool (e.g. "
-        "scenes/disk_replay.xml)";
+        std::string("the replay scene needs a mocap body named 'probe' holding the tool (e.g. ") +
+        RigTierFor(RigUse::kReplay).scene + ")";
     return false;
   }
   if (log.t_s.size() < 2) {
@@ -66,13 +67,13 @@ bool ReplayPath(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
   }
   const int mocap = m->body_mocapid[body];
   mjData* d = mj_makeData(m);
-  const ChamberPressureDiagnostics* sensor = FindChamberPressureDiagnostics(m, d);
-  if (sensor == nullptr) {
+  RigBinding rig;
+  if (std::string e = rig.BindSensors(m, d); !e.empty()) {
     mj_deleteData(d);
-    *error = "the replay scene has no ssc.chamber_pressure sensor";
+    *error = "the replay " + e;
     return false;
   }
-  const int adr = sensor->sensor_adr();
+  const int adr = rig.pressure_adr;
   auto place = [&](double t) {
     // Linear interpolation of the pose between log samples.
     const auto it = std::upper_bound(log.t_s.begin(), log.t_s.end(), t);
@@ -91,8 +92,7 @@ bool ReplayPath(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
   };
   // The F/T force sensor of the tool (z along the cup axis), tared on the first sample as the
   // host tares it in air.
-  const int ft = mj_name2id(m, mjOBJ_SENSOR, kToolForceSensorName);
-  const int ft_adr = ft >= 0 ? m->sensor_adr[ft] + 2 : -1;
+  const int ft_adr = rig.force_adr + 2;
   // The simulation clock starts at 0 whatever the log's clock reads (a log starting at -5 s or
   // at 1.7e9 s replays the same): sim time = log time - t0.
   const double t0 = log.t_s.front();
@@ -101,7 +101,7 @@ bool ReplayPath(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
   mj_forward(m, d);
   const double ft_tare = ft_adr >= 0 ? d->sensordata[ft_adr] : 0.0;
   // The lip drags along the path step by step, as in the closed-loop trial.
-  const int site = sensor->site_id();
+  const int site = rig.tool_site;
   LipShearState shear;
   std::array<double, 2> last_xy = {d->site_xpos[3 * site], d->site_xpos[3 * site + 1]};
   const size_t samples = log.t_s.size();

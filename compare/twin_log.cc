@@ -10,7 +10,7 @@ namespace ssc {
 namespace {
 
 // tool0's orientation in the twin's scenes: tool z down, tool x = world -y (the probe body of
-// scenes/disk_replay.xml and the gantry's tool).
+// the replay tier and the gantry's tool).
 constexpr double kTwinToolQuat[4] = {0, M_SQRT1_2, -M_SQRT1_2, 0};
 
 // Within this of the landing point the cup is above the object's centre.

@@ -242,38 +242,28 @@ ObjectFiles ObjectFileNames(const std::string& object_name) {
 }
 
 bool WriteObjectFiles(const ObjectSpec& spec, const std::string& out_dir,
-                      const std::string& repo_dir, std::string* error) {
+                      const std::string& repo_dir, const ObjectSceneTemplates& templates,
+                      std::string* error) {
   const fs::path out = out_dir, scenes = fs::path(repo_dir) / "scenes";
   const ObjectFiles files = ObjectFileNames(spec.name);
   return MakeDir(out, error) && WriteObjectFile(spec, out / files.object, error) &&
-         WriteSceneFromTemplate(spec, scenes / "disk_benchmark.xml", out, files.object,
+         WriteSceneFromTemplate(spec, scenes / (templates.arm + ".xml"), out, files.object,
                                 files.arm_scene, "UR-10 scene", error) &&
-         WriteSceneFromTemplate(spec, scenes / "disk_benchmark_gantry.xml", out, files.object,
+         WriteSceneFromTemplate(spec, scenes / (templates.gantry + ".xml"), out, files.object,
                                 files.gantry_scene, "gantry scene", error) &&
-         WriteSceneFromTemplate(spec, scenes / "disk_benchmark_flex.xml", out, files.object,
+         WriteSceneFromTemplate(spec, scenes / (templates.flex + ".xml"), out, files.object,
                                 files.flex_scene, "flex lip scene", error) &&
          WriteProbeScene(spec, repo_dir, out, files, error);
 }
 
 int WriteAllObjectScenes(const std::string& out_dir, const std::string& repo_dir,
-                         std::string* error) {
+                         const ObjectSceneTemplates& templates, std::string* error) {
   int count = 0;
   for (const ObjectSpec& spec : AllObjects()) {
-    if (!WriteObjectFiles(spec, out_dir, repo_dir, error)) return -1;
+    if (!WriteObjectFiles(spec, out_dir, repo_dir, templates, error)) return -1;
     ++count;
   }
   return count;
-}
-
-bool WriteObjectScenes(const ObjectSpec& spec, const std::string& out_dir,
-                       const std::string& repo_dir, std::string* error) {
-  const fs::path out = out_dir, scenes = fs::path(repo_dir) / "scenes";
-  const std::string object = spec.name + "_object.xml";
-  return MakeDir(out, error) && WriteObjectFile(spec, out / object, error) &&
-         WriteSceneFromTemplate(spec, scenes / "disk_benchmark.xml", out, object,
-                                spec.name + ".xml", "UR-10 scene", error) &&
-         WriteSceneFromTemplate(spec, scenes / "disk_benchmark_gantry.xml", out, object,
-                                spec.name + "_gantry.xml", "gantry scene", error);
 }
 
 }  // namespace ssc

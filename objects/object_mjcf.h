@@ -2,9 +2,10 @@
 //
 //   <name>.xml         the object alone: a static body at W holding its convex pieces (boxes,
 //                      cylinders, meshes given by their vertices); loads on its own in MuJoCo
-//   <name>_arm.xml     the UR-10 scene: scenes/disk_benchmark.xml (arm, F/T, cup, table, light,
+//   <name>_arm.xml     the UR-10 scene: the rig's arm template (arm, F/T, cup, table, light,
 //                      `home` keyframe) with its disk replaced by the object
-//   <name>_gantry.xml  the same from scenes/disk_benchmark_gantry.xml (the cup on a gantry)
+//   <name>_gantry.xml  the same from the gantry template (the cup on a gantry)
+//   <name>_flex.xml    the same from the flex template (the gantry with the flex skirt lip)
 //   <name>_probe.xml   the cup on a mocap body "probe" over the object (table, light): for
 //                      kinematic probing and the per-scene step cost
 //
@@ -19,6 +20,12 @@
 
 namespace ssc {
 
+// The scenes (names under the repository's scenes/) an object's UR-10, gantry and flex scenes
+// are made from, their disk replaced by the object (runtime/rig.h names them).
+struct ObjectSceneTemplates {
+  std::string arm, gantry, flex;
+};
+
 struct ObjectFiles {
   // File names, no directory: the object, its scenes (the UR-10, the gantry with the segment lip,
   // the gantry with the flex skirt lip) and its probe scene.
@@ -29,17 +36,13 @@ ObjectFiles ObjectFileNames(const std::string& object_name);
 // Writes the object's four files into out_dir (created if missing); `repo_dir` holds models/
 // and scenes/ (SourceDir() for the repository). False with *error naming the file on failure.
 bool WriteObjectFiles(const ObjectSpec& spec, const std::string& out_dir,
-                      const std::string& repo_dir, std::string* error);
+                      const std::string& repo_dir, const ObjectSceneTemplates& templates,
+                      std::string* error);
 
 // Writes the files of every object of AllObjects() into out_dir (e.g. build/scenes/objects/);
 // returns how many objects, or -1 with *error set.
 int WriteAllObjectScenes(const std::string& out_dir, const std::string& repo_dir,
-                         std::string* error);
-
-// Earlier layout, kept for apps/ssc (objects, view) until they call WriteObjectFiles:
-// <name>_object.xml (the object), <name>.xml (the UR-10 scene), <name>_gantry.xml.
-bool WriteObjectScenes(const ObjectSpec& spec, const std::string& out_dir,
-                       const std::string& repo_dir, std::string* error);
+                         const ObjectSceneTemplates& templates, std::string* error);
 
 }  // namespace ssc
 

@@ -114,26 +114,12 @@ std::unique_ptr<ContourTrial> ContourTrial::Create(const mjModel* m, mjData* d,
     return nullptr;
   }
   std::unique_ptr<ContourTrial> trial(new ContourTrial(m, d, config, keep_log));
-  const ChamberPressureDiagnostics* sensor = FindChamberPressureDiagnostics(m, d, error);
-  if (sensor == nullptr) return nullptr;
-  trial->tool_site_ = sensor->site_id();
-  trial->pressure_instance_ = sensor->instance();
-  trial->pressure_adr_ = sensor->sensor_adr();
-  const int ft = mj_name2id(m, mjOBJ_SENSOR, kToolForceSensorName);
-  if (ft < 0 || m->sensor_type[ft] != mjSENS_FORCE) {
-    *error = std::string("scene has no force sensor named '") + kToolForceSensorName +
-             "' (the F/T transducer of models/ssc_tool.xml, attached with prefix \"" +
-             kToolAttachPrefix + "\")";
+  if (std::string e = trial->rig_.Bind(m, d); !e.empty()) {
+    *error = e;
     return nullptr;
   }
-  trial->ft_adr_ = m->sensor_adr[ft];
-  trial->ft_reader_.Bind(m, ft);
-  trial->servo_ = MakeToolServo(m);
-  if (!trial->servo_) {
-    *error = "scene has neither a gantry (gantry_x/y/z) nor a UR-10 to move the tool";
-    return nullptr;
-  }
-  trial->servo_->set_params(config.servo);
+  trial->ft_reader_.Bind(m, trial->rig_.force_sensor);
+  trial->rig_.servo->set_params(config.servo);
   trial->registration_ = std::make_unique<ScopedControl>(d, trial.get());
   if (!trial->registration_->ok()) {
     *error = "mjcb_control is owned by other code; cannot install the trial controller";
@@ -146,7 +132,7 @@ std::unique_ptr<ContourTrial> ContourTrial::Create(const mjModel* m, mjData* d,
   }
   if (!trial->active_) {
     // Bind once more to get the servo's reason.
-    trial->servo_->Init(m, d, trial->tool_site_, error);
+    trial->rig_.servo->Init(m, d, trial->rig_.tool_site, error);
     return nullptr;
   }
   return trial;
@@ -154,13 +140,7 @@ std::unique_ptr<ContourTrial> ContourTrial::Create(const mjModel* m, mjData* d,
 
 void ContourTrial::Reset() {
   active_ = false;  // mj_forward below calls the control callback: not before the servo is bound
-  if (m_->nkey > 0) {
-    mj_resetDataKeyframe(m_, d_, 0);
-  } else {
-    mj_resetData(m_, d_);
-  }
-  SetChamberPressureRunSeed(m_, d_, pressure_instance_, config_.seed);
-  mj_forward(m_, d_);
+  rig_.Reset(m_, d_, config_.seed);
   ft_reader_.Update(m_, d_);
   phase_ = TrialPhase::kApproach;
   ft_tare_n_ = 0;
@@ -180,15 +160,15 @@ void ContourTrial::Reset() {
   command_z_ = 0;
   lifted_since_s_ = -1;
   controller_ = config_.controller.Make({config_.law, config_.control_period_s});
-  if (servo_) {
+  if (rig_.servo) {
     std::string ignored;
-    active_ = servo_->Init(m_, d_, tool_site_, &ignored);
+    active_ = rig_.servo->Init(m_, d_, rig_.tool_site, &ignored);
   }
   start_point_ = {config_.target.start[0], config_.target.start[1], 0};
   transfer_done_ = false;
   reach_wait_since_s_ = -1;
   effects_.Reset(config_.effects, config_.seed);
-  last_tool_ = servo_ ? servo_->Measured(d_) : Vec3{};
+  last_tool_ = rig_.servo ? rig_.servo->Measured(d_) : Vec3{};
   host_p_pa_ = {};
 }
 
@@ -199,15 +179,15 @@ double ContourTrial::FtNormalForce() const {
 }
 
 std::array<double, 4> ContourTrial::Pressures() const {
-  return {d_->sensordata[pressure_adr_], d_->sensordata[pressure_adr_ + 1],
-          d_->sensordata[pressure_adr_ + 2], d_->sensordata[pressure_adr_ + 3]};
+  return {d_->sensordata[rig_.pressure_adr], d_->sensordata[rig_.pressure_adr + 1],
+          d_->sensordata[rig_.pressure_adr + 2], d_->sensordata[rig_.pressure_adr + 3]};
 }
 
 void ContourTrial::Log(bool iteration) {
   if (!keep_log_) return;
   TrialLogRow row;
   row.t_s = d_->time;
-  row.tool_m = servo_->Measured(d_);
+  row.tool_m = rig_.servo->Measured(d_);
   // Between iterations the chambers as the lip drags them (the peel is in the real chambers,
   // so a lab log has it in every sample); the sensors' spread and slow noise only at iterations,
   // where the host drew them.
@@ -264,12 +244,13 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
   (void)d;
   if (!active_) return;
   const double t = d_->time;
-  const Vec3 tool = servo_->Measured(d_);
+  const Vec3 tool = rig_.servo->Measured(d_);
   if (phase_ == TrialPhase::kMoveToStart || phase_ == TrialPhase::kFollow) TrackLipShear(tool);
   last_tool_ = tool;
   if (effects_.TakeDueStep(t)) {
     // The pose read after the plot: measured pose + the step computed from older pressures.
-    servo_->SetTarget({tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], command_z_});
+    rig_.servo->SetTarget(
+        {tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], command_z_});
   }
   // The log keeps every phase (the approach gives the in-air start a robot log also has),
   // one row per log period; a control iteration logs its own row instead.
@@ -299,7 +280,7 @@ void ContourTrial::Control(const mjModel* m, mjData* d) {
     case TrialPhase::kDone:
       break;
   }
-  servo_->Track(m_, d_);
+  rig_.servo->Track(m_, d_);
 }
 
 bool ContourTrial::ControllerObservesApproach() const {
@@ -307,12 +288,12 @@ bool ContourTrial::ControllerObservesApproach() const {
 }
 
 void ContourTrial::TrackLipShear(const Vec3& tool) {
-  const mjtNum* R = d_->site_xmat + 9 * tool_site_;
+  const mjtNum* R = d_->site_xmat + 9 * rig_.tool_site;
   effects_.MoveTool(WorldToTool(R, tool[0] - last_tool_[0], tool[1] - last_tool_[1]));
 }
 
 bool ContourTrial::MoveSetPointToward(const Point2& point, double z) {
-  Vec3 target = servo_->target();
+  Vec3 target = rig_.servo->target();
   const double dx = point[0] - target[0], dy = point[1] - target[1];
   const double dist = std::hypot(dx, dy), step = config_.move_speed_m_s * m_->opt.timestep;
   const bool there = dist <= step;
@@ -324,7 +305,7 @@ bool ContourTrial::MoveSetPointToward(const Point2& point, double z) {
     target[1] += dy / dist * step;
   }
   target[2] = z;
-  servo_->SetTarget(target);
+  rig_.servo->SetTarget(target);
   return there;
 }
 
@@ -338,9 +319,9 @@ void ContourTrial::TareAndApproach(double t, const Vec3& tool) {
   // First carry the cup, at its starting height, over the landing point.
   if (!transfer_done_) {
     const Point2& landing = config_.target.approach;
-    if (!MoveSetPointToward(landing, servo_->target()[2])) return;
+    if (!MoveSetPointToward(landing, rig_.servo->target()[2])) return;
     if (std::hypot(tool[0] - landing[0], tool[1] - landing[1]) > 2e-4) {
-      ReachTimedOut(t, "landing point", servo_->target());
+      ReachTimedOut(t, "landing point", rig_.servo->target());
       return;
     }
     transfer_done_ = true;
@@ -352,13 +333,13 @@ void ContourTrial::TareAndApproach(double t, const Vec3& tool) {
     hold_z_ = tool[2];
     command_z_ = hold_z_;
     result_.hold_height_m = hold_z_;
-    servo_->SetTarget({tool[0], tool[1], hold_z_});
+    rig_.servo->SetTarget({tool[0], tool[1], hold_z_});
     phase_ = TrialPhase::kMoveToStart;
     return;
   }
-  Vec3 target = servo_->target();
+  Vec3 target = rig_.servo->target();
   target[2] -= config_.approach_speed_m_s * m_->opt.timestep;
-  servo_->SetTarget(target);
+  rig_.servo->SetTarget(target);
   if (t > 30) Finish(Outcome::kTimeout, "approach never reached the start-up force");
 }
 
@@ -406,7 +387,7 @@ ControllerInput ContourTrial::InputAt(double t, const Vec3& tool,
   in.p_pa = p_pa;
   in.ft_normal_n = FtNormalForce();
   in.tool_m = tool;
-  const mjtNum* R = d_->site_xmat + 9 * tool_site_;
+  const mjtNum* R = d_->site_xmat + 9 * rig_.tool_site;
   for (int k = 0; k < 9; ++k) in.tool_rotation[static_cast<std::size_t>(k)] = R[k];
   in.hold_z_m = hold_z_;
   return in;
@@ -433,7 +414,8 @@ bool ContourTrial::TakeCommand(const ControllerCommand& command, double t, const
   last_step_world_ = LandedStepWorld(command.step_m);
   // Measured pose + step; with a pose delay, the pose read after the plot.
   if (!effects_.DeferStep(t)) {
-    servo_->SetTarget({tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], command_z_});
+    rig_.servo->SetTarget(
+        {tool[0] + last_step_world_[0], tool[1] + last_step_world_[1], command_z_});
   }
   return true;
 }
@@ -489,7 +471,7 @@ void ContourTrial::RunIteration(double t, const Vec3& tool) {
 bool ContourTrial::ReachTimedOut(double t, const char* what, const Vec3& point) {
   if (reach_wait_since_s_ < 0) reach_wait_since_s_ = t;
   if (t - reach_wait_since_s_ <= kReachWaitS) return false;
-  const Vec3 tool = servo_->Measured(d_);
+  const Vec3 tool = rig_.servo->Measured(d_);
   std::ostringstream os;
   os.precision(1);
   os << std::fixed << "the tool did not reach the " << what << " " << PointText(point) << " within "
@@ -543,7 +525,7 @@ bool ContourTrial::RunToNextIteration(double max_sim_s) {
 std::array<double, 2> ContourTrial::LandedStepWorld(std::array<double, 2> step) const {
   step = effects_.LandedStep(step, static_cast<std::uint64_t>(result_.iterations));
   // Tool frame -> world with the tool site's rotation (orientation is held).
-  return ToolToWorld(d_->site_xmat + 9 * tool_site_, step[0], step[1]);
+  return ToolToWorld(d_->site_xmat + 9 * rig_.tool_site, step[0], step[1]);
 }
 
 void ContourTrial::ApplyStep(const std::array<double, 2>& step_m) {
@@ -557,8 +539,8 @@ void ContourTrial::ApplyStep(const std::array<double, 2>& step_m) {
   }
   last_step_.step_m = step_m;
   last_step_world_ = LandedStepWorld(step_m);
-  servo_->SetTarget({iteration_tool_[0] + last_step_world_[0],
-                     iteration_tool_[1] + last_step_world_[1], command_z_});
+  rig_.servo->SetTarget({iteration_tool_[0] + last_step_world_[0],
+                         iteration_tool_[1] + last_step_world_[1], command_z_});
 }
 
 bool ContourTrial::RunToFollowStart(double max_sim_s) {
@@ -570,7 +552,7 @@ bool ContourTrial::RunToFollowStart(double max_sim_s) {
 
 FollowStart ContourTrial::SaveFollowStart() const {
   FollowStart s;
-  s.servo = servo_->state();
+  s.servo = rig_.servo->state();
   s.transfer_done = transfer_done_;
   s.ft_tare_n = ft_tare_n_;
   s.tare_samples = tare_samples_;
@@ -588,8 +570,8 @@ FollowStart ContourTrial::SaveFollowStart() const {
 void ContourTrial::ResumeAtFollowStart(const mjData* follow_start_data, const FollowStart& s) {
   mj_copyData(d_, m_, follow_start_data);
   // The only seed the approach used: the sensor's noise (its pressures fed nothing back).
-  ReseedChamberPressure(m_, d_, pressure_instance_, config_.seed);
-  servo_->set_state(s.servo);
+  ReseedChamberPressure(m_, d_, rig_.pressure_instance, config_.seed);
+  rig_.servo->set_state(s.servo);
   transfer_done_ = s.transfer_done;
   ft_tare_n_ = s.ft_tare_n;
   tare_samples_ = s.tare_samples;

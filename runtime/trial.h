@@ -29,6 +29,7 @@
 #include "plugin/chamber_pressure_sensor.h"
 #include "runtime/control_dispatch.h"
 #include "runtime/mujoco_model.h"
+#include "runtime/rig.h"
 #include "runtime/tool_force.h"
 #include "runtime/tool_servo.h"
 
@@ -159,7 +160,8 @@ class ContourTrial : public ControlCallback {
   TrialConfig& mutable_config() { return config_; }
   const ContourStep& last_step() const { return last_step_; }
   const std::vector<Point2>& path() const { return path_xy_; }
-  int tool_site() const { return tool_site_; }
+  int tool_site() const { return rig_.tool_site; }
+  const RigBinding& rig() const { return rig_; }
   // The four filtered chamber pressures now (the plugin's output), Pa.
   std::array<double, 4> Pressures() const;
   // What the controller read at the last iteration: the plugin's output through the lip tilt
@@ -234,8 +236,7 @@ class ContourTrial : public ControlCallback {
   mjData* d_;
   TrialConfig config_;
   bool keep_log_;
-  std::unique_ptr<ToolServo> servo_;
-  int pressure_instance_ = -1, pressure_adr_ = -1, ft_adr_ = -1, tool_site_ = -1;
+  RigBinding rig_;  // tool site, sensors, servo, seeded reset
   TrialPhase phase_ = TrialPhase::kApproach;
   bool active_ = false;         // the servo is bound; the callback may act
   bool transfer_done_ = false;  // over the landing point

@@ -11,6 +11,7 @@
 #include "common/strict_number.h"
 #include "controller/pure/contour_law.h"
 #include "geometry/dimensions.h"
+#include "runtime/rig.h"
 
 namespace ssc {
 
@@ -96,10 +97,11 @@ std::string EdgeProbe3d::CheckStudyLayout() {
     char buf[320];
     std::snprintf(buf, sizeof(buf),
                   "the probe's layout is not in this scene: at (%.3f, %.3f) m (%s) the top "
-                  "surface is %s, expected %s z = %.3f m (scenes/probe_edge.xml: a plate with its "
+                  "surface is %s, expected %s z = %.3f m (%s: a plate with its "
                   "straight edge along y at x = 0, a %.0f mm-radius disk centred at (%.2f, 0) m)",
                   p.x, p.y, p.what, std::isfinite(z) ? (FormatNumber(z) + " m").c_str() : "absent",
-                  p.surface ? "at" : "below", kProbeSurfaceTopM, r * 1e3, cx);
+                  p.surface ? "at" : "below", kProbeSurfaceTopM, RigTierFor(RigUse::kProbe).scene,
+                  r * 1e3, cx);
     error = buf;
     break;
   }
@@ -205,7 +207,7 @@ bool RunProbeStudy(EdgeProbe3d* probe, const ProbeStudySpec& spec,
     WriteRow(edge, off, 0.0, r);
     if (edge_row) edge_row(off, r);
   }
-  // Around the benchmark disk (scenes/probe_edge.xml puts it at (0.15, 0)) at a fixed inset.
+  // Around the benchmark disk (the probe tier puts it at (0.15, 0)) at a fixed inset.
   OutputFile disk_file(result->disk_csv);
   std::ostream& disk = disk_file.stream();
   WriteHeader(disk);

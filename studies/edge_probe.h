@@ -1,4 +1,4 @@
-// Kinematic probe of the pressure sensor: the cup held by a mocap body (scenes/probe_edge.xml)
+// Kinematic probe of the pressure sensor: the cup held by a mocap body (the rig's probe tier)
 // and placed at given offsets across a straight edge or around a disk edge. The lip segments
 // still settle dynamically on the surface at each placement; the cup body does not move.
 #ifndef SSC_STUDIES_EDGE_PROBE_H_
@@ -48,10 +48,10 @@ class EdgeProbe3d {
   static std::string CheckPlacement(double x_m, double y_m, double yaw_rad, double surface_z_m,
                                     double compression_m, double settle_s);
 
-  // "" when the scene has the layout RunProbeStudy probes (scenes/probe_edge.xml): the plate's
+  // "" when the scene has the layout RunProbeStudy probes (the rig's probe tier): the plate's
   // straight edge along world y at x = 0 (plate at x < 0) and the benchmark disk centred at
   // (kProbeDiskCentreXM, 0), both with their top at kProbeSurfaceTopM; else the first point
-  // where it differs. A scene without it (disk_replay, another probe scene) would be probed in
+  // where it differs. A scene without it (the replay tier, another probe scene) would be probed in
   // air and give a table of sensor noise. Surfaces found by rays with the tool lifted away.
   std::string CheckStudyLayout();
 
@@ -69,7 +69,7 @@ class EdgeProbe3d {
   double tool_length_m_ = kToolCentreOffsetM;  // measured from the model at Create
 };
 
-// The probe scene's layout (scenes/probe_edge.xml): the plate edge at x = 0 and the disk's
+// The probe tier's layout (runtime/rig.h): the plate edge at x = 0 and the disk's
 // centre on the x axis, both surfaces' top height.
 constexpr double kProbeSurfaceTopM = 0.010;
 constexpr double kProbeDiskCentreXM = 0.15;

@@ -229,7 +229,8 @@ bool RunObjectStudy(const ObjectStudySpec& spec,
   const fs::path out = spec.out_dir;
   const std::string scene_dir = (out / "scenes").string();
   for (const ObjectSpec& s : spec.objects) {
-    if (!WriteObjectFiles(s, scene_dir, SourceDir(), error)) return false;
+    if (!WriteObjectFiles(s, scene_dir, SourceDir(), RigObjectSceneTemplates(), error))
+      return false;
   }
   // Contours (for plots): one CSV per object, points in world metres.
   summary->paths_dir = (out / "paths").string();

@@ -58,13 +58,32 @@ std::string ObjectSceneFile(const ObjectSpec& spec, ObjectSceneKind kind) {
   return files.gantry_scene;
 }
 
-ObjectSceneKind ObjectSceneKindOfScene(const std::string& scene) {
-  const std::string stem = std::filesystem::path(scene).filename().string();
-  if (stem.find("flex") != std::string::npos) return ObjectSceneKind::kFlex;
-  for (const char* gantry : {"gantry", "light", "fast"}) {
-    if (stem.find(gantry) != std::string::npos) return ObjectSceneKind::kGantry;
+ObjectSceneKind ObjectSceneKindOfTier(const RigTier& tier) {
+  switch (tier.kind) {
+    case RigKind::kArm:
+      return ObjectSceneKind::kArm;
+    case RigKind::kFlex:
+      return ObjectSceneKind::kFlex;
+    default:
+      break;
   }
-  return ObjectSceneKind::kArm;
+  return ObjectSceneKind::kGantry;
+}
+
+bool ObjectSceneKindOfScene(const std::string& scene, ObjectSceneKind* kind, std::string* error) {
+  const RigTier* tier = RigTierOfScene(scene);
+  if (tier == nullptr || *tier->probe == '\0') {
+    *error = "scene '" + scene + "' is not a disk tier a test object can run in (" +
+             RigDiskTierNames() + ": runtime/rig.h)";
+    return false;
+  }
+  *kind = ObjectSceneKindOfTier(*tier);
+  return true;
+}
+
+ObjectSceneTemplates RigObjectSceneTemplates() {
+  return {RigObjectTemplate(RigKind::kArm).scene, RigObjectTemplate(RigKind::kGantry).scene,
+          RigObjectTemplate(RigKind::kFlex).scene};
 }
 
 TrialConfig ObjectTrialConfig(const ObjectSpec& spec, TrialConfig base, const StallRule& stall) {

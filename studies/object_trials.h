@@ -8,6 +8,7 @@
 
 #include "objects/object_mjcf.h"
 #include "objects/object_spec.h"
+#include "runtime/rig.h"
 #include "runtime/trial.h"
 
 namespace ssc {
@@ -28,9 +29,14 @@ const char* ObjectSceneKindName(ObjectSceneKind kind);
 ObjectSceneKind ObjectTier(ObjectSceneKind kind, const ObjectSpec& spec);
 // The object's scene file (no directory) of that kind (kAuto: ObjectTier's).
 std::string ObjectSceneFile(const ObjectSpec& spec, ObjectSceneKind kind);
-// The kind matching a disk scene's name or path: the flex tier for a scene named *flex*, the
-// gantry for *gantry*, *light* and *fast*, else the arm.
-ObjectSceneKind ObjectSceneKindOfScene(const std::string& scene);
+// The object scene kind of a disk tier (runtime/rig.h: arm, gantry, light, fast, flex), from the
+// rig's table.
+ObjectSceneKind ObjectSceneKindOfTier(const RigTier& tier);
+// The kind of the tier `scene` names (a tier's scene name or path); false + *error naming the
+// disk tiers for any other scene.
+bool ObjectSceneKindOfScene(const std::string& scene, ObjectSceneKind* kind, std::string* error);
+// The scene templates objects' scenes are written from (WriteObjectFiles): the rig's.
+ObjectSceneTemplates RigObjectSceneTemplates();
 
 // The object trials' stall rule (TrialThresholds::stall_mm, stall_window_s; docs/objects.md,
 // "Outcomes"): window 0 turns it off.
@@ -59,7 +65,7 @@ struct ObjectTrialRow {
   std::string tier;                    // the scene kind it ran in (ObjectSceneKindName)
 };
 
-// Runs one object trial on `model` (a scene written by WriteObjectScenes) with `effects` (the
+// Runs one object trial on `model` (a scene written by WriteObjectFiles) with `effects` (the
 // robot effects; the twin's defaults are FittedRobotEffects()).
 // `controller` decides while following (the published law by default).
 ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,

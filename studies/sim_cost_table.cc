@@ -69,10 +69,12 @@ std::array<double, 2> PressureRmsError(const std::vector<std::array<double, 4>>&
   return {std::sqrt(e_log / count), std::sqrt(e_pa / count)};
 }
 
-bool RunSimCostTable(const TrialConfig& trial_config, const TrialResult& trial,
-                     const std::string& replay_scene, const std::string& arm_scene,
+bool RunSimCostTable(const SimCostTrial& logged, const std::string& replay_scene,
+                     const std::string& arm_scene,
                      const std::function<void(const SimCostRow&)>& row_done,
                      std::vector<SimCostRow>* rows, std::string* error) {
+  const TrialConfig& trial_config = logged.config;
+  const TrialResult& trial = logged.result;
   auto add = [&](const SimCostRow& row) {
     rows->push_back(row);
     if (row_done) row_done(row);
@@ -107,7 +109,7 @@ bool RunSimCostTable(const TrialConfig& trial_config, const TrialResult& trial,
     add({s.name, s.timestep_s * 1e3, wall / (path.t_s.back() - path.t_s.front()), e[0], e[1],
          s.is_default});
   }
-  // Full arm against the light gantry: the same trial on both; the arm run is the reference
+  // Full arm against the trial's scene: the same trial on both; the arm run is the reference
   // (pressures compared at equal times).
   ModelPtr arm = LoadModel(arm_scene, error);
   if (!arm) return false;
@@ -122,8 +124,10 @@ bool RunSimCostTable(const TrialConfig& trial_config, const TrialResult& trial,
     gantry_p.push_back(r.p_pa);
   }
   const std::array<double, 2> e = PressureRmsError(gantry_p, arm_p);
-  add({"arm scene (UR-10)", 2, a.wall_time_s / a.sim_time_s, 0.0001, 0, false});
-  add({"gantry scene vs arm", 2, trial.wall_time_s / trial.sim_time_s, e[0], 0, false});
+  add({"arm scene (UR-10)", arm->opt.timestep * 1e3, a.wall_time_s / a.sim_time_s, 0.0001, 0,
+       false});
+  add({logged.scene + " vs arm", logged.timestep_s * 1e3, trial.wall_time_s / trial.sim_time_s,
+       e[0], 0, false});
   return true;
 }
 
@@ -139,19 +143,13 @@ std::string SimCostCsv(const std::vector<SimCostRow>& rows) {
 }
 
 std::vector<SimTier> SimTiers() {
-  using K = ObjectSceneKind;
-  return {
-      {"arm", "UR-10, 16-segment lip (the reference)", "disk_benchmark", "probe_edge", 1.0, true,
-       K::kArm},
-      {"gantry", "gantry, 16-segment lip", "disk_benchmark_gantry", "probe_edge", 1.0, true,
-       K::kGantry},
-      {"light", "gantry, single-point lip contacts, rigid carrier", "disk_benchmark_light",
-       "probe_edge", 1.0, false, K::kGantry},
-      {"fast", "the light tier at a 4 ms step", "disk_benchmark_fast", "probe_edge", 1.0, false,
-       K::kGantry},
-      {"flex", "gantry, the lip a flex skirt MuJoCo deforms", "disk_benchmark_flex",
-       "probe_edge_flex", 0.3, true, K::kFlex},
-  };
+  std::vector<SimTier> tiers;
+  for (const RigTier& t : RigTiers()) {
+    if (*t.probe == '\0') continue;  // the disk tiers: those with a straight-edge probe
+    tiers.push_back({t.name, t.what, t.scene, RigTierNamed(t.probe)->scene, t.probe_press_mm,
+                     t.object_template, ObjectSceneKindOfTier(t)});
+  }
+  return tiers;
 }
 
 bool SimTiersByNames(const std::string& names, std::vector<SimTier>* tiers, std::string* error) {
@@ -272,7 +270,7 @@ bool RunSimTierTable(const SimTierSpec& spec,
         std::string e;
         const std::string dir = spec.object_dir + "/" + tier.name;
         ModelPtr m;
-        if (WriteObjectFiles(o, dir, SourceDir(), &e)) {
+        if (WriteObjectFiles(o, dir, SourceDir(), RigObjectSceneTemplates(), &e)) {
           m = LoadModel(dir + "/" + ObjectSceneFile(o, tier.object_kind), &e);
         }
         if (!m) {

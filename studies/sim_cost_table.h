@@ -43,12 +43,20 @@ std::vector<SimCostSetting> SimCostSettings();
 std::array<double, 2> PressureRmsError(const std::vector<std::array<double, 4>>& a,
                                        const std::vector<std::array<double, 4>>& b);
 
-// Runs the table: `trial` (a logged twin trial on `gantry_scene`'s model, e.g. dL 5 mm) gives
-// the replayed path; replays run in `replay_scene` (disk_replay.xml); the arm row runs the same
-// trial config in `arm_scene`. `row_done` (optional) sees each row as it is made. False +
-// *error on a load or replay failure.
-bool RunSimCostTable(const TrialConfig& trial_config, const TrialResult& trial,
-                     const std::string& replay_scene, const std::string& arm_scene,
+// The logged twin trial the table replays (e.g. dL 5 mm): its scene's name (for the row that
+// sets it against the arm) and time step.
+struct SimCostTrial {
+  std::string scene;
+  double timestep_s = 0;
+  TrialConfig config;
+  TrialResult result;
+};
+
+// Runs the table: `trial` gives the replayed path; replays run in `replay_scene` (the rig's
+// replay tier); the arm row runs the same trial config in `arm_scene`. `row_done` (optional) sees
+// each row as it is made. False + *error on a load or replay failure.
+bool RunSimCostTable(const SimCostTrial& trial, const std::string& replay_scene,
+                     const std::string& arm_scene,
                      const std::function<void(const SimCostRow&)>& row_done,
                      std::vector<SimCostRow>* rows, std::string* error);
 
@@ -58,6 +66,7 @@ std::string SimCostCsv(const std::vector<SimCostRow>& rows);
 
 // The fidelity tiers side by side (ssc charts --tiers): per tier, its cost per step, the
 // straight-edge static curve, the Fig. 6 targets on the disk and outcomes on a few test objects.
+// The rig's disk tiers (runtime/rig.h) with their probe scenes.
 struct SimTier {
   std::string name;             // picked by this name
   std::string what;             // one line for the table

@@ -14,6 +14,7 @@
 #include "common/strict_number.h"
 #include "controller/pure/robot_effects.h"
 #include "runtime/mujoco_model.h"
+#include "runtime/rig.h"
 #include "studies/job_runner.h"
 #include "studies/sweep_io.h"
 #include "studies/trial_io.h"
@@ -56,7 +57,7 @@ SweepManifest TrialManifest(const mjModel* m, const std::string& scene, const Tr
                 static_cast<unsigned long long>(Fnv1a64(buffer.data(), buffer.size())));
   SweepManifest manifest = {
       {"scene", scene},
-      {"default_scene", kDefaultScene},
+      {"default_scene", DefaultScene()},
       {"model_hash", hash},
       {"timeout_s", num(c.timeout_s)},
       {"control_period_s", num(c.control_period_s)},

@@ -17,11 +17,6 @@
 
 namespace ssc {
 
-// The scene sweeps and `ssc validate` run unless told otherwise: the cheapest scene that
-// `ssc equivalence` finds no different from the UR-10 scene (the light scene at a 4 ms step;
-// docs/performance.md has the comparison of each scene with the arm).
-inline constexpr char kDefaultScene[] = "disk_benchmark_fast";
-
 struct SweepSpec {
   std::string scene_name;  // written into each row
   TrialConfig base;        // everything but P_ref, beta, step, seed

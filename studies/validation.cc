@@ -15,6 +15,7 @@
 #include "common/output_file.h"
 #include "common/strict_number.h"
 #include "controller/pure/robot_effects.h"
+#include "runtime/rig.h"
 #include "studies/job_runner.h"
 #include "studies/success_map_fit.h"
 
@@ -268,7 +269,7 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
   nlohmann::json j;
   j["map"] = spec.map_path;
   j["scene"] = spec.scene_name;
-  j["default_scene"] = kDefaultScene;
+  j["default_scene"] = DefaultScene();
   j["seeds_per_cell"] = spec.seeds;
   j["base_seed"] = spec.seed;
   j["effects"] = FormatRobotEffects(spec.base.effects);

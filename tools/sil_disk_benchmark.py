@@ -55,10 +55,15 @@ LOOP_SLEEPS_S = 0.01 + 0.01 + 1.0 / 125 + 0.01
 PRESSURE_TO_POSE_SLEEPS_S = 0.01
 
 
+def scene_args(scene):
+    """--scene SCENE, or nothing for the default scene of both commands."""
+    return ["--scene", scene] if scene else []
+
+
 def sil_run(ssc, script, seed, step_m, scene, out, pause_cost):
     report = os.path.join(out, "report.json")
     cpu0, wall0 = child_cpu(), time.perf_counter()
-    p = subprocess.run([ssc, "sil", "--out", out, "--scene", scene, "--seed", str(seed),
+    p = subprocess.run([ssc, "sil", "--out", out] + scene_args(scene) + ["--seed", str(seed),
                         "--pause-cost", str(pause_cost),
                         "--set", "d_lat=%r" % step_m, "--report", report, script],
                        cwd=out, capture_output=True, text=True)
@@ -84,7 +89,7 @@ def sil_run(ssc, script, seed, step_m, scene, out, pause_cost):
 
 
 def trial_run(ssc, seed, step_mm, scene, out, extra=()):
-    p = subprocess.run([ssc, "trial", "--scene", scene, "--pref", "100", "--beta", "2",
+    p = subprocess.run([ssc, "trial"] + scene_args(scene) + ["--pref", "100", "--beta", "2",
                         "--step", str(step_mm), "--seed", str(seed), "--no-plot", "--out", out]
                        + list(extra), capture_output=True, text=True)
     outcome = re.search(r"outcome: (\S+)", p.stdout)
@@ -98,7 +103,8 @@ def main():
     ap.add_argument("--lab-repo", required=True, help="a checkout of the lab's edg_suction_cup")
     ap.add_argument("--seeds", default="1-5", type=seeds)
     ap.add_argument("--step-mm", type=float, default=7.5)
-    ap.add_argument("--scene", default="disk_benchmark_gantry")
+    ap.add_argument("--scene", default=None,
+                    help="scene of both runs (default: the rig's default scene)")
     ap.add_argument("--pause-cost", type=float, default=None,
                     help="ssc sil's --pause-cost (default: ssc sil's own)")
     ap.add_argument("--ssc", default=os.path.join(os.path.dirname(__file__), "..", "build", "bin", "ssc"))

@@ -15,6 +15,7 @@
 #include "common/output_file.h"
 #include "controller/pure/robot_effects.h"
 #include "runtime/mujoco_model.h"
+#include "runtime/rig.h"
 #include "studies/loop_calibration.h"
 #include "studies/success_map_fit.h"
 #include "studies/sweep.h"
@@ -159,14 +160,14 @@ struct WanderOptions {
 
 // --wander: the sensor chain's noise and lag against the published wander (studies/wander_fit);
 // rewrites the calibrated tool and params.json with them.
-int CalibrateWander(const WanderOptions& o, const RobotEffectsParams& effects,
-                    const ToolModelVariants& tool, const PneumaticFit& fit,
-                    const std::filesystem::path& out) {
+int CalibrateWander(const WanderOptions& o, const std::string& scene,
+                    const RobotEffectsParams& effects, const ToolModelVariants& tool,
+                    const PneumaticFit& fit, const std::filesystem::path& out) {
   std::string error;
   WanderFit w;
   const std::vector<WanderTarget> targets = PublishedWanderTargets();
-  if (!FitWander(SourceDir() + "/scenes/disk_benchmark_gantry.xml", targets, o.step_mm, effects,
-                 static_cast<int>(o.seeds), static_cast<int>(o.evals), 6.0, 20.0, &w, &error)) {
+  if (!FitWander(ResolveScenePath(scene), targets, o.step_mm, effects, static_cast<int>(o.seeds),
+                 static_cast<int>(o.evals), 6.0, 20.0, &w, &error)) {
     return Fail(error);
   }
   std::printf(
@@ -243,10 +244,10 @@ int RunCalibrateCommand(int argc, char** argv) {
   cmd.Number("dynamic-metric-weight", &dyn_weight,
              "weight of the Fig. 6 targets against the map's log-loss", "",
              NumberRange::Closed(0, 100));
-  std::string scene = kDefaultScene;
+  std::string scene = DefaultScene();
   cmd.Text("scene", &scene,
-           "disk scene for --dynamic and --closed-loop (name under scenes/ or a path; the sweep "
-           "and validate default unless given)");
+           "disk scene for --dynamic, --closed-loop and --wander (name under scenes/ or a path; "
+           "the default of every command unless given)");
   long loop_iterations = 0, loop_seeds = 10;
   cmd.Integer("closed-loop", &loop_iterations,
               "fit the static curve so that the twin's own loop (beta 1.5, dL 5 mm, --scene, "
@@ -316,7 +317,7 @@ int RunCalibrateCommand(int argc, char** argv) {
   if (!WriteText(out / "ssc_tool_calibrated.xml", xml)) return 1;
   std::printf("wrote %s and %s\n", (out / "params.json").c_str(),
               (out / "ssc_tool_calibrated.xml").c_str());
-  if (wander.on) return CalibrateWander(wander, dyn_base.effects, *tool, fit, out);
+  if (wander.on) return CalibrateWander(wander, scene, dyn_base.effects, *tool, fit, out);
   return 0;
 }
 

@@ -86,12 +86,16 @@ int RunChartsCommand(int argc, char** argv) {
   cmd.Integer("repeats", &repeats, "trials per point", NumberRange::Closed(1, 1000));
   AddThreadsOption(&cmd, &threads);
   cmd.OutputDir("out", &out_dir, "output directory");
+  spec.scene_name = DefaultScene();
+  cmd.Text("scene", &spec.scene_name,
+           "scene of the cup sweep and of the trial the replays follow (name under scenes/ or a "
+           "path)");
   std::string tier_names = "gantry,flex", tier_objects = "corner_a090,corner_a270,hole_d06,fillet";
   SimTierSpec tiers;
   long tier_seeds = tiers.seeds;
   bool tiers_only = false;
   cmd.Text("tiers", &tier_names,
-           "fidelity tiers for OUT/tiers.csv, by name: arm, gantry, light, fast, flex");
+           "fidelity tiers for OUT/tiers.csv, by name: " + RigDiskTierNames());
   cmd.Integer("tier-seeds", &tier_seeds, "disk trials per beta per tier (Fig. 6 targets)",
               NumberRange::Closed(1, 100));
   cmd.Seed("tier-seed", &tiers.seed, "base seed of the tiers' trials");
@@ -110,12 +114,11 @@ int RunChartsCommand(int argc, char** argv) {
   tiers.seeds = static_cast<int>(tier_seeds);
   spec.repeats = static_cast<int>(repeats);
   spec.threads = static_cast<int>(threads);
-  spec.scene_name = "disk_benchmark_gantry";
   const fs::path out = out_dir;
   spec.out_csv = (out / "cup.csv").string();
   std::string error;
-  ModelPtr gantry = LoadModel(SourceDir() + "/scenes/disk_benchmark_gantry.xml", &error);
-  if (!gantry) {
+  ModelPtr model = LoadModel(ResolveScenePath(spec.scene_name), &error);
+  if (!model) {
     std::fprintf(stderr, "ssc charts: %s\n", error.c_str());
     return 1;
   }
@@ -129,7 +132,7 @@ int RunChartsCommand(int argc, char** argv) {
   }
   if (tiers_only) return 0;
   SweepSummary summary;
-  if (!RunSweep(gantry.get(), spec, nullptr, &summary, &error)) {
+  if (!RunSweep(model.get(), spec, nullptr, &summary, &error)) {
     std::fprintf(stderr, "ssc charts: %s\n", error.c_str());
     return 1;
   }
@@ -137,12 +140,13 @@ int RunChartsCommand(int argc, char** argv) {
               summary.wall_s, spec.out_csv.c_str());
 
   // The simulator: a path from one twin trial, replayed at several fidelities.
-  TrialConfig c;
-  c.law.step_mm = 5;
-  const TrialResult trial = RunTrial(gantry.get(), c, true, &error);
+  SimCostTrial trial{spec.scene_name, model->opt.timestep, TrialConfig(), TrialResult()};
+  trial.config.law.step_mm = 5;
+  trial.result = RunTrial(model.get(), trial.config, true, &error);
   std::vector<SimCostRow> rows;
   const bool ok = RunSimCostTable(
-      c, trial, SourceDir() + "/scenes/disk_replay.xml", SourceDir() + "/scenes/disk_benchmark.xml",
+      trial, ResolveScenePath(RigTierFor(RigUse::kReplay).scene),
+      ResolveScenePath(RigTierFor(RigUse::kReference).scene),
       [](const SimCostRow& r) {
         std::printf("  %-44s wall/sim %.4f  error %.4f log10, %.1f Pa\n", r.setting.c_str(),
                     r.wall_per_sim_s, r.rms_log10, r.rms_pa);

@@ -10,6 +10,7 @@
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "apps/ssc/trial_options.h"
+#include "runtime/rig.h"
 #include "studies/equivalence_study.h"
 #include "studies/job_runner.h"
 
@@ -64,8 +65,8 @@ int RunEquivalenceCommand(int argc, char** argv) {
       "and OUT/equivalence.json. Reports figures; it does not pass or fail.");
   EquivalenceSpec spec;
   spec.map_path = SourceDir() + "/data/published/success_map_dl5.csv";
-  spec.reference.scene_name = "disk_benchmark";
-  spec.candidate.scene_name = kDefaultScene;
+  spec.reference.scene_name = RigTierFor(RigUse::kReference).scene;
+  spec.candidate.scene_name = DefaultScene();
   long seeds = 10, threads = std::max(1u, std::thread::hardware_concurrency());
   std::string out_dir = "out/equivalence", plugin_text, candidate_effects;
   std::uint64_t candidate_seed = 0;

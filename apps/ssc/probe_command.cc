@@ -8,6 +8,7 @@
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
 #include "calibration/published_targets.h"
+#include "runtime/rig.h"
 #include "studies/edge_probe.h"
 
 namespace ssc {
@@ -18,7 +19,7 @@ int RunProbe(int argc, char** argv) {
       "Moves the cup kinematically (mocap, no arm) across a straight edge and around a\n"
       "35 mm disk at a fixed inset, and writes edge.csv, disk.csv and probe.png: chamber\n"
       "pressures, mean P, differentials and the direction the reference formulas give.");
-  std::string scene_name = "probe_edge", out_dir = "out/probe", note;
+  std::string scene_name = RigTierFor(RigUse::kProbe).scene, out_dir = "out/probe", note;
   double from = -6, to = 7, step = 0.25, compression = 1.0, settle = 0.1, inset = 2.5,
          disk_step = 15;
   bool no_plot = false;

@@ -10,6 +10,7 @@
 #include "apps/ssc/trial_options.h"
 #include "common/output_file.h"
 #include "runtime/mujoco_model.h"
+#include "runtime/rig.h"
 #include "runtime/trial.h"
 #include "studies/stability_study.h"
 
@@ -53,7 +54,7 @@ int RunStabilityCommand(int argc, char** argv) {
       "outcome, mean radius and path length stay within tolerance of a 0.5 ms RK4 reference.\n"
       "Writes OUT/stability.csv, and each trial as it finishes to OUT/stability_trials.csv:\n"
       "the same command run again resumes from it.");
-  std::string scene_name = "disk_benchmark_gantry", out_dir = "out/stability";
+  std::string scene_name = DefaultScene(), out_dir = "out/stability";
   std::vector<double> steps_ms = {0.5, 1, 2, 4, 8, 16};
   double dl = 5, dr_tol = 0.3, s_tol = 0.05;
   cmd.Text("scene", &scene_name, "scene");

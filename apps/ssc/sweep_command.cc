@@ -12,6 +12,7 @@
 #include "apps/ssc/progress.h"
 #include "apps/ssc/trial_options.h"
 #include "runtime/mujoco_model.h"
+#include "runtime/rig.h"
 #include "studies/job_runner.h"
 #include "studies/sweep.h"
 
@@ -23,7 +24,7 @@ int RunSweepCommand(int argc, char** argv) {
                    "default) on all cores. Rows are appended to OUT/sweep.csv as trials end;\n"
                    "re-running the same command resumes, skipping finished rows.");
   SweepSpec spec;
-  spec.scene_name = kDefaultScene;
+  spec.scene_name = DefaultScene();
   spec.pref_pa = {40, 70, 100, 150, 200, 250, 300};
   spec.beta = {0, 0.5, 1, 1.5, 2, 2.5, 3, 3.5, 4};
   spec.step_mm = {2.5, 5, 7.5};

@@ -9,6 +9,7 @@
 #include "compare/twin_log.h"
 #include "geometry/dimensions.h"
 #include "runtime/mujoco_model.h"
+#include "runtime/rig.h"
 #include "studies/trial_io.h"
 
 namespace ssc {
@@ -20,7 +21,7 @@ int RunTrialCommand(int argc, char** argv) {
       "the edge, follow it; prints the outcome and metrics, writes the log.");
   TrialConfig config;
   TrialSettings settings;
-  std::string scene_name = "disk_benchmark", out_dir = "out/trial", robot_log_dir;
+  std::string scene_name = DefaultScene(), out_dir = "out/trial", robot_log_dir;
   double stop_at = 0;
   bool no_plot = false;
   cmd.Text("scene", &scene_name, "scene (name under scenes/ or a path)");

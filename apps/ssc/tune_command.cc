@@ -10,6 +10,7 @@
 #include "apps/ssc/plotting.h"
 #include "apps/ssc/trial_options.h"
 #include "runtime/mujoco_model.h"
+#include "runtime/rig.h"
 #include "studies/controller_tune.h"
 
 namespace ssc {
@@ -32,7 +33,7 @@ int RunTuneCommand(int argc, char** argv) {
                    "OUT/tune.csv (every evaluation and the reference\ncontrollers, with 95 % "
                    "intervals and the Pareto front) and OUT/pareto.png.");
   TuneSpec spec;
-  spec.sweep.scene_name = "disk_benchmark_gantry";
+  spec.sweep.scene_name = DefaultScene();
   spec.sweep.base.law.p_ref_pa = 100;
   spec.sweep.base.law.beta = 2;
   spec.sweep.base.law.step_mm = 7.5;

@@ -13,6 +13,7 @@
 #include "apps/ssc/progress.h"
 #include "apps/ssc/trial_options.h"
 #include "runtime/mujoco_model.h"
+#include "runtime/rig.h"
 #include "studies/job_runner.h"
 #include "studies/success_map_fit.h"
 #include "studies/validation.h"
@@ -28,7 +29,7 @@ int RunValidateCommand(int argc, char** argv) {
                    "it does not pass or fail.");
   ValidateSpec spec;
   spec.map_path = SourceDir() + "/data/published/success_map_dl5.csv";
-  spec.scene_name = kDefaultScene;
+  spec.scene_name = DefaultScene();
   long seeds = 10, threads = std::max(1u, std::thread::hardware_concurrency());
   std::string out_dir = "out/validate";
   bool no_plot = false, no_progress = false, no_shared_approach = false;

@@ -7,6 +7,7 @@
 #include "apps/ssc/trial_options.h"
 #include "objects/object_mjcf.h"
 #include "runtime/mujoco_model.h"
+#include "runtime/rig.h"
 #include "studies/object_trials.h"
 #include "viewer/viewer_app.h"
 
@@ -18,8 +19,10 @@ int RunViewCommand(int argc, char** argv) {
       "ssc view [SCENE | --scene SCENE] [options]: the twin in a window with the trial controller "
       "running\n"
       "(the same mjcb_control callback as headless trials: same seed, same trajectory).\n"
-      "SCENE: a name under scenes/ (default disk_benchmark), a path, or a test object by\n"
-      "name (disk_d10, hole_d06, corner_a090, volute, semicircle_strip, fillet, ...).");
+      "SCENE: a name under scenes/ (default " +
+          std::string(DefaultScene()) +
+          "), a path, or a test object by\n"
+          "name (disk_d10, hole_d06, corner_a090, volute, semicircle_strip, fillet, ...).");
   ViewerOptions v;
   TrialSettings settings;
   std::string scene, scene_option;
@@ -29,7 +32,9 @@ int RunViewCommand(int argc, char** argv) {
   std::string kind_name;
   cmd.Text("scene-kind", &kind_name,
            std::string("a test object's scene: ") + kObjectSceneKindNames +
-               " (as in ssc objects; default arm); only with a test object");
+               " (as in ssc objects; default the default scene's, " +
+               ObjectSceneKindName(ObjectSceneKindOfTier(RigTierFor(RigUse::kTrial))) +
+               "); only with a test object");
   std::string camera = "overview";
   cmd.Choice("camera", &camera,
              "camera at start: overview (the arm and the cup), cup (a close-up that follows the "
@@ -53,8 +58,8 @@ int RunViewCommand(int argc, char** argv) {
     return cmd.Fail("SCENE '" + scene + "' and --scene '" + scene_option +
                     "' name different scenes: give one");
   }
-  if (scene.empty()) scene = scene_option.empty() ? "disk_benchmark" : scene_option;
-  ObjectSceneKind kind = ObjectSceneKind::kArm;
+  if (scene.empty()) scene = scene_option.empty() ? DefaultScene() : scene_option;
+  ObjectSceneKind kind = ObjectSceneKindOfTier(RigTierFor(RigUse::kTrial));
   if (std::string e; !kind_name.empty() && !ObjectSceneKindByName(kind_name, &kind, &e)) {
     return cmd.Fail("--scene-kind: " + e);
   }
@@ -68,7 +73,8 @@ int RunViewCommand(int argc, char** argv) {
   const bool is_file = std::filesystem::exists(v.scene_path);
   if (is_file && !kind_name.empty()) {
     return cmd.Fail("--scene-kind '" + kind_name + "' picks a test object's scene; '" + scene +
-                    "' is a scene file (for the flex tier name disk_benchmark_flex)");
+                    "' is a scene file (for the flex tier name " +
+                    RigObjectTemplate(RigKind::kFlex).scene + ")");
   }
   if (!is_file) {
     // A test object by name: write its scenes (out/objects/scenes) and open the arm scene, with
@@ -82,7 +88,7 @@ int RunViewCommand(int argc, char** argv) {
       return 2;
     }
     const std::string dir = (std::filesystem::path("out") / "objects" / "scenes").string();
-    if (!WriteObjectFiles(spec, dir, SourceDir(), &error)) {
+    if (!WriteObjectFiles(spec, dir, SourceDir(), RigObjectSceneTemplates(), &error)) {
       std::fprintf(stderr, "ssc view: %s\n", error.c_str());
       return 1;
     }

@@ -174,7 +174,7 @@ bool FitEdgeArc(const V2* points_mm, std::size_t n, double min_radius_mm, EdgeAr
 
 double InsetFromMeanVacuumMm(double p_mean_pa) {
   // (P-bar Pa, inset mm): medians over 0.5 mm bins of 301 control iterations of 12 edge_track
-  // trials (disk_benchmark_fast, default effects), the inset from the disk's radius.
+  // trials (the default scene, default effects), the inset from the disk's radius.
   static constexpr std::array<std::array<double, 2>, 12> kCurve = {{{10, -0.9},
                                                                     {20, 0.0},
                                                                     {36, 0.5},

@@ -1,7 +1,7 @@
 """The baselines of docs/gym.md: the published law and uniform random actions on the
 environment, per robot-effects setting. Prints one table row per policy and setting.
 
-    python python/examples/edge_following_baseline.py [--seeds 5] [--scene disk_benchmark_gantry]
+    python python/examples/edge_following_baseline.py [--seeds 5] [--scene SCENE]
 """
 import argparse
 import time
@@ -26,7 +26,7 @@ def episode(env, policy, seed):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seeds", type=int, default=5, help="episodes per row (reset seeds 0..)")
-    parser.add_argument("--scene", default="disk_benchmark_gantry")
+    parser.add_argument("--scene", default=ssc_twin.default_scene())
     args = parser.parse_args()
     print("| policy | effects | seeds | outcomes | return | steps | wall per episode |")
     print("| --- | --- | --- | --- | --- | --- | --- |")

@@ -6,6 +6,7 @@
 #include <nanobind/stl/array.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -184,6 +185,23 @@ std::uint64_t SeedArg(const nb::handle& value) {
   return static_cast<std::uint64_t>(v);
 }
 
+// Where the trials' test objects' scenes are written: a folder of this process in the temp dir,
+// removed when the process that made it exits (a forked child leaves it to its parent).
+const std::filesystem::path& ObjectSceneDir() {
+  struct Dir {
+    std::filesystem::path path;
+    int owner_pid;
+    ~Dir() {
+      std::error_code ec;
+      if (getpid() == owner_pid) std::filesystem::remove_all(path, ec);
+    }
+  };
+  static const Dir dir{
+      std::filesystem::temp_directory_path() / ("ssc_twin_objects_" + std::to_string(getpid())),
+      getpid()};
+  return dir.path;
+}
+
 // effects: "default" (the fitted set), "off" or key=value,... (as --effects).
 TrialConfig MakeConfig(double pref, double beta, double step_mm, std::uint64_t seed,
                        const std::string& object, const std::string& effects, std::string* scene) {
@@ -198,12 +216,15 @@ TrialConfig MakeConfig(double pref, double beta, double step_mm, std::uint64_t s
     if (spec.name.empty())
       Invalid("unknown test object '" + object +
               "' (e.g. disk_d10, hole_d10, corner_a090, volute)");
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "ssc_twin_objects";
+    // The object's scene of the scene's tier (the rig's table: arm, gantry or flex).
+    ObjectSceneKind kind = ObjectSceneKind::kGantry;
+    if (std::string e; !ObjectSceneKindOfScene(*scene, &kind, &e)) Invalid(e);
+    const std::filesystem::path& dir = ObjectSceneDir();
     std::string error;
-    if (!WriteObjectFiles(spec, dir.string(), ResourceDir(), &error)) Fail(error);
-    // The object's scene of the scene's tier: flex for *flex*, the gantry for *gantry*,
-    // *light* and *fast*, else the arm.
-    *scene = (dir / ObjectSceneFile(spec, ObjectSceneKindOfScene(*scene))).string();
+    if (!WriteObjectFiles(spec, dir.string(), ResourceDir(), RigObjectSceneTemplates(), &error)) {
+      Fail(error);
+    }
+    *scene = (dir / ObjectSceneFile(spec, kind)).string();
     config = ObjectTrialConfig(spec, config);
   }
   if (std::string e; !ParseRobotEffects(effects, &config.effects, &e)) Invalid(e);
@@ -672,11 +693,10 @@ class SteppedTrial {
   std::array<double, 6> ForceTorque() const {
     // The F/T sensors as the model names them (force then torque, N and N m).
     std::array<double, 6> ft{};
-    const int f = mj_name2id(model_, mjOBJ_SENSOR, kToolForceSensorName);
-    const int t = mj_name2id(model_, mjOBJ_SENSOR, kToolTorqueSensorName);
+    const RigBinding& rig = trial_->rig();
     for (int k = 0; k < 3; ++k) {
-      if (f >= 0) ft[k] = data_->sensordata[model_->sensor_adr[f] + k];
-      if (t >= 0) ft[3 + k] = data_->sensordata[model_->sensor_adr[t] + k];
+      ft[k] = data_->sensordata[rig.force_adr + k];
+      if (rig.torque_adr >= 0) ft[3 + k] = data_->sensordata[rig.torque_adr + k];
     }
     return ft;
   }
@@ -740,37 +760,18 @@ class SilPlant {
     if (!model_) Fail(error);
     data_ = MakeData(model_.get(), &error);
     if (!data_) Fail(error);
-    site_ = mj_name2id(model_.get(), mjOBJ_SITE, kToolSiteName);
-    if (site_ < 0) Fail(scene + ": no tool site '" + std::string(kToolSiteName) + "'");
-    const ChamberPressureDiagnostics* p =
-        FindChamberPressureDiagnostics(model_.get(), data_.get(), &error);
-    if (!p) Fail(scene + ": " + error);
-    pressure_adr_ = p->sensor_adr();
-    const int f = mj_name2id(model_.get(), mjOBJ_SENSOR, kToolForceSensorName);
-    const int t = mj_name2id(model_.get(), mjOBJ_SENSOR, kToolTorqueSensorName);
-    if (f < 0 || t < 0) Fail(scene + ": no F/T sensors");
-    force_adr_ = model_->sensor_adr[f];
-    torque_adr_ = model_->sensor_adr[t];
-    servo_ = MakeToolServo(model_.get());
-    if (!servo_) Fail(scene + ": no servo (gantry joints or an arm) drives the tool");
+    if (std::string e = rig_.Bind(model_.get(), data_.get()); !e.empty()) Fail(scene + ": " + e);
+    if (rig_.torque_adr < 0) Fail(scene + ": no F/T torque sensor");
     Reset(seed);
   }
   void Reset(const nb::object& seed) {
-    const std::uint64_t run_seed = SeedArg(seed);
-    if (model_->nkey > 0) {
-      mj_resetDataKeyframe(model_.get(), data_.get(), 0);
-    } else {
-      mj_resetData(model_.get(), data_.get());
-    }
-    const ChamberPressureDiagnostics* p = FindChamberPressureDiagnostics(model_.get(), data_.get());
-    SetChamberPressureRunSeed(model_.get(), data_.get(), p->instance(), run_seed);
-    mj_forward(model_.get(), data_.get());
+    rig_.Reset(model_.get(), data_.get(), SeedArg(seed));
     std::string error;
-    if (!servo_->Init(model_.get(), data_.get(), site_, &error)) Fail(error);
+    if (!rig_.servo->Init(model_.get(), data_.get(), rig_.tool_site, &error)) Fail(error);
   }
   // The target the servo tracks, tool site in the scene frame, m.
-  void SetTarget(std::array<double, 3> xyz) { servo_->SetTarget({xyz[0], xyz[1], xyz[2]}); }
-  std::array<double, 3> Target() const { return servo_->target(); }
+  void SetTarget(std::array<double, 3> xyz) { rig_.servo->SetTarget({xyz[0], xyz[1], xyz[2]}); }
+  std::array<double, 3> Target() const { return rig_.servo->target(); }
   // smoothing_s: the look-ahead time constant (0 = none); max_speed_m_s: the command's speed
   // limit (moveL's speed).
   void SetServo(double smoothing_s, double max_speed_m_s) {
@@ -780,23 +781,23 @@ class SilPlant {
     ServoParams s;
     s.smoothing_s = smoothing_s;
     s.max_speed_m_s = max_speed_m_s;
-    servo_->set_params(s);
+    rig_.servo->set_params(s);
   }
   // Holds the command where the tool is now (servoStop): no motion left to realise.
   void Stop() {
-    ToolServo::State s = servo_->state();
-    const Vec3 here = servo_->Measured(data_.get());
+    ToolServo::State s = rig_.servo->state();
+    const Vec3 here = rig_.servo->Measured(data_.get());
     s.target = here;
     s.command = here;
     s.velocity = {0, 0, 0};
-    servo_->set_state(s);
+    rig_.servo->set_state(s);
   }
   // Physics steps until the simulated time reaches t_s (at least none); returns the time.
   double AdvanceTo(double t_s) {
     nb::gil_scoped_release release;
     const double dt = model_->opt.timestep;
     while (data_->time + 0.5 * dt <= t_s) {
-      servo_->Track(model_.get(), data_.get());
+      rig_.servo->Track(model_.get(), data_.get());
       mj_step(model_.get(), data_.get());
       for (int k = 0; k < 3; ++k) {
         if (!std::isfinite(data_->qpos[k])) Fail("the simulation became unstable");
@@ -805,18 +806,18 @@ class SilPlant {
     return data_->time;
   }
   std::array<double, 3> ToolPosition() const {
-    const double* p = data_->site_xpos + 3 * site_;
+    const double* p = data_->site_xpos + 3 * rig_.tool_site;
     return {p[0], p[1], p[2]};
   }
   // The tool site's rotation, row-major (mjData.site_xmat).
   std::array<double, 9> ToolRotation() const {
     std::array<double, 9> r{};
-    for (int k = 0; k < 9; ++k) r[k] = data_->site_xmat[9 * site_ + k];
+    for (int k = 0; k < 9; ++k) r[k] = data_->site_xmat[9 * rig_.tool_site + k];
     return r;
   }
   // The newest sensor sample: four chamber vacuums, Pa (positive = vacuum).
   std::array<double, 4> Vacuum() const {
-    const double* p = data_->sensordata + pressure_adr_;
+    const double* p = data_->sensordata + rig_.pressure_adr;
     return {p[0], p[1], p[2], p[3]};
   }
   // Force (N) and torque (N m) the transducer exerts on the cup, F/T site frame (z down the cup
@@ -824,8 +825,8 @@ class SilPlant {
   std::array<double, 6> ForceTorque() const {
     std::array<double, 6> ft{};
     for (int k = 0; k < 3; ++k) {
-      ft[k] = data_->sensordata[force_adr_ + k];
-      ft[3 + k] = data_->sensordata[torque_adr_ + k];
+      ft[k] = data_->sensordata[rig_.force_adr + k];
+      ft[3 + k] = data_->sensordata[rig_.torque_adr + k];
     }
     return ft;
   }
@@ -859,8 +860,7 @@ class SilPlant {
   std::string scene_;
   ModelPtr model_;
   DataPtr data_;
-  std::unique_ptr<ToolServo> servo_;
-  int site_ = -1, pressure_adr_ = -1, force_adr_ = -1, torque_adr_ = -1;
+  RigBinding rig_;
 };
 
 double DictNumber(const nb::dict& d, const char* key) {
@@ -936,6 +936,23 @@ NB_MODULE(_core, m) {
   m.def("set_resource_dir", &SetResourceDir, "dir"_a);
   m.def("scene_path", &ResolveScenePath, "scene"_a,
         "Path of a scene given by name (under scenes/) or path.");
+  m.def("default_scene", &DefaultScene,
+        "The scene every trial entry point runs when none is named (runtime/rig.h).");
+  m.def(
+      "scene_tiers",
+      [] {
+        nb::list tiers;
+        for (const RigTier& t : RigTiers()) {
+          tiers.append(Dict({{"name", nb::cast(std::string(t.name))},
+                             {"scene", nb::cast(std::string(t.scene))},
+                             {"kind", nb::cast(std::string(RigKindName(t.kind)))},
+                             {"timestep_s", nb::cast(t.timestep_s)},
+                             {"what", nb::cast(std::string(t.what))}}));
+        }
+        return tiers;
+      },
+      "The rig's scene tiers (runtime/rig.h): name, scene, kind (arm, gantry, flex, replay, "
+      "probe), time step and what each is.");
   m.def("mujoco_version", [] { return std::string(mj_versionString()); });
   m.def("check_mujoco_version", &CheckMuJoCoVersion,
         "Empty when the loaded libmujoco matches the headers this was built with.");
@@ -1024,7 +1041,7 @@ NB_MODULE(_core, m) {
         if (!error.empty()) Fail(error);
         return ResultDict(ResolveScenePath(scene_path), config, r);
       },
-      "scene"_a = "disk_benchmark", "pref"_a = law.p_ref_pa, "beta"_a = law.beta,
+      "scene"_a = DefaultScene(), "pref"_a = law.p_ref_pa, "beta"_a = law.beta,
       "step_mm"_a = law.step_mm, "seed"_a = 1, "object"_a = "", "keep_log"_a = true,
       "stop_at_s"_a = 0.0, "timeout_s"_a = 0.0, "effects"_a = "default",
       "controller"_a = "published", "controller_params"_a = "",
@@ -1076,7 +1093,7 @@ NB_MODULE(_core, m) {
                      {"skipped", nb::cast(summary.skipped)},
                      {"wall_s", nb::cast(summary.wall_s)}});
       },
-      "scene"_a = kDefaultScene, "pref"_a, "beta"_a, "step_mm"_a, "repeats"_a = 3, "seed"_a = 1,
+      "scene"_a = DefaultScene(), "pref"_a, "beta"_a, "step_mm"_a, "repeats"_a = 3, "seed"_a = 1,
       "threads"_a = 1, "out_csv"_a, "effects"_a = "default", "controller"_a = "published",
       "controller_params"_a = "", "progress"_a = nb::none(),
       "A P_ref x beta x step x repeats grid of trials into a resumable CSV (ssc sweep). "
@@ -1176,7 +1193,7 @@ NB_MODULE(_core, m) {
         d["out_dir"] = out_dir;
         return d;
       },
-      "map"_a = "", "out_dir"_a = "out/validate", "scene"_a = kDefaultScene, "seeds"_a = 10,
+      "map"_a = "", "out_dir"_a = "out/validate", "scene"_a = DefaultScene(), "seeds"_a = 10,
       "seed"_a = 1, "threads"_a = 1, "timeout_s"_a = 0.0, "effects"_a = "default",
       "controller"_a = "published", "controller_params"_a = "", "progress"_a = nb::none(),
       "The twin on every cell of a published success map, scored (ssc validate). map: CSV "
@@ -1250,7 +1267,7 @@ NB_MODULE(_core, m) {
             if (!p) Fail(error);
             new (self) EdgeProbe3d(std::move(*p));
           },
-          "scene"_a = "probe_edge")
+          "scene"_a = RigTierFor(RigUse::kProbe).scene)
       .def(
           "read",
           [](EdgeProbe3d& p, double x_m, double y_m, double yaw_rad, double surface_z_m,
@@ -1318,7 +1335,7 @@ NB_MODULE(_core, m) {
         d["warnings"] = nb::cast(result.log_warnings);  // e.g. a replay off the object
         return d;
       },
-      "log"_a, "scene"_a = "disk_replay", "out_dir"_a = "out/compare",
+      "log"_a, "scene"_a = RigTierFor(RigUse::kReplay).scene, "out_dir"_a = "out/compare",
       "tcp_offset_mm"_a = kToolCentreOffsetM * 1e3,
       "Replays a robot log (lab per-topic CSVs, .mat or plain CSV) in the twin and compares the "
       "pressures, as `ssc compare` without the closed loop (report files into out_dir).");
@@ -1343,7 +1360,7 @@ NB_MODULE(_core, m) {
         }
         return std::string(OutcomeName(r.outcome));
       },
-      "dir"_a, "scene"_a = "disk_benchmark", "pref"_a = law.p_ref_pa, "beta"_a = law.beta,
+      "dir"_a, "scene"_a = DefaultScene(), "pref"_a = law.p_ref_pa, "beta"_a = law.beta,
       "step_mm"_a = law.step_mm, "seed"_a = 1, "effects"_a = "default",
       "Runs a trial and writes it as a lab recording (ssc trial --robot-log).");
 
@@ -1362,7 +1379,7 @@ NB_MODULE(_core, m) {
       .def(nb::init<const std::string&, double, double, double, const nb::object&,
                     const std::string&, double, const std::string&, const nb::object&,
                     const std::string&>(),
-           "scene"_a = "disk_benchmark_gantry", "pref"_a = law.p_ref_pa, "beta"_a = law.beta,
+           "scene"_a = DefaultScene(), "pref"_a = law.p_ref_pa, "beta"_a = law.beta,
            "step_mm"_a = law.step_mm, "seed"_a = 1, "object"_a = "", "timeout_s"_a = 0.0,
            "effects"_a = "default", "controller"_a = nb::none(), "controller_params"_a = "")
       .def("reset", &SteppedTrial::Reset, "seed"_a,
@@ -1402,8 +1419,8 @@ NB_MODULE(_core, m) {
   nb::class_<SilPlant>(m, "SilPlant",
                        "A scene stepped from Python with its tool driven to Cartesian targets "
                        "(ssc_twin.sil's robot, sensors and pump).")
-      .def(nb::init<const std::string&, const nb::object&, int>(),
-           "scene"_a = "disk_benchmark_gantry", "seed"_a = 1, "average_samples"_a = 1)
+      .def(nb::init<const std::string&, const nb::object&, int>(), "scene"_a = DefaultScene(),
+           "seed"_a = 1, "average_samples"_a = 1)
       .def("reset", &SilPlant::Reset, "seed"_a)
       .def("set_target", &SilPlant::SetTarget, "xyz_m"_a)
       .def("target", &SilPlant::Target)

@@ -9,7 +9,7 @@ The C++ twin does the work; this package hands its results back as dicts and Num
 Installing the package registers the pressure-sensor plugin with the mujoco package (entry point
 group ``mujoco.plugins``), so ``import mujoco`` can load the bundled scenes::
 
-    python -m mujoco.viewer --mjcf=$(python -c "import ssc_twin; print(ssc_twin.scene_path('disk_benchmark'))")
+    python -m mujoco.viewer --mjcf=$(python -c "import ssc_twin; print(ssc_twin.scene_path(ssc_twin.default_scene()))")
 
 and the Gymnasium environment ``ssc_twin/EdgeFollowing-v0`` is registered when gymnasium is
 installed (``pip install .[gym]``).
@@ -24,13 +24,14 @@ import mujoco as _mujoco  # noqa: E402,F401  loads libmujoco, which _core links 
 
 from . import _core
 from ._core import (Probe, SilPlant, SteppedTrial, check_seed, compare, contour_step,
-                    controllers, max_seed, mujoco_version, object_names, objects, phase_names,
-                    resource_dir, run_trial, scene_path, sweep, validate, write_lab_mat,
-                    write_robot_log)
+                    controllers, default_scene, max_seed, mujoco_version, object_names, objects,
+                    phase_names, resource_dir, run_trial, scene_path, scene_tiers, sweep,
+                    validate, write_lab_mat, write_robot_log)
 
 __all__ = ["Probe", "SilPlant", "SteppedTrial", "check_seed", "compare", "contour_step",
-           "controllers", "max_seed", "mujoco_version", "object_names", "objects", "phase_names",
-           "resource_dir", "run_trial", "scene_path", "sweep", "write_lab_mat",
+           "controllers", "default_scene", "max_seed", "mujoco_version", "object_names",
+           "objects", "phase_names", "resource_dir", "run_trial", "scene_path", "scene_tiers",
+           "sweep", "write_lab_mat",
            "write_robot_log", "plugin_library", "load_plugin", "read_sweep", "validate"]
 
 _core.install_message_handlers()

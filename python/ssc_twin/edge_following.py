@@ -36,10 +36,10 @@ FT_LIMIT = 1.0e3  # N and N m; the start-up compression is 1.5 N
 # (II), or out of the band of following about the edge (lost_edge).
 FAILURES = ("failure_I", "failure_II", "lost_edge")
 CONTROL_PERIOD_S = _core.default_control_period_s  # one step: one control iteration
-DEFAULT_SCENE = "disk_benchmark_gantry"
-# The bundled scenes a contour-following trial runs in (the others hold a probe, no robot).
-TRIAL_SCENES = ("disk_benchmark", "disk_benchmark_gantry", "disk_benchmark_light",
-                "disk_benchmark_fast", "disk_benchmark_flex")
+DEFAULT_SCENE = _core.default_scene()
+# The rig's scenes a contour-following trial runs in (the others replay a log or hold a probe).
+TRIAL_SCENES = tuple(t["scene"] for t in _core.scene_tiers()
+                     if t["kind"] in ("arm", "gantry", "flex"))
 CUP_VIEW_DISTANCE_M = 0.15  # the "cup" camera: the cup and the edge under it fill the frame
 LIP_GEOM_GROUP = 4  # models/ssc_tool.xml: the lip segments
 
@@ -69,11 +69,8 @@ class EdgeFollowingEnv(gym.Env):
                  effects="default", scene=DEFAULT_SCENE, render_mode=None, width=640, height=480,
                  camera="cup", controller=None, controller_params="", reset_cache=True):
         super().__init__()
-        # The scene: a name under scenes/ ("disk_benchmark_gantry", the cup on a gantry;
-        # "disk_benchmark", the UR-10 arm; "disk_benchmark_light", "disk_benchmark_fast";
-        # "disk_benchmark_flex", the flex skirt lip) or an MJCF path. With test objects, a scene
-        # name containing "flex" runs their flex scenes, "gantry", "light" or "fast" their
-        # gantry scenes, else their arm ones.
+        # The scene: one of TRIAL_SCENES (the rig's tiers, ssc_twin.scene_tiers()) or an MJCF
+        # path. With test objects, the tier's kind (arm, gantry, flex) picks their scenes.
         self.scene = str(scene)
         if not os.path.exists(_core.scene_path(self.scene)):
             raise ValueError(f"scene {self.scene!r} not found: a name among {list_scenes()} or "

@@ -10,6 +10,7 @@
 #include "objects/object_mjcf.h"
 #include "runtime/mujoco_model.h"
 #include "studies/object_step_cost.h"
+#include "studies/object_trials.h"
 
 int main(int argc, char** argv) {
   if (argc > 1 && (std::string(argv[1]) == "-h" || std::string(argv[1]) == "--help")) {
@@ -24,7 +25,8 @@ int main(int argc, char** argv) {
   ssc::StepCostOptions options;
   if (argc > 2) options.steps = std::max(1, std::atoi(argv[2]));
   std::string error;
-  if (ssc::WriteAllObjectScenes(out, ssc::SourceDir(), &error) < 0) {
+  if (ssc::WriteAllObjectScenes(out, ssc::SourceDir(), ssc::RigObjectSceneTemplates(), &error) <
+      0) {
     std::fprintf(stderr, "ssc_object_cost: %s\n", error.c_str());
     return 1;
   }

@@ -37,7 +37,8 @@ const fs::path& SceneDir() {
   static const fs::path dir = [] {
     const fs::path d = SceneDirPath();
     std::string error;
-    EXPECT_EQ(WriteAllObjectScenes(d.string(), SourceDir(), &error), 42) << error;
+    EXPECT_EQ(WriteAllObjectScenes(d.string(), SourceDir(), RigObjectSceneTemplates(), &error), 42)
+        << error;
     return d;
   }();
   return dir;
@@ -316,7 +317,9 @@ TEST(ObjectFilesTest, EveryFileLoadsAndOutputIsDeterministic) {
   // Same bytes when written again elsewhere (at the same depth: the model paths are relative).
   const fs::path again = SceneDir().string() + "_again";
   std::string error;
-  ASSERT_EQ(WriteAllObjectScenes(again.string(), SourceDir(), &error), 42) << error;
+  ASSERT_EQ(WriteAllObjectScenes(again.string(), SourceDir(), RigObjectSceneTemplates(), &error),
+            42)
+      << error;
   auto read = [](const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
     std::stringstream s;

@@ -437,7 +437,7 @@ TEST(SweepTest, ParallelSweepGivesTheSameRowsAsSerialAndResumes) {
                          std::istreambuf_iterator<char>());
   ASSERT_TRUE(ParseSweepManifest(json, &manifest, &error)) << error;
   EXPECT_EQ(manifest["scene"], "disk_benchmark_gantry");
-  EXPECT_EQ(manifest["default_scene"], kDefaultScene);
+  EXPECT_EQ(manifest["default_scene"], DefaultScene());
   // Re-running resumes: nothing left to run, no duplicate rows.
   ASSERT_TRUE(RunSweep(Scene(), spec, nullptr, &summary, &error)) << error;
   EXPECT_EQ(summary.ran, 0);

@@ -206,7 +206,7 @@ class EquivalenceStudyTest : public ::testing::Test {
     std::ofstream(map_) << "step_mm,beta,pref_pa,successes_of_3\n"
                            "5,1.5,100,3\n5,3,100,3\n5,1.5,200,3\n5,3,200,3\n";
     spec_.map_path = map_;
-    spec_.reference.scene_name = kDefaultScene;
+    spec_.reference.scene_name = DefaultScene();
     spec_.reference.base.target.goal.sweep_deg = 60;
     spec_.candidate = spec_.reference;
     spec_.seeds = 10;

@@ -195,7 +195,7 @@ TEST(ValidationStudyTest, ATinyMapGetsTheKnownScores) {
   EXPECT_NE(text.find("\"rerun_agreement\""), std::string::npos) << text;
   // The scene run and the project's default scene (chosen by ssc equivalence), both named.
   EXPECT_NE(text.find("\"scene\": \"disk_benchmark_gantry\""), std::string::npos) << text;
-  EXPECT_NE(text.find(std::string("\"default_scene\": \"") + kDefaultScene + "\""),
+  EXPECT_NE(text.find(std::string("\"default_scene\": \"") + DefaultScene() + "\""),
             std::string::npos)
       << text;
   // Resuming runs nothing new and scores the same.

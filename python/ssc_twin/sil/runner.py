@@ -45,8 +45,8 @@ def parse_args(argv):
     p = argparse.ArgumentParser(
         prog="ssc sil",
         description="Run a lab script (ROS 1 + ur_rtde) against the twin, unchanged.")
-    p.add_argument("--scene", default="disk_benchmark_gantry",
-                   help="scene name or MJCF path (default: disk_benchmark_gantry)")
+    p.add_argument("--scene", default=_core.default_scene(),
+                   help="scene name or MJCF path (default: %s)" % _core.default_scene())
     p.add_argument("--seed", type=seed, default=1,
                    help="sensor noise seed (default 1), a whole number in [0, %d]" % MAX_SEED)
     p.add_argument("--realtime", action="store_true",

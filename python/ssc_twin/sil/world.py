@@ -109,14 +109,14 @@ class _Event:
 class World:
     """One simulated robot cell: the scene, its clock and the ROS graph around it."""
 
-    def __init__(self, scene="disk_benchmark_gantry", seed=1, realtime=False, tmp_dir=None,
+    def __init__(self, scene=None, seed=1, realtime=False, tmp_dir=None,
                  pause_cost_s=DEFAULT_PAUSE_COST_S, verbose=False, disk_geom="disk"):
         import sys
         from .. import _core
         standins = os.path.join(os.path.dirname(os.path.abspath(__file__)), "standins")
         if standins not in sys.path:
             sys.path.insert(0, standins)
-        self.plant = _core.SilPlant(scene, seed)
+        self.plant = _core.SilPlant(_core.default_scene() if scene is None else scene, seed)
         self.realtime = realtime
         self.verbose = verbose
         # Seconds a plt.pause costs beyond its argument, or MEASURED: the script's own CPU time
