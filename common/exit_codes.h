@@ -4,6 +4,9 @@
 #ifndef SSC_COMMON_EXIT_CODES_H_
 #define SSC_COMMON_EXIT_CODES_H_
 
+#include <cctype>
+#include <string>
+
 namespace ssc {
 
 enum ExitCode : int {
@@ -39,6 +42,14 @@ inline constexpr ExitCodeRow kExitCodeTable[] = {
      "ssc sil: the script needs an interface the twin does not have (named)"},
     {kExitInterrupted, "interrupted", "SIGINT or SIGTERM: the finished work is kept"},
 };
+
+// The class of an input that could not be read, from the reader's message: "no such file" (any
+// case) is a missing input, anything else a bad one.
+inline ExitCode InputErrorCode(const std::string& error) {
+  std::string lower(error);
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return lower.find("no such file") != std::string::npos ? kExitMissingInput : kExitBadData;
+}
 
 }  // namespace ssc
 

@@ -12,6 +12,7 @@
 #include <memory>
 #include <vector>
 
+#include "common/exit_codes.h"
 #include "common/output_file.h"
 #include "runtime/mujoco_model.h"
 #include "viewer/overlay.h"
@@ -381,18 +382,18 @@ int RunViewer(const ViewerOptions& options) {
     std::fprintf(stderr,
                  "ssc view: no display (DISPLAY is not set); for a screenshot on a "
                  "headless machine run: xvfb-run -a ssc view --screenshot FILE.png\n");
-    return 3;
+    return kExitFailed;
   }
   if (!glfwInit()) {
     std::fprintf(stderr, "ssc view: cannot open the display '%s' (GLFW init failed)\n", display);
-    return 3;
+    return kExitFailed;
   }
   std::string error;
   ModelPtr model = LoadModel(options.scene_path, &error);
   if (!model) {
     std::fprintf(stderr, "ssc view: %s\n", error.c_str());
     glfwTerminate();
-    return 1;
+    return InputErrorCode(error);
   }
   DataPtr data = MakeData(model.get(), &error);
   auto trial = ContourTrial::Create(model.get(), data.get(), options.config, false, &error);
@@ -414,7 +415,7 @@ int RunViewer(const ViewerOptions& options) {
   if (window == nullptr) {
     std::fprintf(stderr, "ssc view: cannot create an OpenGL window on '%s'\n", display);
     glfwTerminate();
-    return 3;
+    return kExitFailed;
   }
   glfwMakeContextCurrent(window);
   glfwSwapInterval(1);

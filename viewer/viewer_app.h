@@ -29,7 +29,8 @@ struct ViewerOptions {
   std::function<int()> create_outputs;
 };
 
-// Returns the process exit code. Without a display: one line on stderr and exit code 3.
+// Returns the process exit code (common/exit_codes.h). Without a display: one line on stderr
+// and kExitFailed.
 int RunViewer(const ViewerOptions& options);
 
 }  // namespace ssc

@@ -89,7 +89,10 @@ int CalibrateDynamic(cli::Command& cmd, const DynamicFitSpec& spec, const std::s
                      std::uint64_t holdout_seed, const std::string& out_dir) {
   std::string error;
   ModelPtr model = LoadModel(ResolveScenePath(scene), &error);
-  if (!model) return Fail(error);
+  if (!model) {
+    cli::NoteInputError(error);
+    return Fail(error);
+  }
   if (std::string e; !CheckTrialSetup(model.get(), spec.base, &e)) return Fail(e);
   if (int rc = cmd.CreateOutputs(); rc != 0) return rc;
   const std::filesystem::path out = out_dir;

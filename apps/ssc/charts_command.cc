@@ -120,6 +120,7 @@ int RunChartsCommand(int argc, char** argv) {
   ModelPtr model = LoadModel(ResolveScenePath(spec.scene_name), &error);
   if (!model) {
     std::fprintf(stderr, "ssc charts: %s\n", error.c_str());
+    cli::NoteInputError(error);
     return 1;
   }
   if (const std::string e = CheckSweepGrid(spec); !e.empty()) return cmd.Fail(e);

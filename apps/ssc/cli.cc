@@ -12,6 +12,7 @@
 #include <system_error>
 #include <vector>
 
+#include "common/exit_codes.h"
 #include "common/output_file.h"
 
 #ifndef SSC_VERSION
@@ -20,6 +21,16 @@
 
 namespace ssc::cli {
 namespace fs = std::filesystem;
+
+namespace {
+int g_noted_exit_code = 0;
+}  // namespace
+
+void NoteInputError(const std::string& error) { NoteExitCode(InputErrorCode(error)); }
+void NoteExitCode(int code) {
+  if (g_noted_exit_code == 0) g_noted_exit_code = code;  // the first problem decides
+}
+int NotedExitCode() { return g_noted_exit_code; }
 
 std::string VersionText() {
   return std::string("ssc ") + SSC_VERSION + " (MuJoCo " + mj_versionString() + ")";

@@ -27,6 +27,13 @@ namespace ssc::cli {
 // "ssc 0.1.0 (MuJoCo 3.x.y)".
 std::string VersionText();
 
+// An input the command could not use, noted where it is read: the command then returns
+// kExitFailed (1) as for any error, and main() ends with the input's class instead (missing
+// input 3 or bad data 4, common/exit_codes.h), so every command reports a class the same way.
+void NoteInputError(const std::string& error);
+void NoteExitCode(int code);
+int NotedExitCode();  // 0 when none was noted
+
 // Checks, without creating anything, that `dir` is a writable directory or could be made one:
 // no part of the path is a file or a dangling link, no name is longer than NAME_MAX, and the
 // nearest existing ancestor is a writable directory. False + *error naming the path otherwise.

@@ -179,6 +179,8 @@ int RunCompareCommand(int argc, char** argv) {
   std::string error;
   if (!RunComparison(o, &r, &error)) {
     std::fprintf(stderr, "ssc compare: %s\n", error.c_str());
+    // A write that failed is a failure; anything else is the log or its set-up.
+    if (error.find("cannot write") == std::string::npos) cli::NoteInputError(error);
     return 1;
   }
   PrintComparison(r);

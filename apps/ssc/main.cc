@@ -8,6 +8,7 @@
 
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
+#include "common/exit_codes.h"
 #include "common/output_file.h"
 #include "runtime/mujoco_model.h"
 #include "studies/job_runner.h"
@@ -109,6 +110,7 @@ int main(int argc, char** argv) {
     } catch (const std::exception& e) {
       std::fprintf(stderr, "ssc %s: error: %s\n", c.name, e.what());
     }
+    if (rc == ssc::kExitFailed && ssc::cli::NotedExitCode() != 0) rc = ssc::cli::NotedExitCode();
     if (rc != 0) ssc::RemoveStartedOutputs();      // e.g. a folder made for a write that failed
     ssc::FinalizeJobRunnerMpi(/*abort=*/rc != 0);  // a failed rank must not leave others waiting
     return rc;

@@ -8,6 +8,7 @@
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "apps/ssc/trial_options.h"
+#include "common/exit_codes.h"
 #include "common/output_file.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/rig.h"
@@ -73,6 +74,7 @@ int RunStabilityCommand(int argc, char** argv) {
   ModelPtr base = LoadModel(ResolveScenePath(scene_name), &error);
   if (!base) {
     std::fprintf(stderr, "ssc stability: %s\n", error.c_str());
+    cli::NoteInputError(error);
     return 1;
   }
   StabilitySpec spec;
@@ -85,6 +87,7 @@ int RunStabilityCommand(int argc, char** argv) {
   spec.trials_csv = (std::filesystem::path(out_dir) / "stability_trials.csv").string();
   if (std::string e; !CheckTrialSetup(base.get(), spec.config, &e)) {
     std::fprintf(stderr, "ssc stability: %s: %s\n", scene_name.c_str(), e.c_str());
+    cli::NoteExitCode(kExitBadData);  // a scene that loads but cannot hold this trial
     return 1;
   }
   if (int rc = cmd.CreateOutputs(); rc != 0) return rc;

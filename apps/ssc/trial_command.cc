@@ -6,6 +6,7 @@
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
 #include "apps/ssc/trial_options.h"
+#include "common/exit_codes.h"
 #include "compare/twin_log.h"
 #include "geometry/dimensions.h"
 #include "runtime/mujoco_model.h"
@@ -98,7 +99,7 @@ int RunTrialCommand(int argc, char** argv) {
       std::printf("wrote %s\n", png.c_str());
     }
   }
-  return r.outcome == Outcome::kUnstable ? 3 : 0;
+  return r.outcome == Outcome::kSuccess ? kExitOk : kExitTrialFailed;
 }
 
 }  // namespace ssc

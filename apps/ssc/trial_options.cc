@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "common/exit_codes.h"
+
 namespace ssc {
 
 void AddLawOptions(cli::Command* cmd, ContourLawParams* law) {
@@ -91,10 +93,12 @@ ModelPtr LoadTrialScene(const cli::Command& cmd, const std::string& scene_path,
   ModelPtr model = LoadModel(scene_path, &error);
   if (!model) {
     std::fprintf(stderr, "ssc %s: %s\n", cmd.name().c_str(), error.c_str());
+    cli::NoteInputError(error);
     return nullptr;
   }
   if (!CheckTrialSetup(model.get(), config, &error)) {
     std::fprintf(stderr, "ssc %s: %s: %s\n", cmd.name().c_str(), scene_path.c_str(), error.c_str());
+    cli::NoteExitCode(kExitBadData);  // a scene that loads but cannot hold this trial
     return nullptr;
   }
   return model;

@@ -61,6 +61,7 @@ int RunValidateCommand(int argc, char** argv) {
   SweepSpec sweep;
   if (!PrepareValidation(spec, &cells, &sweep, &error)) {
     std::fprintf(stderr, "ssc validate: %s\n", error.c_str());
+    cli::NoteInputError(error);
     return 1;
   }
   const std::string scene = ResolveScenePath(spec.scene_name);

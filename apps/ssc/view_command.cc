@@ -5,6 +5,7 @@
 #include "apps/ssc/cli.h"
 #include "apps/ssc/commands.h"
 #include "apps/ssc/trial_options.h"
+#include "common/exit_codes.h"
 #include "objects/object_mjcf.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/rig.h"
@@ -85,7 +86,7 @@ int RunViewCommand(int argc, char** argv) {
                    "ssc view: '%s' is neither a scene file, a scene under scenes/, nor a "
                    "test object (ssc objects --help lists them)\n",
                    scene.c_str());
-      return 2;
+      return kExitMissingInput;
     }
     const std::string dir = (std::filesystem::path("out") / "objects" / "scenes").string();
     if (!WriteObjectFiles(spec, dir, SourceDir(), RigObjectSceneTemplates(), &error)) {

@@ -280,7 +280,7 @@ def cases():
     for command in ("trial", "sweep", "tune", "stability"):
         add(Case("two cups", command,
                  with_files([two_cups], lambda s, c=command: cli(c, "--scene", s, "--out", "o")),
-                 1, "2 ssc.chamber_pressure sensors"))
+                 BAD_DATA, "2 ssc.chamber_pressure sensors"))
     return out
 
 

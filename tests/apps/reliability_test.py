@@ -422,7 +422,7 @@ class ReliabilityTest(unittest.TestCase):
             f.write(xml[:start] + xml[end:])
         self.scenes.append(path)
         r = run(["trial", "--scene", path, "--out", os.path.join(self.tmp, "two_cups")])
-        self.assertEqual(r.returncode, 1, r.stdout)
+        self.assertEqual(r.returncode, 4, r.stdout)
         self.assertIn("2 ssc.chamber_pressure sensors", r.stderr)
         self.assertFalse(os.path.exists(os.path.join(self.tmp, "two_cups")))
 
@@ -492,14 +492,14 @@ class ReliabilityTest(unittest.TestCase):
         with open(scene, "w") as f:
             f.write('<mujoco>\n  <include file="part.xml"/>\n</mujoco>\n')
         r = run(["trial", "--no-plot", "--scene", scene, "--out", d], timeout=30)
-        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertEqual(r.returncode, 4, r.stderr)
         self.assertIn('scene.xml:2: <include file="part.xml">', r.stderr)
         self.assertIn("not a regular file", r.stderr)
 
     def test_a_nan_in_the_scene_is_refused_naming_the_element(self):
         scene = self.scene_with('pos="0.65 0 0.005"', 'pos="nan 0 0.005"', "nan_disk")
         r = run(["trial", "--no-plot", "--scene", scene, "--out", self.tmp], timeout=60)
-        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertEqual(r.returncode, 4, r.stderr)
         self.assertIn("geom 'disk': geom_pos holds nan", r.stderr)
 
     def test_a_vanishing_approach_force_is_refused(self):
@@ -587,7 +587,7 @@ class CompareOptionsTest(unittest.TestCase):
 
     def test_windows_longer_than_the_log_are_refused(self):
         r = self.compare("--offset-window", "59")
-        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertEqual(r.returncode, 4, r.stderr)
         self.assertIn("--offset-window", r.stderr)
         r = self.compare("--average", "1000")
         self.assertIn("--average", r.stderr)

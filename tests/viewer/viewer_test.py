@@ -41,7 +41,7 @@ class ViewerTest(unittest.TestCase):
         env = dict(os.environ)
         env.pop("DISPLAY", None)
         r = run([SSC, "view"], env=env)
-        self.assertEqual(r.returncode, 3)
+        self.assertEqual(r.returncode, 1)  # failed (common/exit_codes.h): no display here
         self.assertIn("no display", r.stderr)
         self.assertEqual(len(r.stderr.strip().splitlines()), 1)
 
