@@ -7,7 +7,9 @@
 #include "apps/ssc/commands.h"
 #include "apps/ssc/plotting.h"
 #include "apps/ssc/trial_options.h"
+#include "runtime/rig.h"
 #include "studies/object_study.h"
+#include "studies/object_trials.h"
 
 namespace ssc {
 
@@ -19,7 +21,9 @@ int RunObjectsCommand(int argc, char** argv) {
       "and runs the contour-following trial on each; writes OUT/objects.csv (one row per\n"
       "object and seed), OUT/fillet_profile.csv and OUT/objects.png. The same command run\n"
       "again resumes: the trials whose rows are in OUT/objects.csv are not run again.");
-  std::string names = "all", kind = "gantry", out_dir = "out/objects";
+  // The objects' tier when none is named: the default scene's kind, as ssc view takes it.
+  std::string names = "all", out_dir = "out/objects";
+  std::string kind = ObjectSceneKindName(ObjectSceneKindOfTier(RigTierFor(RigUse::kTrial)));
   long seeds = 1, threads = std::max(1u, std::thread::hardware_concurrency());
   std::uint64_t seed = 1;
   ContourLawParams law;

@@ -39,6 +39,7 @@
 #include "robotlog/topic_csv.h"
 #include "runtime/approach_cache.h"
 #include "runtime/mujoco_model.h"
+#include "runtime/rig.h"
 #include "runtime/tool_servo.h"
 #include "runtime/trial.h"
 #include "studies/edge_probe.h"
@@ -1251,9 +1252,9 @@ NB_MODULE(_core, m) {
                      {"skipped", nb::cast(summary.skipped)}});
       },
       "objects"_a = "all", "out_dir"_a = "out/objects", "seeds"_a = 1, "seed"_a = 1,
-      "scene_kind"_a = "gantry", "pref"_a = law.p_ref_pa, "beta"_a = law.beta, "step_mm"_a = 0.5,
-      "threads"_a = 1, "effects"_a = "default", "controller"_a = "published",
-      "controller_params"_a = "",
+      "scene_kind"_a = ObjectSceneKindName(ObjectSceneKindOfTier(RigTierFor(RigUse::kTrial))),
+      "pref"_a = law.p_ref_pa, "beta"_a = law.beta, "step_mm"_a = 0.5, "threads"_a = 1,
+      "effects"_a = "default", "controller"_a = "published", "controller_params"_a = "",
       "The test objects' trials (ssc objects): writes out_dir/objects.csv (read it with "
       "read_sweep) and the cup paths; controller as in run_trial.");
 
