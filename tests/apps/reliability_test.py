@@ -562,6 +562,18 @@ class CompareOptionsTest(unittest.TestCase):
         return run(["compare", self.rec, "--no-plot", "--out", os.path.join(self.tmp, "cmp")]
                    + list(extra), timeout=300)
 
+    def test_the_closed_loop_names_the_controller_that_ran(self):
+        r = self.compare("--closed-loop", "--controller", "fast")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        line = [ln for ln in r.stdout.splitlines() if ln.startswith("closed loop (")]
+        self.assertEqual(len(line), 1, r.stdout)
+        self.assertIn("controller fast:", line[0])
+        with open(os.path.join(self.tmp, "cmp", "report.json")) as f:
+            closed = json.load(f)["closed_loop"]
+        self.assertTrue(closed["controller"].startswith("fast:"), closed)
+        with open(os.path.join(self.tmp, "cmp", "report.md")) as f:
+            self.assertIn("controller `fast:", f.read())
+
     def test_a_tcp_offset_out_of_range_is_refused_in_mm(self):
         r = self.compare("--tcp-offset", "1000")
         self.assertEqual(r.returncode, 2, r.stderr)
