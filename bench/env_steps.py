@@ -7,6 +7,7 @@ reset cache off (every reset simulates the approach) and on, interleaved in one 
 Prints a table of steps per CPU-second (median over rounds) and the ratio on/off. A benchmark:
 figures, never pass/fail. CPU seconds of this process, so other load does not count.
 """
+
 import argparse
 import statistics
 import time
@@ -55,18 +56,24 @@ def main():
             for cache in (False, True):
                 rate, resets = run(policy, cache, args.steps, seed=100 + r)
                 rows.setdefault((policy, cache), []).append((rate, resets))
-    print("| policy | reset cache | env steps per CPU-second (median of %d) | resets per run |"
-          % args.rounds)
+    print(
+        "| policy | reset cache | env steps per CPU-second (median of %d) | resets per run |"
+        % args.rounds
+    )
     print("| --- | --- | --- | --- |")
     for (policy, cache), v in rows.items():
-        print(f"| {policy} | {'on' if cache else 'off'} | "
-              f"{statistics.median(x[0] for x in v):.0f} | {statistics.median(x[1] for x in v):.0f} |")
+        print(
+            f"| {policy} | {'on' if cache else 'off'} | "
+            f"{statistics.median(x[0] for x in v):.0f} | {statistics.median(x[1] for x in v):.0f} |"
+        )
     for policy in ("published law", "random policy"):
         on = [x[0] for x in rows[(policy, True)]]
         off = [x[0] for x in rows[(policy, False)]]
         ratios = [a / b for a, b in zip(on, off)]
-        print(f"{policy}: on/off {statistics.median(ratios):.2f} "
-              f"(min {min(ratios):.2f}, max {max(ratios):.2f}, {len(ratios)} pairs)")
+        print(
+            f"{policy}: on/off {statistics.median(ratios):.2f} "
+            f"(min {min(ratios):.2f}, max {max(ratios):.2f}, {len(ratios)} pairs)"
+        )
 
 
 if __name__ == "__main__":

@@ -10,6 +10,7 @@ resumes if interrupted; the table goes to OUT/ablation.csv and OUT/ablation.md.
 
   tools/fidelity_ablation.py --out out/ablation --seeds 3
 """
+
 import argparse
 import csv
 import json
@@ -29,8 +30,13 @@ MECHANISMS = {
     "tare_offset": ["offset_spread_pa"],
 }
 # The published outcomes beside the map (PublishedOutcomeCells in studies/success_map_fit.cc).
-OUTCOME_CELLS = [(2.5, 1.0, 70, "3"), (2.5, 2.0, 100, "3"), (7.5, 2.0, 100, "3"),
-                 (2.5, 0.5, 100, "<=1"), (7.5, 0.5, 100, "<=1")]
+OUTCOME_CELLS = [
+    (2.5, 1.0, 70, "3"),
+    (2.5, 2.0, 100, "3"),
+    (7.5, 2.0, 100, "3"),
+    (2.5, 0.5, 100, "<=1"),
+    (7.5, 0.5, 100, "<=1"),
+]
 
 
 def configurations():
@@ -46,8 +52,22 @@ def configurations():
 def command(ssc, map_path, out, seeds, on, threads):
     off = [key for name, keys in MECHANISMS.items() if name not in on for key in keys]
     effects = ",".join(f"{key}=0" for key in off) or "default"
-    return [ssc, "validate", "--map", map_path, "--seeds", str(seeds), "--threads", str(threads),
-            "--effects", effects, "--out", out, "--no-plot", "--no-progress"]
+    return [
+        ssc,
+        "validate",
+        "--map",
+        map_path,
+        "--seeds",
+        str(seeds),
+        "--threads",
+        str(threads),
+        "--effects",
+        effects,
+        "--out",
+        out,
+        "--no-plot",
+        "--no-progress",
+    ]
 
 
 def main():
@@ -58,8 +78,11 @@ def main():
     ap.add_argument("--ssc", default=os.path.join(ROOT, "build", "bin", "ssc"))
     ap.add_argument("--map", default=os.path.join(ROOT, "data", "published", "success_map_dl5.csv"))
     ap.add_argument("--only", default="", help="comma-separated configuration names to run")
-    ap.add_argument("--rerun", action="store_true",
-                    help="run configurations again even when OUT/<name>/validate.json exists")
+    ap.add_argument(
+        "--rerun",
+        action="store_true",
+        help="run configurations again even when OUT/<name>/validate.json exists",
+    )
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     map_path = os.path.join(args.out, "training_cells.csv")
@@ -83,19 +106,34 @@ def main():
             if run.returncode != 0:
                 sys.exit(f"{name}: ssc validate failed ({run.returncode}): {run.stderr.strip()}")
         rows.append(score(name, on, out))
-    fields = ["config", "mechanisms_on", "map_class_match", "map_opposite", "map_expected_agreement",
-              "outcomes_matched", "failure_I", "failure_II", "other_failures", "wall_s"]
+    fields = [
+        "config",
+        "mechanisms_on",
+        "map_class_match",
+        "map_opposite",
+        "map_expected_agreement",
+        "outcomes_matched",
+        "failure_I",
+        "failure_II",
+        "other_failures",
+        "wall_s",
+    ]
     with open(os.path.join(args.out, "ablation.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=fields)
         w.writeheader()
         w.writerows(rows)
     with open(os.path.join(args.out, "ablation.md"), "w") as f:
-        f.write("| configuration | class match (45) | opposite | expected agreement | "
-                "published outcomes (5) | failure I | failure II |\n|---|---|---|---|---|---|---|\n")
+        f.write(
+            "| configuration | class match (45) | opposite | expected agreement | "
+            "published outcomes (5) | failure I | failure II |\n|---|---|---|---|---|---|---|\n"
+        )
         for r in rows:
-            f.write(f"| {r['config']} | {r['map_class_match']}/45 | {r['map_opposite']} | "
-                    f"{r['map_expected_agreement']:.3f} | {r['outcomes_matched']}/{len(OUTCOME_CELLS)} | "
-                    f"{r['failure_I']} | {r['failure_II']} |\n")
+            f.write(
+                f"| {r['config']} | {r['map_class_match']}/45 | {r['map_opposite']} | "
+                f"{r['map_expected_agreement']:.3f} | "
+                f"{r['outcomes_matched']}/{len(OUTCOME_CELLS)} | "
+                f"{r['failure_I']} | {r['failure_II']} |\n"
+            )
     print(open(os.path.join(args.out, "ablation.md")).read())
 
 
@@ -106,7 +144,10 @@ def score(name, on, out):
     with open(os.path.join(out, "validate.json")) as f:
         wall = json.load(f)["wall_s"]
     outcome_keys = {(s, b, p) for s, b, p, _ in OUTCOME_CELLS}
-    is_outcome = lambda c: (float(c["step_mm"]), float(c["beta"]), float(c["pref_pa"])) in outcome_keys
+
+    def is_outcome(c):
+        return (float(c["step_mm"]), float(c["beta"]), float(c["pref_pa"])) in outcome_keys
+
     grid = [c for c in cells if not is_outcome(c)]
     extra = [c for c in cells if is_outcome(c)]
     match = sum(c["published"] == c["twin_class"] for c in grid)

@@ -13,6 +13,7 @@ then each cell as step/beta/P_ref:published>twin successes and main failure mode
       r1_tilt0.3="--effects slip_mm=1,tilt_decades=0.3" \
       f99_tilt0.1="--period 0.25 --smoothing 0.056 --effects slip_mm=1,tilt_decades=0.1"
 """
+
 import argparse
 import csv
 import os
@@ -24,12 +25,25 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 # (step_mm, beta, P_ref Pa, published class); the first 14 are rows of data/published/.
 CELLS = [
-    (5.0, 0.5, 40, "<=1"), (5.0, 0.5, 100, "<=1"), (5.0, 0.5, 250, "<=1"),
-    (5.0, 1.0, 70, "<=1"), (5.0, 1.0, 100, "<=1"), (5.0, 1.0, 200, "2"),
-    (5.0, 1.5, 70, "3"), (5.0, 1.5, 100, "3"), (5.0, 2.0, 70, "3"), (5.0, 2.0, 150, "3"),
-    (5.0, 2.0, 250, "<=1"), (5.0, 3.0, 100, "3"), (5.0, 3.0, 200, "<=1"), (5.0, 4.0, 100, "<=1"),
-    (2.5, 1.0, 70, "3"), (2.5, 2.0, 100, "3"), (2.5, 0.5, 100, "<=1"),
-    (7.5, 2.0, 100, "3"), (7.5, 0.5, 100, "<=1"),
+    (5.0, 0.5, 40, "<=1"),
+    (5.0, 0.5, 100, "<=1"),
+    (5.0, 0.5, 250, "<=1"),
+    (5.0, 1.0, 70, "<=1"),
+    (5.0, 1.0, 100, "<=1"),
+    (5.0, 1.0, 200, "2"),
+    (5.0, 1.5, 70, "3"),
+    (5.0, 1.5, 100, "3"),
+    (5.0, 2.0, 70, "3"),
+    (5.0, 2.0, 150, "3"),
+    (5.0, 2.0, 250, "<=1"),
+    (5.0, 3.0, 100, "3"),
+    (5.0, 3.0, 200, "<=1"),
+    (5.0, 4.0, 100, "<=1"),
+    (2.5, 1.0, 70, "3"),
+    (2.5, 2.0, 100, "3"),
+    (2.5, 0.5, 100, "<=1"),
+    (7.5, 2.0, 100, "3"),
+    (7.5, 0.5, 100, "<=1"),
 ]
 MODE = {"failure_I": "I", "failure_II": "II", "timeout": "T", "unstable": "U"}
 
@@ -45,14 +59,16 @@ def line(name, out):
     with open(os.path.join(out, "cells.csv")) as f:
         for r in csv.DictReader(f):
             hits += in_class(r["published"], int(r["successes"]), int(r["trials"]))
-            cells.append(f"{float(r['step_mm']):g}/{float(r['beta']):g}/{float(r['pref_pa']):g}:"
-                         f"{r['published']}>{r['successes']}{MODE.get(r['main_failure'], '')}")
+            cells.append(
+                f"{float(r['step_mm']):g}/{float(r['beta']):g}/{float(r['pref_pa']):g}:"
+                f"{r['published']}>{r['successes']}{MODE.get(r['main_failure'], '')}"
+            )
     return f"{name} in-class {hits}/{len(cells)} " + " ".join(cells)
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    ap.add_argument("configs", nargs="+", help="NAME=\"ssc validate options\"")
+    ap.add_argument("configs", nargs="+", help='NAME="ssc validate options"')
     ap.add_argument("--out", default="out/probe")
     ap.add_argument("--seeds", type=int, default=3)
     ap.add_argument("--threads", type=int, default=2)
@@ -66,13 +82,28 @@ def main():
     for spec in args.configs:
         name, sep, opts = spec.partition("=")
         if not sep or not name or "/" in name:
-            sys.exit(f"fidelity_probe.py: configuration '{spec}' must be NAME=\"options\" "
-                     "(NAME without '/')")
+            sys.exit(
+                f"fidelity_probe.py: configuration '{spec}' must be NAME=\"options\" "
+                "(NAME without '/')"
+            )
         out = os.path.join(args.out, name)
-        cmd = [args.ssc, "validate", "--map", map_path, "--seeds", str(args.seeds),
-               "--threads", str(args.threads), "--out", out, "--no-plot", "--no-progress"]
-        run = subprocess.run(cmd + shlex.split(opts), stdout=subprocess.DEVNULL,
-                             stderr=subprocess.PIPE, text=True)
+        cmd = [
+            args.ssc,
+            "validate",
+            "--map",
+            map_path,
+            "--seeds",
+            str(args.seeds),
+            "--threads",
+            str(args.threads),
+            "--out",
+            out,
+            "--no-plot",
+            "--no-progress",
+        ]
+        run = subprocess.run(
+            cmd + shlex.split(opts), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True
+        )
         if run.returncode != 0:
             sys.exit(f"{name}: ssc validate failed ({run.returncode}): {run.stderr.strip()}")
         print(line(name, out), flush=True)

@@ -14,6 +14,7 @@ Usage (from the repository, after a build):
   SSC_PLUGIN_LIB=build/lib/libssc_plugin.so .venv/bin/python tools/flex_edge_table.py \\
       --inside-mm 1.5,2.5,3.5 [--move-mm 4] [--set sectors=16 --set rings=4] [--option iterations=5]
 """
+
 import argparse
 import os
 import pathlib
@@ -27,13 +28,26 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--inside-mm", default="1.5,2.5,3.5",
-                   help="cup centre inside the edge, mm, comma-separated; each in [-5, 5.5]")
+    p.add_argument(
+        "--inside-mm",
+        default="1.5,2.5,3.5",
+        help="cup centre inside the edge, mm, comma-separated; each in [-5, 5.5]",
+    )
     p.add_argument("--move-mm", type=float, default=0.0, help="then move along the edge, mm")
-    p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
-                   help="a skirt parameter of tools/make_flex_tool.py (repeatable)")
-    p.add_argument("--option", action="append", default=[], metavar="KEY=VALUE",
-                   help="a MuJoCo <option> field, e.g. iterations=5 or solver=1 (repeatable)")
+    p.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="KEY=VALUE",
+        help="a skirt parameter of tools/make_flex_tool.py (repeatable)",
+    )
+    p.add_argument(
+        "--option",
+        action="append",
+        default=[],
+        metavar="KEY=VALUE",
+        help="a MuJoCo <option> field, e.g. iterations=5 or solver=1 (repeatable)",
+    )
     a = p.parse_args()
     try:
         insets = [float(v) for v in a.inside_mm.split(",")]
@@ -81,9 +95,11 @@ def main():
                 samples.append(rig.pressures())
             pa = np.mean(samples, axis=0)
             dx, dy = (pa[0] + pa[3]) - (pa[1] + pa[2]), (pa[2] + pa[3]) - (pa[0] + pa[1])
-            line = (f"{inside:.2f} mm inside: P-bar {pa.mean():.0f} Pa, |dP| "
-                    f"{np.hypot(dx, dy) / 2:.0f} Pa; the lip plane "
-                    f"{1e3 * (rig_module.TOOL_Z_M - rig.d.qpos[2]):.2f} mm below the top face")
+            line = (
+                f"{inside:.2f} mm inside: P-bar {pa.mean():.0f} Pa, |dP| "
+                f"{np.hypot(dx, dy) / 2:.0f} Pa; the lip plane "
+                f"{1e3 * (rig_module.TOOL_Z_M - rig.d.qpos[2]):.2f} mm below the top face"
+            )
             if a.move_mm > 0:
                 steps = int(round(a.move_mm * 1e-3 / 0.02 / rig.m.opt.timestep))
                 hold = int(round(0.1 / rig.m.opt.timestep))
@@ -93,9 +109,11 @@ def main():
                     mujoco.mj_step(rig.m, rig.d)
                 mujoco.mj_step(rig.m, rig.d, hold)
                 per_step = (time.process_time() - cpu) / (steps + hold)
-                line += (f"; moved {a.move_mm:g} mm: chambers "
-                         f"{np.round(rig.pressures()).astype(int).tolist()} Pa, "
-                         f"{per_step * 1e6:.0f} us CPU per step")
+                line += (
+                    f"; moved {a.move_mm:g} mm: chambers "
+                    f"{np.round(rig.pressures()).astype(int).tolist()} Pa, "
+                    f"{per_step * 1e6:.0f} us CPU per step"
+                )
             print(line, flush=True)
     finally:
         if variant:

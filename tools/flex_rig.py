@@ -1,5 +1,6 @@
 """The flex-skirt rig of tests/plugin/flex_lip_test.py for the tools that script it
 (corner_push.py, flex_solve_check.py): the plugin loaded into MuJoCo and the rig's module."""
+
 import os
 import pathlib
 import sys

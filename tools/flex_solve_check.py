@@ -11,13 +11,17 @@ Usage (from the repository, after a build):
   SSC_PLUGIN_LIB=build/lib/libssc_plugin.so .venv/bin/python tools/flex_solve_check.py \\
       --iterations 10,12,15,20,100
 """
+
 import argparse
 
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--iterations", default="10,12,20,100",
-                   help="caps to run, comma-separated; the last is the reference")
+    p.add_argument(
+        "--iterations",
+        default="10,12,20,100",
+        help="caps to run, comma-separated; the last is the reference",
+    )
     a = p.parse_args()
     try:
         caps = [int(v) for v in a.iterations.split(",")]
@@ -58,12 +62,15 @@ def main():
     reference = runs[-1][2]
     for cap, s, qpos, p_pa in runs:
         solver = np.array(s["solver"])
-        print(f"iterations {cap:4d}: solve stopped short on {s['short']} of {s['n']} steps "
-              f"(fewest constraint rows then {min(s['rows']) if s['rows'] else '-'}); constraint "
-              f"solver {solver.mean():.2f} iterations a step, at the cap on "
-              f"{np.mean(solver >= cap):.1%}; end state from iterations {caps[-1]}: "
-              f"{1e6 * np.abs(qpos - reference).max():.4g} um, chambers "
-              f"{np.round(p_pa).astype(int).tolist()} Pa", flush=True)
+        print(
+            f"iterations {cap:4d}: solve stopped short on {s['short']} of {s['n']} steps "
+            f"(fewest constraint rows then {min(s['rows']) if s['rows'] else '-'}); constraint "
+            f"solver {solver.mean():.2f} iterations a step, at the cap on "
+            f"{np.mean(solver >= cap):.1%}; end state from iterations {caps[-1]}: "
+            f"{1e6 * np.abs(qpos - reference).max():.4g} um, chambers "
+            f"{np.round(p_pa).astype(int).tolist()} Pa",
+            flush=True,
+        )
 
 
 if __name__ == "__main__":

@@ -15,6 +15,7 @@ objects`, one per seed): per stretch along the edge, the mean fillet radius, mea
 each seed's control iterations there, as mean +- sd over the seeds; the last row is each seed's
 last 10 mm before its trial ended.
 """
+
 import argparse
 import csv
 import statistics
@@ -28,8 +29,10 @@ def read_rows(paths):
             reader = csv.DictReader(f)
             need = {"object", "seed", "outcome", "end_arc_mm", "end_swept_deg"}
             if not need <= set(reader.fieldnames or []):
-                sys.exit(f"{path}: not an objects.csv of ssc objects (needs columns "
-                         f"{', '.join(sorted(need))})")
+                sys.exit(
+                    f"{path}: not an objects.csv of ssc objects (needs columns "
+                    f"{', '.join(sorted(need))})"
+                )
             for r in reader:
                 rows.setdefault(r["object"], []).append(r)
     for trials in rows.values():
@@ -59,12 +62,18 @@ def ends(trials):
     v = [x for x, _ in values]
     text = f"{v[0]:.1f} {unit}"
     if len(v) > 1:
-        text = (f"{statistics.mean(v):.1f} ± {statistics.stdev(v):.1f} {unit} ("
-                + ", ".join(f"{x:.1f}" for x in v) + ")")
+        text = (
+            f"{statistics.mean(v):.1f} ± {statistics.stdev(v):.1f} {unit} ("
+            + ", ".join(f"{x:.1f}" for x in v)
+            + ")"
+        )
     radii = [float(r.get("end_fillet_radius_mm", -1)) for r in trials]
     if all(x >= 0 for x in radii):
-        text += (f"; radius {statistics.mean(radii):.2f} ± {statistics.stdev(radii):.2f} mm"
-                 if len(radii) > 1 else f"; radius {radii[0]:.2f} mm")
+        text += (
+            f"; radius {statistics.mean(radii):.2f} ± {statistics.stdev(radii):.2f} mm"
+            if len(radii) > 1
+            else f"; radius {radii[0]:.2f} mm"
+        )
     return text
 
 
@@ -84,44 +93,59 @@ def fillet_profile_table(paths):
             reader = csv.DictReader(f)
             need = {"x_mm", "fillet_radius_mm", "pbar_pa", "diff_pa"}
             if not need <= set(reader.fieldnames or []):
-                sys.exit(f"{path}: not a fillet_profile.csv of ssc objects (needs columns "
-                         f"{', '.join(sorted(need))})")
+                sys.exit(
+                    f"{path}: not a fillet_profile.csv of ssc objects (needs columns "
+                    f"{', '.join(sorted(need))})"
+                )
             rows = [{k: float(r[k]) for k in need} for r in reader]
         if not rows:
             sys.exit(f"{path}: no control iterations")
         seeds.append(rows)
-    print(f"| stretch along the edge (mm) | seeds | fillet radius (mm) | P̄ (Pa) | \\|ΔP\\| (Pa) |")
+    print("| stretch along the edge (mm) | seeds | fillet radius (mm) | P̄ (Pa) | \\|ΔP\\| (Pa) |")
     print("| --- | --- | --- | --- | --- |")
-    stretches = [(f"{a}–{b}", lambda r, a=a, b=b: a <= r["x_mm"] < b)
-                 for a, b in FILLET_STRETCHES_MM]
+    stretches = [
+        (f"{a}–{b}", lambda r, a=a, b=b: a <= r["x_mm"] < b) for a, b in FILLET_STRETCHES_MM
+    ]
     for label, inside in stretches + [("the last 10 before the end", None)]:
         per_seed = []
         for rows in seeds:
             end = max(r["x_mm"] for r in rows)
             sel = [r for r in rows if (inside(r) if inside else r["x_mm"] >= end - 10)]
             if sel:
-                per_seed.append({k: statistics.mean(r[k] for r in sel)
-                                 for k in ("fillet_radius_mm", "pbar_pa", "diff_pa")})
+                per_seed.append(
+                    {
+                        k: statistics.mean(r[k] for r in sel)
+                        for k in ("fillet_radius_mm", "pbar_pa", "diff_pa")
+                    }
+                )
         if not per_seed:
             continue
-        print(f"| {label} | {len(per_seed)} | "
-              f"{mean_sd([x['fillet_radius_mm'] for x in per_seed], 1)} | "
-              f"{mean_sd([x['pbar_pa'] for x in per_seed], 0)} | "
-              f"{mean_sd([x['diff_pa'] for x in per_seed], 0)} |")
+        print(
+            f"| {label} | {len(per_seed)} | "
+            f"{mean_sd([x['fillet_radius_mm'] for x in per_seed], 1)} | "
+            f"{mean_sd([x['pbar_pa'] for x in per_seed], 0)} | "
+            f"{mean_sd([x['diff_pa'] for x in per_seed], 0)} |"
+        )
     return 0
 
 
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("csv", nargs="+",
-                        help="objects.csv files (ssc objects), or with --fillet-profile "
-                             "fillet_profile.csv files")
-    parser.add_argument("--fillet-profile", action="store_true",
-                        help="the fillet's along-edge profile over seeds instead")
+    parser.add_argument(
+        "csv",
+        nargs="+",
+        help="objects.csv files (ssc objects), or with --fillet-profile fillet_profile.csv files",
+    )
+    parser.add_argument(
+        "--fillet-profile",
+        action="store_true",
+        help="the fillet's along-edge profile over seeds instead",
+    )
     parser.add_argument("--against", help="another tier's objects.csv, shown beside")
     parser.add_argument("--label", default="flex", help="name of the first tier's columns")
-    parser.add_argument("--against-label", default="segment (gantry)",
-                        help="name of the --against tier's columns")
+    parser.add_argument(
+        "--against-label", default="segment (gantry)", help="name of the --against tier's columns"
+    )
     args = parser.parse_args(argv)
     if args.fillet_profile:
         return fillet_profile_table(args.csv)

@@ -4,6 +4,7 @@
 usage: plot_objects.py objects.csv paths_dir out.png
        (written by `ssc objects`; also writes out_fillet.png when fillet_profile.csv exists)
 """
+
 import csv
 import math
 import os
@@ -16,9 +17,15 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 OPENING_MM, BODY_MM = 11.0, 23.0
-COLOURS = {"success": "tab:green", "failure_I": "tab:orange", "failure_II": "tab:red",
-           "timeout": "tab:purple", "unstable": "black", "lost_edge": "tab:brown",
-           "stalled": "tab:pink"}
+COLOURS = {
+    "success": "tab:green",
+    "failure_I": "tab:orange",
+    "failure_II": "tab:red",
+    "timeout": "tab:purple",
+    "unstable": "black",
+    "lost_edge": "tab:brown",
+    "stalled": "tab:pink",
+}
 
 
 def read_xy(path):
@@ -57,8 +64,9 @@ def main():
                 colour = COLOURS.get(r["outcome"], "blue")
                 ax.plot(px, py, "-", color=colour, lw=1)
                 for d, ls in ((OPENING_MM, "-"), (BODY_MM, "--")):
-                    ax.add_patch(plt.Circle((px[0], py[0]), d / 2, fill=False, ls=ls, lw=0.6,
-                                            color=colour))
+                    ax.add_patch(
+                        plt.Circle((px[0], py[0]), d / 2, fill=False, ls=ls, lw=0.6, color=colour)
+                    )
                 xs, ys = cx + px, cy + py
             else:
                 xs, ys = cx, cy
@@ -78,9 +86,12 @@ def main():
         ax.set_title(f"{name}: {r['outcome']}", fontsize=8)
     # The title wrapped to the figure's width (one object makes a narrow figure), with room
     # for its lines above the first row.
-    title = textwrap.wrap("cup-centre paths over the test objects (P_ref 100 Pa, beta 2, dL 0.5 "
-                          "mm); axes: world x, y (mm); circles: 11 mm opening and 23 mm body at "
-                          "the start", width=max(20, int(fig.get_figwidth() * 72 / 10 / 0.6)))
+    title = textwrap.wrap(
+        "cup-centre paths over the test objects (P_ref 100 Pa, beta 2, dL 0.5 "
+        "mm); axes: world x, y (mm); circles: 11 mm opening and 23 mm body at "
+        "the start",
+        width=max(20, int(fig.get_figwidth() * 72 / 10 / 0.6)),
+    )
     fig.suptitle("\n".join(title), fontsize=10)
     fig.tight_layout(rect=(0, 0, 1, 1 - (0.2 * len(title) + 0.1) / fig.get_figheight()))
     fig.savefig(out, dpi=90)

@@ -6,8 +6,8 @@ usage: plot_probe.py edge.csv disk.csv out.png [DEPTHS]
 DEPTHS: the published depths to mark, "mm:Pa,mm:Pa,..." (`ssc probe` passes them from
 calibration/published_targets.h); none marked when absent.
 """
+
 import csv
-import math
 import sys
 
 import matplotlib
@@ -39,10 +39,12 @@ def main():
     a = ax[0]
     off = edge["offset_mm"]
     floor = 0.1
-    a.semilogy(off, [max(v, floor) for v in edge["static_pbar_pa"]], "k-", lw=2,
-               label="mean P (noiseless)")
-    a.semilogy(off, [max(v, floor) for v in edge["pbar_pa"]], "k.", ms=4,
-               label="mean P (sensor output)")
+    a.semilogy(
+        off, [max(v, floor) for v in edge["static_pbar_pa"]], "k-", lw=2, label="mean P (noiseless)"
+    )
+    a.semilogy(
+        off, [max(v, floor) for v in edge["pbar_pa"]], "k.", ms=4, label="mean P (sensor output)"
+    )
     # Chambers that read the same (a straight edge is symmetric: 1 = 4 and 2 = 3 when the edge
     # runs along the tool's x axis) share one line and one legend entry, so none hides another.
     shown = []
@@ -55,13 +57,26 @@ def main():
             shown.append([c])
     for group, col in zip(shown, ["C0", "C1", "C2", "C3"]):
         label = ("chamber " if len(group) == 1 else "chambers ") + " = ".join(map(str, group))
-        a.semilogy(off, [max(v, floor) for v in edge[f"static_p{group[0]}_pa"]], "-", color=col,
-                   lw=1, label=label)
-    targets = [tuple(float(v) for v in item.split(":"))
-               for item in (sys.argv[4].split(",") if len(sys.argv) == 5 else [])]
+        a.semilogy(
+            off,
+            [max(v, floor) for v in edge[f"static_p{group[0]}_pa"]],
+            "-",
+            color=col,
+            lw=1,
+            label=label,
+        )
+    targets = [
+        tuple(float(v) for v in item.split(":"))
+        for item in (sys.argv[4].split(",") if len(sys.argv) == 5 else [])
+    ]
     if targets:
-        a.errorbar([t[0] for t in targets], [t[1] for t in targets], xerr=0.3, fmt="rs",
-                   label="published disk results (+-0.3 mm)")
+        a.errorbar(
+            [t[0] for t in targets],
+            [t[1] for t in targets],
+            xerr=0.3,
+            fmt="rs",
+            label="published disk results (+-0.3 mm)",
+        )
     a.axhline(10000, color="r", ls=":", lw=1)
     a.text(off[0], 11000, "grasp 10 kPa", color="r", fontsize=8, va="bottom")
     a.set_xlabel("cup centre inside the edge (mm)")

@@ -4,6 +4,7 @@
 usage: plot_trajectories.py out.png trial.csv [trial.csv ...]
        (trial.csv files written by `ssc trial`; the disk: radius 35 mm centred at (650, 0) mm)
 """
+
 import csv
 import json
 import math
@@ -40,8 +41,9 @@ def trial_label(path):
         with open(summary) as f:
             s = json.load(f)
         p = s["parameters"]
-        label = (f"P_ref {p['pref_pa']:g} Pa, β {p['beta']:g}, ΔL {p['step_mm']:g} mm, "
-                 f"seed {s['seed']}")
+        label = (
+            f"P_ref {p['pref_pa']:g} Pa, β {p['beta']:g}, ΔL {p['step_mm']:g} mm, seed {s['seed']}"
+        )
         return label + (f": {s['outcome']}" if s.get("outcome") else "")
     except (OSError, ValueError, KeyError, TypeError):
         return os.path.basename(path)
@@ -53,18 +55,26 @@ def main():
     out, paths = sys.argv[1], sys.argv[2:]
     fig, ax = plt.subplots(figsize=(6, 6))
     t = [i * 2 * math.pi / 360 for i in range(361)]
-    ax.fill([RADIUS_MM * math.cos(a) for a in t], [RADIUS_MM * math.sin(a) for a in t],
-            color="0.85", label="disk (R = 35 mm)")
+    ax.fill(
+        [RADIUS_MM * math.cos(a) for a in t],
+        [RADIUS_MM * math.sin(a) for a in t],
+        color="0.85",
+        label="disk (R = 35 mm)",
+    )
     for i, path in enumerate(paths):
         xs, ys, _ = read(path)
         label = trial_label(path)
         ax.plot(xs, ys, "-", lw=1.2, color=f"C{i % 10}", label=label)
         ax.plot(xs[0], ys[0], "o", color=f"C{i % 10}")
         # The cup to scale at the start: body and opening.
-        ax.add_patch(plt.Circle((xs[0], ys[0]), CUP_BODY_MM / 2, fill=False, ls="--",
-                                color=f"C{i % 10}", lw=0.8))
-        ax.add_patch(plt.Circle((xs[0], ys[0]), OPENING_MM / 2, fill=False,
-                                color=f"C{i % 10}", lw=0.8))
+        ax.add_patch(
+            plt.Circle(
+                (xs[0], ys[0]), CUP_BODY_MM / 2, fill=False, ls="--", color=f"C{i % 10}", lw=0.8
+            )
+        )
+        ax.add_patch(
+            plt.Circle((xs[0], ys[0]), OPENING_MM / 2, fill=False, color=f"C{i % 10}", lw=0.8)
+        )
     ax.set_aspect("equal")
     ax.set_xlim(-50, 50)
     ax.set_ylim(-50, 50)

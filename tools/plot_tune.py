@@ -6,6 +6,7 @@ target.
 
 usage: plot_tune.py tune.csv out.png min_success
 """
+
 import csv
 import sys
 
@@ -26,28 +27,56 @@ def main():
     rows = [r for r in rows if r not in refused]
     search = [r for r in rows if r["label"].startswith("eval ")]
     refs = [r for r in rows if not r["label"].startswith("eval ")]
-    num = lambda r, k: float(r[k])
+
+    def num(r, k):
+        return float(r[k])
+
     fig, ax = plt.subplots(figsize=(7.5, 5))
     ax.axhline(100 * target, color="0.6", ls=":", lw=1, label=f"target {100 * target:.0f} %")
     xs = [num(r, "speed_mm_s") for r in search]
     ys = [100 * num(r, "success_rate") for r in search]
-    yerr = [[y - 100 * num(r, "success_lo") for y, r in zip(ys, search)],
-            [100 * num(r, "success_hi") - y for y, r in zip(ys, search)]]
+    yerr = [
+        [y - 100 * num(r, "success_lo") for y, r in zip(ys, search)],
+        [100 * num(r, "success_hi") - y for y, r in zip(ys, search)],
+    ]
     xerr = [num(r, "speed_ci_mm_s") for r in search]
-    ax.errorbar(xs, ys, yerr=yerr, xerr=xerr, fmt="o", color="tab:blue", ms=4, lw=0.6,
-                alpha=0.7, label="search evaluations")
-    front = sorted(((num(r, "speed_mm_s"), 100 * num(r, "success_rate")) for r in rows
-                    if r["pareto"] == "1"))
+    ax.errorbar(
+        xs,
+        ys,
+        yerr=yerr,
+        xerr=xerr,
+        fmt="o",
+        color="tab:blue",
+        ms=4,
+        lw=0.6,
+        alpha=0.7,
+        label="search evaluations",
+    )
+    front = sorted(
+        ((num(r, "speed_mm_s"), 100 * num(r, "success_rate")) for r in rows if r["pareto"] == "1")
+    )
     if front:
-        ax.plot([p[0] for p in front], [p[1] for p in front], "-", color="tab:blue", lw=1.5,
-                label="Pareto front (all points)")
+        ax.plot(
+            [p[0] for p in front],
+            [p[1] for p in front],
+            "-",
+            color="tab:blue",
+            lw=1.5,
+            label="Pareto front (all points)",
+        )
     markers = ["s", "D", "^", "v", "P", "X"]
     for k, r in enumerate(refs):
         x, y = num(r, "speed_mm_s"), 100 * num(r, "success_rate")
-        ax.errorbar([x], [y], yerr=[[y - 100 * num(r, "success_lo")],
-                                    [100 * num(r, "success_hi") - y]],
-                    xerr=[num(r, "speed_ci_mm_s")], fmt=markers[k % len(markers)], ms=8,
-                    color=f"C{(k + 1) % 10}", label=r["label"])
+        ax.errorbar(
+            [x],
+            [y],
+            yerr=[[y - 100 * num(r, "success_lo")], [100 * num(r, "success_hi") - y]],
+            xerr=[num(r, "speed_ci_mm_s")],
+            fmt=markers[k % len(markers)],
+            ms=8,
+            color=f"C{(k + 1) % 10}",
+            label=r["label"],
+        )
     ax.set_xlabel("mean follow speed of the successful trials, mm/s (95 % t interval)")
     ax.set_ylabel("success, % (95 % Wilson interval)")
     ax.set_ylim(-5, 115)

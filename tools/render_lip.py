@@ -13,6 +13,7 @@ Usage (docs/objects.md regenerates its figures with these):
   MUJOCO_GL=egl PYTHONPATH=build/python_pkg .venv/bin/python tools/render_lip.py \\
       --object corner_a270 --at-arc-mm 58 --azimuth 225 --out docs/figures/lip_corner_a270.png
 """
+
 import argparse
 import os
 import sys
@@ -23,8 +24,12 @@ import mujoco
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--object", required=True, help="a test object (ssc objects --help)")
-    p.add_argument("--at-arc-mm", type=float, required=True,
-                   help="stop when the tracked position first passes this, mm along the edge")
+    p.add_argument(
+        "--at-arc-mm",
+        type=float,
+        required=True,
+        help="stop when the tracked position first passes this, mm along the edge",
+    )
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--azimuth", type=float, default=200, help="camera azimuth, deg")
     p.add_argument("--elevation", type=float, default=-30, help="camera elevation, deg")
@@ -41,8 +46,10 @@ def main():
     if not (0 < a.at_arc_mm < 1000):
         p.error("--at-arc-mm: in (0, 1000) mm")
     from ssc_twin import _core  # noqa: E402  (after argument checks: the import is slow)
-    trial = _core.SteppedTrial(scene="disk_benchmark_flex", object=a.object, seed=a.seed,
-                               step_mm=0.5)
+
+    trial = _core.SteppedTrial(
+        scene="disk_benchmark_flex", object=a.object, seed=a.seed, step_mm=0.5
+    )
     while trial.tracked_arc_m * 1e3 < a.at_arc_mm:
         if not trial.run_to_next_iteration():
             break
@@ -51,8 +58,9 @@ def main():
     # The rigid cup drawn translucent (the skirt stays opaque): every geom of the tool's bodies
     # but the lip's group 4.
     for g in range(m.ngeom):
-        if m.geom_group[g] in (1, 3) or "ssc_" in (mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_GEOM,
-                                                                     g) or ""):
+        if m.geom_group[g] in (1, 3) or "ssc_" in (
+            mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_GEOM, g) or ""
+        ):
             if m.geom_group[g] != 4:
                 m.geom_rgba[g, 3] = min(m.geom_rgba[g, 3], 0.15)
     m.vis.global_.offwidth = max(m.vis.global_.offwidth, width)
@@ -74,13 +82,17 @@ def main():
     renderer.update_scene(d, cam, opt)
     image = renderer.render()
     from PIL import Image  # matplotlib's dependency, in the project's requirements
+
     os.makedirs(os.path.dirname(os.path.abspath(a.out)), exist_ok=True)
     Image.fromarray(image).save(a.out)
     tool = d.site_xpos[trial.tool_site]
-    print(f"{a.out}: {a.object} seed {a.seed}, t {trial.time:.2f} s, phase {trial.phase}, "
-          f"{trial.tracked_arc_m * 1e3:.1f} mm along the edge, cup at "
-          f"({(tool[0] - 0.65) * 1e3:.1f}, {tool[1] * 1e3:.1f}) mm from W, chambers "
-          + "/".join(f"{v:.0f}" for v in p_pa) + " Pa")
+    print(
+        f"{a.out}: {a.object} seed {a.seed}, t {trial.time:.2f} s, phase {trial.phase}, "
+        f"{trial.tracked_arc_m * 1e3:.1f} mm along the edge, cup at "
+        f"({(tool[0] - 0.65) * 1e3:.1f}, {tool[1] * 1e3:.1f}) mm from W, chambers "
+        + "/".join(f"{v:.0f}" for v in p_pa)
+        + " Pa"
+    )
 
 
 if __name__ == "__main__":

@@ -11,6 +11,7 @@ efficiency, and the bounds W/P and the longest trial.
 
 usage: scaling_estimate.py SWEEP.csv [--us-per-sim-s 21000] [--repeat-grid K] [--ranks 1,2,16,...]
 """
+
 import argparse
 import csv
 import heapq
@@ -20,11 +21,19 @@ import math
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("csv")
-    ap.add_argument("--us-per-sim-s", type=float, required=True,
-                    help="wall microseconds of one worker per simulated second")
+    ap.add_argument(
+        "--us-per-sim-s",
+        type=float,
+        required=True,
+        help="wall microseconds of one worker per simulated second",
+    )
     ap.add_argument("--ranks", default="1,2,16,32,64,128,256,512")
-    ap.add_argument("--repeat-grid", type=int, default=1,
-                    help="the grid K times over (K x the repeats), same trial-time distribution")
+    ap.add_argument(
+        "--repeat-grid",
+        type=int,
+        default=1,
+        help="the grid K times over (K x the repeats), same trial-time distribution",
+    )
     ap.add_argument("--startup-s", type=float, default=1.0)
     ap.add_argument("--latency-ms", type=float, default=1.0)
     ap.add_argument("--markdown", action="store_true")
@@ -55,10 +64,21 @@ def main():
         speedup = (work + a.startup_s) / makespan
         rows.append((p, makespan, speedup, speedup / p, work / p, longest))
     head = ["workers", "makespan s", "speed-up", "efficiency", "W/P s", "longest trial s"]
-    print(f"{len(trials)} trials, total work W = {work:.1f} s on one worker, longest {longest:.2f} s "
-          f"(W / longest = {work / longest:.0f}: no speed-up beyond that)")
-    fmt = lambda r: [str(r[0]), f"{r[1]:.1f}", f"{r[2]:.1f}", f"{100 * r[3]:.0f} %", f"{r[4]:.2f}",
-                     f"{r[5]:.2f}"]
+    print(
+        f"{len(trials)} trials, total work W = {work:.1f} s on one worker, longest {longest:.2f} s "
+        f"(W / longest = {work / longest:.0f}: no speed-up beyond that)"
+    )
+
+    def fmt(r):
+        return [
+            str(r[0]),
+            f"{r[1]:.1f}",
+            f"{r[2]:.1f}",
+            f"{100 * r[3]:.0f} %",
+            f"{r[4]:.2f}",
+            f"{r[5]:.2f}",
+        ]
+
     if a.markdown:
         print("| " + " | ".join(head) + " |")
         print("|" + " --- |" * len(head))

@@ -22,6 +22,7 @@ beta, step and seed, three ways:
     errors and the tare residual are off (step_error_relative=0, offset_spread_pa=0).
 Needs scipy (the lab's saver writes the .mat with it).
 """
+
 import argparse
 import json
 import os
@@ -63,19 +64,40 @@ def scene_args(scene):
 def sil_run(ssc, script, seed, step_m, scene, out, pause_cost):
     report = os.path.join(out, "report.json")
     cpu0, wall0 = child_cpu(), time.perf_counter()
-    p = subprocess.run([ssc, "sil", "--out", out] + scene_args(scene) + ["--seed", str(seed),
-                        "--pause-cost", str(pause_cost),
-                        "--set", "d_lat=%r" % step_m, "--report", report, script],
-                       cwd=out, capture_output=True, text=True)
+    p = subprocess.run(
+        [ssc, "sil", "--out", out]
+        + scene_args(scene)
+        + [
+            "--seed",
+            str(seed),
+            "--pause-cost",
+            str(pause_cost),
+            "--set",
+            "d_lat=%r" % step_m,
+            "--report",
+            report,
+            script,
+        ],
+        cwd=out,
+        capture_output=True,
+        text=True,
+    )
     cpu, wall = child_cpu() - cpu0, time.perf_counter() - wall0
     with open(report) as f:
         summary = json.load(f)
-    row = {"seed": seed, "cpu_s": cpu, "wall_s": wall, "sim_s": summary["sim_time_s"],
-           "status": summary["status"], "problem": summary["problem"]}
+    row = {
+        "seed": seed,
+        "cpu_s": cpu,
+        "wall_s": wall,
+        "sim_s": summary["sim_time_s"],
+        "status": summary["status"],
+        "problem": summary["problem"],
+    }
     off_edge = "went off edge" in p.stdout
     grasp = "Suction engage succeeded" in p.stdout
     if summary["mat_files"]:
         from scipy.io import loadmat
+
         m = loadmat(summary["mat_files"][0])
         h = m["edgeFollowing_history"]
         xy = np.array([[float(np.ravel(r[1])[0]), float(np.ravel(r[2])[0])] for r in h])
@@ -83,19 +105,45 @@ def sil_run(ssc, script, seed, step_m, scene, out, pause_cost):
         row["iterations"] = len(h)
         row["dr_mm"] = (r.mean() - DISK_RADIUS_M) * 1e3
         row["success"] = int(np.ravel(m["success"])[0])
-    row["outcome"] = ("success" if row.get("success") else "failure I (off the edge)" if off_edge
-                      else "failure II (grasp)" if grasp else "incomplete")
+    row["outcome"] = (
+        "success"
+        if row.get("success")
+        else "failure I (off the edge)"
+        if off_edge
+        else "failure II (grasp)"
+        if grasp
+        else "incomplete"
+    )
     return row
 
 
 def trial_run(ssc, seed, step_mm, scene, out, extra=()):
-    p = subprocess.run([ssc, "trial"] + scene_args(scene) + ["--pref", "100", "--beta", "2",
-                        "--step", str(step_mm), "--seed", str(seed), "--no-plot", "--out", out]
-                       + list(extra), capture_output=True, text=True)
+    p = subprocess.run(
+        [ssc, "trial"]
+        + scene_args(scene)
+        + [
+            "--pref",
+            "100",
+            "--beta",
+            "2",
+            "--step",
+            str(step_mm),
+            "--seed",
+            str(seed),
+            "--no-plot",
+            "--out",
+            out,
+        ]
+        + list(extra),
+        capture_output=True,
+        text=True,
+    )
     outcome = re.search(r"outcome: (\S+)", p.stdout)
     dr = re.search(r"dr = (-?[\d.]+) mm", p.stdout)
-    return {"outcome": outcome.group(1) if outcome else "?",
-            "dr_mm": float(dr.group(1)) if dr else float("nan")}
+    return {
+        "outcome": outcome.group(1) if outcome else "?",
+        "dr_mm": float(dr.group(1)) if dr else float("nan"),
+    }
 
 
 def main():
@@ -103,11 +151,18 @@ def main():
     ap.add_argument("--lab-repo", required=True, help="a checkout of the lab's edg_suction_cup")
     ap.add_argument("--seeds", default="1-5", type=seeds)
     ap.add_argument("--step-mm", type=float, default=7.5)
-    ap.add_argument("--scene", default=None,
-                    help="scene of both runs (default: the rig's default scene)")
-    ap.add_argument("--pause-cost", type=float, default=None,
-                    help="ssc sil's --pause-cost (default: ssc sil's own)")
-    ap.add_argument("--ssc", default=os.path.join(os.path.dirname(__file__), "..", "build", "bin", "ssc"))
+    ap.add_argument(
+        "--scene", default=None, help="scene of both runs (default: the rig's default scene)"
+    )
+    ap.add_argument(
+        "--pause-cost",
+        type=float,
+        default=None,
+        help="ssc sil's --pause-cost (default: ssc sil's own)",
+    )
+    ap.add_argument(
+        "--ssc", default=os.path.join(os.path.dirname(__file__), "..", "build", "bin", "ssc")
+    )
     a = ap.parse_args()
     script = os.path.join(os.path.abspath(a.lab_repo), SCRIPT)
     ssc = os.path.abspath(a.ssc)
@@ -116,13 +171,18 @@ def main():
         a.pause_cost = float(re.search(r"default ([\d.]+), measured", " ".join(h.split())).group(1))
     protocol = ["--start-offset", "31", "--approach-force", "1.15"]
     same_loop = protocol + [
-        "--period", "%.4f" % (LOOP_SLEEPS_S + a.pause_cost),
-        "--effects", "pose_delay_s=%.4f,step_error_relative=0,offset_spread_pa=0" % (
-            PRESSURE_TO_POSE_SLEEPS_S + a.pause_cost)]
+        "--period",
+        "%.4f" % (LOOP_SLEEPS_S + a.pause_cost),
+        "--effects",
+        "pose_delay_s=%.4f,step_error_relative=0,offset_spread_pa=0"
+        % (PRESSURE_TO_POSE_SLEEPS_S + a.pause_cost),
+    ]
     print("ssc sil --pause-cost %g; same loop: ssc trial %s" % (a.pause_cost, " ".join(same_loop)))
-    print("| seed | ssc sil: outcome | iterations | dr (mm) | simulated (s) | CPU (s) | wall (s) "
-          "| ssc trial, twin: outcome | dr (mm) | script's protocol: outcome | dr (mm) "
-          "| same loop: outcome | dr (mm) |")
+    print(
+        "| seed | ssc sil: outcome | iterations | dr (mm) | simulated (s) | CPU (s) | wall (s) "
+        "| ssc trial, twin: outcome | dr (mm) | script's protocol: outcome | dr (mm) "
+        "| same loop: outcome | dr (mm) |"
+    )
     print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     rows = []
     for seed in a.seeds:
@@ -132,11 +192,25 @@ def main():
             u = trial_run(ssc, seed, a.step_mm, a.scene, os.path.join(out, "t2"), protocol)
             v = trial_run(ssc, seed, a.step_mm, a.scene, os.path.join(out, "t3"), same_loop)
         rows.append((s, t, u, v))
-        print("| %d | %s | %s | %.2f | %.1f | %.1f | %.1f | %s | %.2f | %s | %.2f | %s | %.2f |" % (
-            seed, s["outcome"] if s["status"] == 0 else "error: " + s["problem"],
-            s.get("iterations", "-"), s.get("dr_mm", float("nan")), s["sim_s"], s["cpu_s"],
-            s["wall_s"], t["outcome"], t["dr_mm"], u["outcome"], u["dr_mm"], v["outcome"],
-            v["dr_mm"]), flush=True)
+        print(
+            "| %d | %s | %s | %.2f | %.1f | %.1f | %.1f | %s | %.2f | %s | %.2f | %s | %.2f |"
+            % (
+                seed,
+                s["outcome"] if s["status"] == 0 else "error: " + s["problem"],
+                s.get("iterations", "-"),
+                s.get("dr_mm", float("nan")),
+                s["sim_s"],
+                s["cpu_s"],
+                s["wall_s"],
+                t["outcome"],
+                t["dr_mm"],
+                u["outcome"],
+                u["dr_mm"],
+                v["outcome"],
+                v["dr_mm"],
+            ),
+            flush=True,
+        )
 
     def stat(values):
         values = [v for v in values if np.isfinite(v)]
@@ -144,13 +218,19 @@ def main():
             return "-"
         sd = np.std(values, ddof=1) if len(values) > 1 else 0.0
         return "%.2f +- %.2f mm (%d)" % (np.mean(values), sd, len(values))
-    print("\ndr over successful runs (mean +- SD, n): ssc sil %s; ssc trial twin %s; "
-          "script's protocol %s; same loop %s; ssc sil CPU per run %.1f-%.1f s" % (
-              stat([r[0].get("dr_mm", np.nan) for r in rows if r[0]["outcome"] == "success"]),
-              stat([r[1]["dr_mm"] for r in rows if r[1]["outcome"] == "success"]),
-              stat([r[2]["dr_mm"] for r in rows if r[2]["outcome"] == "success"]),
-              stat([r[3]["dr_mm"] for r in rows if r[3]["outcome"] == "success"]),
-              min(r[0]["cpu_s"] for r in rows), max(r[0]["cpu_s"] for r in rows)))
+
+    print(
+        "\ndr over successful runs (mean +- SD, n): ssc sil %s; ssc trial twin %s; "
+        "script's protocol %s; same loop %s; ssc sil CPU per run %.1f-%.1f s"
+        % (
+            stat([r[0].get("dr_mm", np.nan) for r in rows if r[0]["outcome"] == "success"]),
+            stat([r[1]["dr_mm"] for r in rows if r[1]["outcome"] == "success"]),
+            stat([r[2]["dr_mm"] for r in rows if r[2]["outcome"] == "success"]),
+            stat([r[3]["dr_mm"] for r in rows if r[3]["outcome"] == "success"]),
+            min(r[0]["cpu_s"] for r in rows),
+            max(r[0]["cpu_s"] for r in rows),
+        )
+    )
     return 0
 
 

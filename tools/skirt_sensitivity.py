@@ -18,6 +18,7 @@ Usage: tools/skirt_sensitivity.py [--ssc build/bin/ssc] [--out out/skirt_sensiti
 Writes OUT/sensitivity.md (a Markdown table) and OUT/<variant>/ (its runs). Variants run in a
 copy of the resources (SSC_RESOURCE_DIR) whose models/ssc_tool_flex.xml is the variant.
 """
+
 import argparse
 import csv
 import os
@@ -52,8 +53,12 @@ def resources(variant_dir, overrides):
     for f in (ROOT / "models").iterdir():
         (res / "models" / f.name).symlink_to(f)
     (res / "models" / "ssc_tool_flex.xml").unlink()
-    args = [sys.executable, str(ROOT / "tools" / "make_flex_tool.py"), "--out",
-            str(res / "models" / "ssc_tool_flex.xml")]
+    args = [
+        sys.executable,
+        str(ROOT / "tools" / "make_flex_tool.py"),
+        "--out",
+        str(res / "models" / "ssc_tool_flex.xml"),
+    ]
     for k, v in overrides.items():
         args += ["--set", f"{k}={v}"]
     subprocess.run(args, check=True)
@@ -75,22 +80,62 @@ def measure(ssc, variant_dir, overrides, threads, static_only):
     res = resources(variant_dir, overrides)
     env = dict(os.environ, SSC_RESOURCE_DIR=str(res))
     c0 = os.times()
-    run([ssc, "probe", "--scene", "probe_edge_flex", "--from", "2.5", "--to", "2.5",
-         "--compression", str(PRESS_MM),
-         "--disk-step", "360", "--no-plot", "--out", str(variant_dir / "probe")], env,
-        variant_dir / "probe.log")
+    run(
+        [
+            ssc,
+            "probe",
+            "--scene",
+            "probe_edge_flex",
+            "--from",
+            "2.5",
+            "--to",
+            "2.5",
+            "--compression",
+            str(PRESS_MM),
+            "--disk-step",
+            "360",
+            "--no-plot",
+            "--out",
+            str(variant_dir / "probe"),
+        ],
+        env,
+        variant_dir / "probe.log",
+    )
     with open(variant_dir / "probe" / "edge.csv") as f:
         edge = next(csv.DictReader(f))
     if static_only:
         c1 = os.times()
-        return {"pbar": float(edge["pbar_pa"]), "diff": float(edge["diff_pa"]),
-                "compression": float("nan"), "corner": "not run", "sharp": float("nan"),
-                "fillet": "not run",
-                "cpu_s": (c1.children_user + c1.children_system) -
-                         (c0.children_user + c0.children_system)}
-    run([ssc, "objects", "--scene-kind", "flex", "--objects", OBJECTS, "--seeds", "1", "--seed",
-         "1", "--threads", str(threads), "--no-plot", "--out", str(variant_dir / "objects")], env,
-        variant_dir / "objects.log")
+        return {
+            "pbar": float(edge["pbar_pa"]),
+            "diff": float(edge["diff_pa"]),
+            "compression": float("nan"),
+            "corner": "not run",
+            "sharp": float("nan"),
+            "fillet": "not run",
+            "cpu_s": (c1.children_user + c1.children_system)
+            - (c0.children_user + c0.children_system),
+        }
+    run(
+        [
+            ssc,
+            "objects",
+            "--scene-kind",
+            "flex",
+            "--objects",
+            OBJECTS,
+            "--seeds",
+            "1",
+            "--seed",
+            "1",
+            "--threads",
+            str(threads),
+            "--no-plot",
+            "--out",
+            str(variant_dir / "objects"),
+        ],
+        env,
+        variant_dir / "objects.log",
+    )
     c1 = os.times()
     cpu_s = (c1.children_user + c1.children_system) - (c0.children_user + c0.children_system)
     with open(variant_dir / "objects" / "objects.csv") as f:
@@ -102,12 +147,13 @@ def measure(ssc, variant_dir, overrides, threads, static_only):
                 sharp.append(float(r["diff_pa"]))
     fillet, corner = rows["fillet"], rows["corner_a270"]
     return {
-        "pbar": float(edge["pbar_pa"]), "diff": float(edge["diff_pa"]),
+        "pbar": float(edge["pbar_pa"]),
+        "diff": float(edge["diff_pa"]),
         "compression": float(fillet["approach_compression_mm"]),
         "corner": f"{corner['outcome']} ({float(corner['end_arc_mm']):.1f} mm)",
         "sharp": sum(sharp) / len(sharp) if sharp else float("nan"),
         "fillet": f"{fillet['outcome']} at {float(fillet['end_arc_mm']):.1f} mm "
-                  f"(r {float(fillet['end_fillet_radius_mm']):.1f} mm)",
+        f"(r {float(fillet['end_fillet_radius_mm']):.1f} mm)",
         "cpu_s": cpu_s,
     }
 
@@ -117,10 +163,14 @@ def main():
     p.add_argument("--ssc", default=str(ROOT / "build" / "bin" / "ssc"))
     p.add_argument("--out", default="out/skirt_sensitivity")
     p.add_argument("--threads", type=int, default=2, choices=range(1, 65), metavar="1-64")
-    p.add_argument("--params", default=",".join(RANGES),
-                   help="parameters to vary, among " + ", ".join(RANGES))
-    p.add_argument("--static-only", action="store_true",
-                   help="only the straight-edge static reading (seconds per variant); no trials")
+    p.add_argument(
+        "--params", default=",".join(RANGES), help="parameters to vary, among " + ", ".join(RANGES)
+    )
+    p.add_argument(
+        "--static-only",
+        action="store_true",
+        help="only the straight-edge static reading (seconds per variant); no trials",
+    )
     a = p.parse_args()
     params = a.params.split(",")
     for k in params:
@@ -134,9 +184,11 @@ def main():
     for k in params:
         for v in RANGES[k]:
             variants.append((f"{k}={v:g}", {k: v}))
-    lines = ["| variant | P̄ / \\|ΔP\\| at 2.5 mm (Pa) | approach compression (mm) | "
-             "corner_a270 | fillet \\|ΔP\\| at 10-20 mm (Pa) | fillet | CPU s |",
-             "| --- | --- | --- | --- | --- | --- | --- |"]
+    lines = [
+        "| variant | P̄ / \\|ΔP\\| at 2.5 mm (Pa) | approach compression (mm) | "
+        "corner_a270 | fillet \\|ΔP\\| at 10-20 mm (Pa) | fillet | CPU s |",
+        "| --- | --- | --- | --- | --- | --- | --- |",
+    ]
     if a.static_only:
         lines = ["| variant | P̄ / \\|ΔP\\| at 2.5 mm (Pa) |", "| --- | --- |"]
     total = 0.0
@@ -144,14 +196,15 @@ def main():
         m = measure(a.ssc, out / name.replace("=", "_"), overrides, a.threads, a.static_only)
         total += m["cpu_s"]
         base = make_flex_tool.SKIRT
-        label = name if not overrides else \
-            f"`{name}` (is {base[next(iter(overrides))][0]:g})"
+        label = name if not overrides else f"`{name}` (is {base[next(iter(overrides))][0]:g})"
         if a.static_only:
             lines.append(f"| {label} | {m['pbar']:.0f} / {m['diff']:.0f} |")
         else:
-            lines.append(f"| {label} | {m['pbar']:.0f} / {m['diff']:.0f} | "
-                         f"{m['compression']:.2f} | {m['corner']} | {m['sharp']:.0f} | "
-                         f"{m['fillet']} | {m['cpu_s']:.0f} |")
+            lines.append(
+                f"| {label} | {m['pbar']:.0f} / {m['diff']:.0f} | "
+                f"{m['compression']:.2f} | {m['corner']} | {m['sharp']:.0f} | "
+                f"{m['fillet']} | {m['cpu_s']:.0f} |"
+            )
         print(lines[-1], flush=True)
     lines.append(f"\n{len(variants)} variants, {total:.0f} s of CPU.")
     (out / "sensitivity.md").write_text("\n".join(lines) + "\n")

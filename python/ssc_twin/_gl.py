@@ -4,6 +4,7 @@ MuJoCo chooses its backend from MUJOCO_GL once, when ``mujoco`` is first importe
 display GLFW cannot start, so where MUJOCO_GL is unset this picks EGL (Mesa's, in Debian's libegl1
 and libegl-mesa0) before that import; a process that imported mujoco first keeps its choice.
 """
+
 import os
 import sys
 
@@ -11,8 +12,9 @@ CLASSIC_GL = "mujoco.rendering.classic.gl_context"
 
 
 def no_display():
-    return sys.platform.startswith("linux") and not (os.environ.get("DISPLAY")
-                                                     or os.environ.get("WAYLAND_DISPLAY"))
+    return sys.platform.startswith("linux") and not (
+        os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")
+    )
 
 
 def choose_headless_backend():
@@ -21,8 +23,10 @@ def choose_headless_backend():
     if not no_display() or os.environ.get("MUJOCO_GL"):
         return ""
     if CLASSIC_GL in sys.modules or "mujoco" in sys.modules:
-        return ("there is no display and mujoco was imported before ssc_twin with MUJOCO_GL "
-                "unset (GLFW): set MUJOCO_GL=egl before importing mujoco, or run under xvfb-run")
+        return (
+            "there is no display and mujoco was imported before ssc_twin with MUJOCO_GL "
+            "unset (GLFW): set MUJOCO_GL=egl before importing mujoco, or run under xvfb-run"
+        )
     os.environ["MUJOCO_GL"] = "egl"
     os.environ.setdefault("PYOPENGL_PLATFORM", "egl")
     return ""
@@ -31,6 +35,8 @@ def choose_headless_backend():
 def render_fix():
     """What to do when no OpenGL context can be made."""
     problem = choose_headless_backend()
-    return problem or ("without a display set MUJOCO_GL=egl (Debian: libegl1, libegl-mesa0) or "
-                       "MUJOCO_GL=osmesa (libosmesa6) before importing mujoco, or run under "
-                       "xvfb-run")
+    return problem or (
+        "without a display set MUJOCO_GL=egl (Debian: libegl1, libegl-mesa0) or "
+        "MUJOCO_GL=osmesa (libosmesa6) before importing mujoco, or run under "
+        "xvfb-run"
+    )

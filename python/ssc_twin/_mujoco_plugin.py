@@ -8,4 +8,5 @@ message handlers that print instead of writing MUJOCO_LOG.TXT (where mujoco has 
 
 def load():
     from . import _core
+
     _core.install_message_handlers()

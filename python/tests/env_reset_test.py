@@ -3,6 +3,7 @@ reset from scratch gives (observations, rewards and outcomes equal to the bit) f
 seeds, with the law and with a random policy, and the cache is used. And the environment on a
 machine without a display, as docs/gym.md says: check_env passes, rgb_array renders, a fault's
 reason is in info, objects() takes a list, and nothing is printed about leaks at exit."""
+
 import os
 import subprocess
 import sys
@@ -24,8 +25,9 @@ import ssc_twin  # noqa: F401  registers the environment
 class ResetCacheTest(unittest.TestCase):
     def episodes(self, cache, policy, seeds, steps=40):
         kw = dict(controller="published") if policy == "law" else {}
-        env = gym.make("ssc_twin/EdgeFollowing-v0", scene="disk_benchmark_fast",
-                       reset_cache=cache, **kw)
+        env = gym.make(
+            "ssc_twin/EdgeFollowing-v0", scene="disk_benchmark_fast", reset_cache=cache, **kw
+        )
         rng = np.random.default_rng(7)
         out = []
         for seed in seeds:
@@ -84,10 +86,19 @@ class HeadlessTest(unittest.TestCase):
             r = ssc_twin.objects(["disk_d14"], out_dir={os.path.join(out, "o")!r}, seeds=1)
             print("objects", r["trials"] if isinstance(r, dict) and "trials" in r else "ran")
             """)
-        env = {k: v for k, v in os.environ.items()
-               if k not in ("DISPLAY", "WAYLAND_DISPLAY", "MUJOCO_GL", "PYOPENGL_PLATFORM")}
-        r = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
-                           env=env, timeout=600, cwd=out)
+        env = {
+            k: v
+            for k, v in os.environ.items()
+            if k not in ("DISPLAY", "WAYLAND_DISPLAY", "MUJOCO_GL", "PYOPENGL_PLATFORM")
+        }
+        r = subprocess.run(
+            [sys.executable, "-c", script],
+            capture_output=True,
+            text=True,
+            env=env,
+            timeout=600,
+            cwd=out,
+        )
         self.assertEqual(r.returncode, 0, r.stderr[-3000:])
         self.assertIn("check_env passed", r.stdout)
         self.assertIn("frame (48, 64, 3)", r.stdout)

@@ -1,4 +1,5 @@
 """Interop: the plugin library loads in the mujoco Python bindings and the scenes step there."""
+
 import os
 import sys
 import unittest
@@ -26,13 +27,15 @@ class PythonBindingsTest(unittest.TestCase):
         self.assertGreaterEqual(sid, 0)
         adr, dim = m.sensor_adr[sid], m.sensor_dim[sid]
         self.assertEqual(dim, 4)
-        return d.sensordata[adr:adr + 4].copy()
+        return d.sensordata[adr : adr + 4].copy()
 
     def test_probe_scene_on_plate_grasps(self):
         def on_plate(m, d):
             d.mocap_pos[0] = [-0.03, 0.0, 0.010 - 0.001 + 0.146]
+
         p = self.pressures("probe_edge.xml", 200, on_plate)
-        # The sealed cup's reading (tests/plugin/pneumatics/flow_network_test.cc, SealedCupOnAPlate: the chamber
+        # The sealed cup's reading (tests/plugin/pneumatics/flow_network_test.cc,
+        # SealedCupOnAPlate: the chamber
         # vacuum of four roughness leaks, 25644 Pa; that air enters as a sheet, so no tap recovery)
         # within the noise band of the filtered value (5 sigma of a 7-sample mean of 6 Pa: 11.3 Pa).
         self.assertTrue(all(abs(p - 25644) < 11.3), p)
@@ -40,6 +43,7 @@ class PythonBindingsTest(unittest.TestCase):
     def test_probe_scene_in_air_reads_near_zero(self):
         def in_air(m, d):
             d.mocap_pos[0] = [0.0, 0.0, 0.4]
+
         p = self.pressures("probe_edge.xml", 200, in_air)
         # The open cup reads 0.253 Pa; the mean of four filtered chambers has 5 sigma = 5.7 Pa.
         self.assertLess(abs(p.mean() - 0.253), 5.7, p)
@@ -51,13 +55,18 @@ class PythonBindingsTest(unittest.TestCase):
     def test_loading_our_scene_writes_no_log_file(self):
         # MuJoCo's default handlers append to MUJOCO_LOG.TXT in the working directory; the plugin
         # installs printing ones where the host has none; our scenes load without a warning.
-        import subprocess, tempfile
+        import subprocess
+        import tempfile
+
         scene = os.path.abspath(os.path.join(ROOT, "scenes", "disk_benchmark.xml"))
-        script = ("import mujoco; mujoco.mj_loadPluginLibrary(%r); "
-                  "m = mujoco.MjModel.from_xml_path(%r); print('nbody', m.nbody)" % (PLUGIN, scene))
+        script = (
+            "import mujoco; mujoco.mj_loadPluginLibrary(%r); "
+            "m = mujoco.MjModel.from_xml_path(%r); print('nbody', m.nbody)" % (PLUGIN, scene)
+        )
         with tempfile.TemporaryDirectory() as cwd:
-            r = subprocess.run([sys.executable, "-c", script], cwd=cwd, capture_output=True,
-                               text=True, timeout=120)
+            r = subprocess.run(
+                [sys.executable, "-c", script], cwd=cwd, capture_output=True, text=True, timeout=120
+            )
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertIn("nbody", r.stdout)
             self.assertEqual(os.listdir(cwd), [])
@@ -69,6 +78,7 @@ class PythonBindingsTest(unittest.TestCase):
         # prefix, and the spec saved to MJCF compiles to the same model.
         import glob
         import warnings
+
         scenes = sorted(glob.glob(os.path.join(ROOT, "scenes", "*.xml")))
         self.assertGreaterEqual(len(scenes), 5)
         for path in scenes:
@@ -77,24 +87,32 @@ class PythonBindingsTest(unittest.TestCase):
                 spec = mujoco.MjSpec.from_file(os.path.abspath(path))
                 m = spec.compile()
             self.assertEqual([str(w.message) for w in caught], [], path)
-            for kind, name in ((mujoco.mjtObj.mjOBJ_SITE, "ssc_tool_site"),
-                               (mujoco.mjtObj.mjOBJ_SENSOR, "ssc_ft_force"),
-                               (mujoco.mjtObj.mjOBJ_SENSOR, "ssc_chamber_pressure")):
+            for kind, name in (
+                (mujoco.mjtObj.mjOBJ_SITE, "ssc_tool_site"),
+                (mujoco.mjtObj.mjOBJ_SENSOR, "ssc_ft_force"),
+                (mujoco.mjtObj.mjOBJ_SENSOR, "ssc_chamber_pressure"),
+            ):
                 self.assertGreaterEqual(mujoco.mj_name2id(m, kind, name), 0, (path, name))
             # The lip: the segment tier's first slide, or the flex tier's skirt.
-            lip = max(mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_JOINT, "ssc_lip_0"),
-                      mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_FLEX, "ssc_skirt"))
+            lip = max(
+                mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_JOINT, "ssc_lip_0"),
+                mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_FLEX, "ssc_skirt"),
+            )
             self.assertGreaterEqual(lip, 0, (path, "ssc_lip_0 or ssc_skirt"))
             again = mujoco.MjModel.from_xml_string(spec.to_xml())
-            self.assertEqual((again.nbody, again.njnt, again.nsensor, again.nplugin),
-                             (m.nbody, m.njnt, m.nsensor, m.nplugin), path)
+            self.assertEqual(
+                (again.nbody, again.njnt, again.nsensor, again.nplugin),
+                (m.nbody, m.njnt, m.nsensor, m.nplugin),
+                path,
+            )
 
     def test_bad_config_raises_with_the_key(self):
         with open(os.path.join(ROOT, "models", "ssc_tool.xml")) as f:
             xml = f.read()
         xml = xml.replace(
             '<instance name="pressure"/>',
-            '<instance name="pressure"><config key="noise_pa" value="-2"/></instance>')
+            '<instance name="pressure"><config key="noise_pa" value="-2"/></instance>',
+        )
         with self.assertRaises(Exception) as ctx:
             mujoco.MjModel.from_xml_string(xml)
         self.assertIn("noise_pa", str(ctx.exception))

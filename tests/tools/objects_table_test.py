@@ -2,6 +2,7 @@
 files and sorted by seed, outcome counts, mean +- sd of where the trials ended (mm along the
 edge, degrees swept, the fillet's radius), the other tier beside, and a file that is not an
 objects.csv refused."""
+
 import contextlib
 import csv
 import io
@@ -14,8 +15,16 @@ ROOT = os.environ.get("SSC_SOURCE_DIR", os.path.join(os.path.dirname(__file__), 
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import objects_table  # noqa: E402
 
-COLUMNS = ["object", "kind", "seed", "outcome", "end_arc_mm", "end_swept_deg",
-           "end_fillet_radius_mm", "detail"]
+COLUMNS = [
+    "object",
+    "kind",
+    "seed",
+    "outcome",
+    "end_arc_mm",
+    "end_swept_deg",
+    "end_fillet_radius_mm",
+    "detail",
+]
 
 
 def write(path, rows):
@@ -37,18 +46,27 @@ class ObjectsTableTest(unittest.TestCase):
     def setUp(self):
         self.dir = tempfile.TemporaryDirectory()
         d = self.dir.name
-        self.seed2 = write(os.path.join(d, "s2.csv"), [
-            ["corner_a270", "corner", 2, "success", 83.2, 0, -1, ""],
-            ["fillet", "fillet", 2, "lost_edge", 140.0, 0, 14.8, ""],
-        ])
-        self.seed1 = write(os.path.join(d, "s1.csv"), [
-            ["corner_a270", "corner", 1, "lost_edge", 60.0, 0, -1, ""],
-            ["fillet", "fillet", 1, "lost_edge", 130.0, 0, 14.4, ""],
-            ["hole_d02", "hole", 1, "success", -1, -400.0, -1, ""],
-        ])
-        self.other = write(os.path.join(d, "g.csv"), [
-            ["fillet", "fillet", 1, "success", 170.2, 0, 15.7, ""],
-        ])
+        self.seed2 = write(
+            os.path.join(d, "s2.csv"),
+            [
+                ["corner_a270", "corner", 2, "success", 83.2, 0, -1, ""],
+                ["fillet", "fillet", 2, "lost_edge", 140.0, 0, 14.8, ""],
+            ],
+        )
+        self.seed1 = write(
+            os.path.join(d, "s1.csv"),
+            [
+                ["corner_a270", "corner", 1, "lost_edge", 60.0, 0, -1, ""],
+                ["fillet", "fillet", 1, "lost_edge", 130.0, 0, 14.4, ""],
+                ["hole_d02", "hole", 1, "success", -1, -400.0, -1, ""],
+            ],
+        )
+        self.other = write(
+            os.path.join(d, "g.csv"),
+            [
+                ["fillet", "fillet", 1, "success", 170.2, 0, 15.7, ""],
+            ],
+        )
 
     def tearDown(self):
         self.dir.cleanup()

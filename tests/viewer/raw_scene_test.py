@@ -1,6 +1,7 @@
 """A bundled scene loaded through the mujoco Python API, as docs/python.md and docs/viewer.md
 say: from the `home` keyframe the cup hangs over the disk with the servos on it; at qpos0 the
 gantry scenes have it under the table, which is why the docs say to reset to `home`."""
+
 import glob
 import os
 import sys
@@ -26,7 +27,9 @@ class RawSceneTest(unittest.TestCase):
                 pass
 
     def scenes(self):
-        found = sorted(glob.glob(os.path.join(os.path.abspath(SRC), "scenes", "disk_benchmark*.xml")))
+        found = sorted(
+            glob.glob(os.path.join(os.path.abspath(SRC), "scenes", "disk_benchmark*.xml"))
+        )
         self.assertTrue(found)
         return found
 

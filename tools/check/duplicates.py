@@ -4,6 +4,7 @@ Usage: lizard -Eduplicate FILES | python3 tools/check/duplicates.py ALLOWLIST
 ALLOWLIST lines: `file_a file_b ...  # reason`. A block is allowed when every file it spans is on
 one line (a single file on a line allows a block repeated inside that file).
 """
+
 import re
 import sys
 
@@ -39,8 +40,10 @@ def main():
     for block in new:
         print("repeated block:\n  " + "\n  ".join(block))
     if new:
-        print(f"{len(new)} repeated block(s): share the code, or allowlist the pair with its "
-              f"reason in {sys.argv[1]}")
+        print(
+            f"{len(new)} repeated block(s): share the code, or allowlist the pair with its "
+            f"reason in {sys.argv[1]}"
+        )
         return 1
     print("no repeated blocks outside the allowlist")
     return 0
