@@ -18,6 +18,9 @@ static_assert(sizeof(mjtByte) == sizeof(unsigned char), "ray_groups is passed to
 constexpr int kWarmStartSize = kNumChambers + 1;
 // Vertical-ray bisections that locate an edge the horizontal rays missed: 5.5 mm / 2^6 = 0.09 mm.
 constexpr int kRimBisections = 6;
+// A lobe's vertices count across a wedge's mouth within this angle of its bisector (or half the
+// wedge, if wider): about the skirt's sector spacing, so a lobe between two columns is seen.
+constexpr double kLobeSectorHalfRad = 7.5 * M_PI / 180.0;
 // Per-mjData noise seed (set by the application after a reset), after the warm start.
 constexpr int kSeedSlot = kSensorChainStateSize + kWarmStartSize;
 // The chamber vacuums' force on the tool at the last passive evaluation (world, N; 3 values):
@@ -344,6 +347,18 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
     w.rim_radius_m = lip_.rim_moves_radially()
                          ? std::clamp(AtWedge(rim, lip_rim_radius_.data()), 0.1 * radius, radius)
                          : 0.0;
+    if (lip_.rim_moves_radially()) {
+      // A lobe folded in under the cup across the wedge's mouth covers it from where it reaches
+      // out, held against the throat: no curtain under it.
+      const double half_width = std::max(0.5 * w.dtheta_rad, kLobeSectorHalfRad);
+      const double cover =
+          lip_.MouthCover(d, origin_lip, frame, RayAngle(w.chamber, r % per, per), half_width,
+                          radius);
+      if (cover < w.rim_radius_m) {
+        w.rim_radius_m = std::max(cover, 0.1 * radius);
+        w.rim_gap_m = 0.0;
+      }
+    }
     const double wedge_radius = w.rim_radius_m > 0.0 ? w.rim_radius_m : radius;
     mjtNum dir[3];
     mju_mulMatVec3(dir, frame, ray_dirs_local_.data() + 3 * r);

@@ -254,11 +254,12 @@ bool LipBody::BindSkirt(const mjModel* m, int root, std::string* error) {
     *error = Fail("the flex skirt's pinned ring must hang from the tool site's body or its child");
     return false;
   }
-  double pinned_radius_sum = 0.0;
+  double pinned_radius_sum = 0.0, pinned_depth_sum = 0.0;
   int pinned = 0;
   for (int v = 0; v < n; ++v) {
     if (m->flex_vertbodyid[adr + v] != carrier) continue;
     pinned_radius_sum += std::hypot(local[v][0], local[v][1]);
+    pinned_depth_sum += local[v][2];
     ++pinned;
   }
   if (pinned < 3) {
@@ -267,6 +268,7 @@ bool LipBody::BindSkirt(const mjModel* m, int root, std::string* error) {
     return false;
   }
   const double ceiling_radius_m = pinned_radius_sum / pinned;
+  throat_depth_m_ = pinned_depth_sum / pinned;
   ceiling_area_m2_ = 0.25 * M_PI * ceiling_radius_m * ceiling_radius_m;
   double radius_sum = 0.0;
   for (int v : RimVertices(depth, kRimToleranceM)) {
@@ -407,6 +409,28 @@ double LipBody::ColumnGap(int i, const mjData* d, const mjtNum origin[3], const 
     gap = std::min(gap, std::max(0.0, depth - along - column_radius_m_));
   }
   return gap;
+}
+
+double LipBody::MouthCover(const mjData* d, const mjtNum origin[3], const mjtNum frame[9],
+                           double angle_rad, double half_width_rad, double radius_m) const {
+  double cover = radius_m;
+  const double reach = throat_depth_m_ + 4.0 * column_radius_m_;  // one thickness below
+  const double inside = radius_m - column_radius_m_;               // the throat ring's own: no
+  for (int v = 0; v < static_cast<int>(vertex_touching_.size()); ++v) {
+    const mjtNum* p = d->flexvert_xpos + 3 * (column_adr_ + v);
+    const mjtNum rel[3] = {p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]};
+    mjtNum local[3];
+    mju_mulMatTVec3(local, frame, rel);
+    if (local[2] > reach) continue;
+    const double r = std::hypot(local[0], local[1]);
+    if (r >= inside || r >= cover) continue;
+    if (std::abs(std::remainder(std::atan2(local[1], local[0]) - angle_rad, 2.0 * M_PI)) >
+        half_width_rad) {
+      continue;
+    }
+    cover = r;
+  }
+  return cover;
 }
 
 void LipBody::ApplyForces(const mjModel* m, mjData* d,

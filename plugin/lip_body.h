@@ -63,6 +63,13 @@ class LipBody {
   // from `surface_depth_at(point on the lip plane, ctx)`. Allocates nothing.
   double ColumnGap(int i, const mjData* d, const mjtNum origin[3], const mjtNum axis_z[3],
                    double (*surface_depth_at)(const mjtNum[3], void*), void* ctx) const;
+  // A skirt's lobe in the throat's mouth along one radial direction (`angle_rad` in the frame
+  // `frame`, the opening's, at `origin`): the innermost distance from the axis of the skirt's
+  // vertices within `half_width_rad` of it, inside `radius_m` and no more than one skirt
+  // thickness below the throat (folded in under the cup and held against the throat and the
+  // walls' ends); `radius_m` when none. Allocates nothing.
+  double MouthCover(const mjData* d, const mjtNum origin[3], const mjtNum frame[9],
+                    double angle_rad, double half_width_rad, double radius_m) const;
   // Whether the skirt's fold can move the rim across the opening (the sensor then follows the
   // rim's radius per wedge); segments stay on their circle by construction.
   bool rim_moves_radially() const { return kind_ == Kind::kSkirt; }
@@ -120,6 +127,7 @@ class LipBody {
   std::vector<double> element_cavity_side_;             // +1 / -1 on each triangle's winding
   int column_adr_ = 0;                                  // the flex's first vertex (global id)
   double column_radius_m_ = 0.0;                        // the skirt's contact radius
+  double throat_depth_m_ = 0.0;  // the pinned ring below the opening's origin (negative: above)
   mutable std::vector<double> column_depth_, column_radius_;  // scratch, longest column's size
   std::vector<unsigned char> tool_geom_;  // geoms carried by the tool (walls): never a seal
   double ceiling_area_m2_ = 0.0;

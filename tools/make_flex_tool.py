@@ -27,17 +27,21 @@ SKIRT = {
     "throat_radius_mm": (5.5, "mm", "published: the 11 mm opening (Fig. 1c), where the chamber "
                          "walls end and the skirt starts"),
     "rim_radius_mm": (11.5, "mm", "published: the 23 mm outer diameter is the lip's rim (Fig. 1b)"),
-    "height_mm": (3.0, "mm", "2-4: the throat stands this far above the rim plane; in Fig. 1b "
+    "height_mm": (4.0, "mm", "2-4: the throat stands this far above the rim plane; in Fig. 1b "
                   "the lip below the bellows flange is about a quarter to a third of its 23 mm "
                   "rim as tall (6-7 mm with the flange), and the walls end about that far above "
-                  "the lip plane (Fig. 1c)"),
-    "flare": (1.5, "", "1-2: the profile's exponent, z = -height (1 - s)^flare from throat (s 0) "
+                  "the lip plane (Fig. 1c); the tall end, with flare and thickness at theirs, is "
+                  "the bell that carries the 1.5 N preload standing, as in Fig. 11 "
+                  "(docs/flex_skirt.md)"),
+    "flare": (2.0, "", "1-2: the profile's exponent, z = -height (1 - s)^flare from throat (s 0) "
               "to rim (s 1); 1 is a straight cone; Fig. 1b and 11 show a bell that leaves the "
               "throat steeply and meets the object nearly flat at the rim"),
-    "thickness_mm": (0.8, "mm", "0.5-1.0: translucent in Fig. 1c (the walls show through), so "
-                     "under 1 mm; a cast lip thinner than 0.5 mm tears"),
-    "young_mpa": (1.7, "MPa", "1.2-2.0: Shore 40A (Mold Max 40, the lab's default cup); "
-                  "Gent's relation gives 1.69 MPa at 40A, 1.2-2.0 over 35-45A"),
+    "thickness_mm": (1.0, "mm", "0.5-1.0: translucent in Fig. 1c (the walls show through), so "
+                     "not over 1 mm; a cast lip thinner than 0.5 mm tears"),
+    "young_mpa": (2.0, "MPa", "1.2-2.0: Shore 40A (Mold Max 40, the lab's default cup); "
+                  "Gent's relation gives 1.69 MPa at 40A, 1.2-2.0 over 35-45A; the range's end "
+                  "at which issue 25's corner push folds a lobe over the facing chamber and "
+                  "blocks it, as Fig. 11 shows (at 1.7 only part-covered; docs/flex_skirt.md)"),
     # MuJoCo's 2-D shell bends this much more than a Kirchhoff plate of the same E, t and nu
     # (a clamped strip under uniform load, mesh-converged; tests/plugin/flex_lip_test.py measures it):
     # the MJCF modulus is the material's times this, so the skirt bends as the silicone would.

@@ -65,7 +65,8 @@ class RoundingTest(unittest.TestCase):
         spread = [self.runs[r][0].max() - self.runs[r][0].min() for r in RADII_MM]
         self.assertGreater(spread[0], 50, spread)  # the sharp-ish edge reads it
         for tighter, wider in zip(spread, spread[1:]):
-            self.assertLess(wider, 0.8 * tighter, spread)
+            self.assertLess(wider, tighter, spread)
+        self.assertLess(spread[-1], 0.5 * spread[0], spread)
 
 
 if __name__ == "__main__":

@@ -1,7 +1,8 @@
 """The flex skirt lip (models/ssc_tool_flex.xml): MuJoCo's shell against plate theory, and the
 pressure plugin reading the deformed skirt under its chambers' vacuum: flattened and sealed on a
 plate at the preload, a notch its unsupported stretch sags into, a lobe over a chamber mouth that
-blocks it, the same run twice. The cup hangs from a stiff x/y/z position servo (a flex cannot hang from a mocap body)."""
+blocks it (held there, and folded there by issue 25's push into a concave corner), the same run
+twice. The cup hangs from a stiff x/y/z position servo (a flex cannot hang from a mocap body)."""
 import importlib.util
 import os
 import tempfile
@@ -232,15 +233,17 @@ class SkirtSensorTest(unittest.TestCase):
 
     def test_pressed_at_the_preload_on_a_plate_it_flattens_and_every_chamber_seals(self):
         rig = Rig(PLATE).press_to_preload(0.0)
-        self.assertAlmostEqual(rig.bellows_n(), PRELOAD_N, delta=0.15)
+        self.assertAlmostEqual(rig.bellows_n(), PRELOAD_N, delta=0.25)
         p = rig.pressures()
         self.assertTrue(np.all(p >= SEAL_THRESHOLD_PA), p)
-        # Flattened: the outer rings that stood 0.3-1.3 mm over the rim plane at rest lie on the
-        # plate (within 0.05 mm of one contact radius above it), the rim pushed outward.
+        # Flattened: the vacuum lays the stretch between the throat and the rim, which stood 0.25
+        # to 2.25 mm over the rim plane at rest, on the plate (within 0.05 mm of one contact
+        # radius above it), and pushes the rim outward; the throat stays clear of the plate.
         radius = 0.5e-3 * skirt_parameters()["thickness_mm"]
         rings = rig.rings()
-        for ring in rings[2:]:
+        for ring in rings[1:-1]:
             self.assertTrue(np.all(np.abs(ring[:, 2] - radius) < 0.05e-3), ring[:, 2])
+        self.assertGreater(rings[0][:, 2].min(), radius + 0.5e-3)
         rim_r = np.hypot(rings[-1][:, 0], rings[-1][:, 1])
         self.assertTrue(np.all(rim_r > skirt_parameters()["rim_radius_mm"] * 1e-3), rim_r)
         # The vacuum loads it: its force on the tool is the chamber pressure over the skirt's
@@ -273,29 +276,25 @@ class SkirtSensorTest(unittest.TestCase):
         slotted = Rig(notch(0.004, 0.001, inner_end_m=0.004)).press_to_preload(0.0)
         self.assertLess(slotted.pressures().mean(), 0.6 * plate.pressures().mean())
 
-    def test_pushed_into_a_concave_corner_the_stretch_over_the_drop_meets_the_far_wall(self):
+    def test_pushed_into_a_concave_corner_a_lobe_folds_over_the_facing_chamber_and_blocks_it(self):
         # Issue 25's push at the preload: the cup 2.5 mm inside the edge y = 0, lowered at x = 12
-        # mm, its set point moved to 2 mm past the corner's far wall (x = 0). The stretch of skirt
-        # that hangs over the drop meets that wall and is pushed in toward the axis (vertices
-        # inside the throat's radius), folding up along the wall; none of it lies across the open
-        # part of the throat (over the drop, level with the top face), and the facing chamber
-        # reads what the cup lowered straight onto the same spot reads (docs/flex_skirt.md, "The
-        # skirt at a concave corner").
+        # mm, its set point moved to 2 mm past the corner's far wall (x = 0) and held. The stretch
+        # of skirt over the drop catches the wall, folds in under the cup (vertices inside the
+        # throat's radius) and lies across the mouth of the chamber facing the drop, which reads
+        # kPa where the cup lowered straight onto the same spot reads a few hundred Pa
+        # (docs/flex_skirt.md, "The crimp").
         pushed = Rig(concave_corner()).press_to_preload(12e-3, y_m=-2.5e-3)
-        lowest_before = pushed.rings()[1:, :, 2].min()
         pushed.push_x(-2e-3)
         c = pushed.d.qpos[:2]
         flat = pushed.rings()[1:].reshape(-1, 3)
         inside = np.hypot(flat[:, 0] - c[0], flat[:, 1] - c[1]) < 5.5e-3
-        self.assertGreaterEqual(inside.sum(), 4)
-        radius = 0.5e-3 * skirt_parameters()["thickness_mm"]
-        over_drop = inside & (flat[:, 0] > 0) & (flat[:, 1] > 0)
-        across = over_drop & (np.abs(flat[:, 2] - radius) < 0.3e-3)
-        self.assertFalse(across.any(), flat[inside])  # no lobe over the open mouth
-        self.assertLess(lowest_before, -2e-3)  # the stretch over the drop hung there already
+        self.assertGreaterEqual(inside.sum(), 10)
         lowered = Rig(concave_corner()).press_to_preload(c[0], y_m=-2.5e-3)
         p, q = pushed.pressures(), lowered.pressures()
-        np.testing.assert_allclose(p, q, rtol=0.3, atol=20.0)
+        facing = np.argmin(q)
+        self.assertLess(q[facing], 0.5 * np.delete(q, facing).min(), q)  # open when lowered
+        self.assertGreater(p[facing], 2000.0, (p, q))
+        self.assertGreater(p[facing], 5.0 * q[facing], (p, q))
 
     def quadrant_columns(self, rig):
         """The skirt vertices (flat indices) of the chamber whose rim points lie at world angles
