@@ -43,11 +43,15 @@ def parse(p):
     p.add_argument("--frames", help="write PNG frames to this directory")
     p.add_argument("--frame-mm", type=float, default=2.0, help="set-point travel between frames")
     p.add_argument("--size", default="640x400", help="frame WIDTHxHEIGHT, px")
+    p.add_argument("--elevation", type=float, default=5,
+                   help="camera elevation, deg (+: from below the top face, under the cup)")
     a = p.parse_args()
     if not 12 <= a.from_mm <= 30:
         p.error("--from-mm: in [12, 30] mm (the 23 mm rim clear of the far wall)")
     if not -8 <= a.to_mm < a.from_mm:
         p.error("--to-mm: in [-8, --from-mm) mm")
+    if not -89 <= a.elevation <= 89:
+        p.error("--elevation: in [-89, 89] deg")
     if not 0.2 <= a.frame_mm <= 10:
         p.error("--frame-mm: in [0.2, 10] mm")
     try:
@@ -78,8 +82,8 @@ class Frames:
         self.renderer = mujoco.Renderer(m, a.height, a.width)
         self.cam = mujoco.MjvCamera()
         self.cam.type = mujoco.mjtCamera.mjCAMERA_FREE
-        # From over the drop, looking back at the corner's far wall and the cup.
-        self.cam.distance, self.cam.azimuth, self.cam.elevation = 0.045, 225, -12
+        # From down in the drop, looking back up at the far wall and under the cup.
+        self.cam.distance, self.cam.azimuth, self.cam.elevation = 0.035, 225, a.elevation
         self.opt = mujoco.MjvOption()
         for group in range(6):
             self.opt.geomgroup[group] = 1
