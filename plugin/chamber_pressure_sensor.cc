@@ -67,6 +67,10 @@ class ChamberPressureSensor final : public ChamberPressureDiagnostics {
   // The filtered output of the state into sensordata.
   void WriteOutput(mjData* d, const SensorChainState& state) const;
 
+  // A skirt's lobe across wedge `w`'s mouth (LipBody::MouthCover) covers it from where it
+  // reaches out (ray `ray_in_chamber` of its chamber; the opening's frame at `origin`).
+  void CoverByLobe(const mjData* d, const mjtNum origin[3], const mjtNum frame[9],
+                   int ray_in_chamber, OpeningWedge* w) const;
   // Passive forces of the lip (LipBody::ApplyForces) with the chamber vacuums of the newest
   // sample (kept in the plugin state, so a reset run starts from none).
   void ApplyLipForces(const mjModel* m, mjData* d, int instance) const;
@@ -347,18 +351,7 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
     w.rim_radius_m = lip_.rim_moves_radially()
                          ? std::clamp(AtWedge(rim, lip_rim_radius_.data()), 0.1 * radius, radius)
                          : 0.0;
-    if (lip_.rim_moves_radially()) {
-      // A lobe folded in under the cup across the wedge's mouth covers it from where it reaches
-      // out, held against the throat: no curtain under it.
-      const double half_width = std::max(0.5 * w.dtheta_rad, kLobeSectorHalfRad);
-      const double cover =
-          lip_.MouthCover(d, origin_lip, frame, RayAngle(w.chamber, r % per, per), half_width,
-                          radius);
-      if (cover < w.rim_radius_m) {
-        w.rim_radius_m = std::max(cover, 0.1 * radius);
-        w.rim_gap_m = 0.0;
-      }
-    }
+    if (lip_.rim_moves_radially()) CoverByLobe(d, origin_lip, frame, r % per, &w);
     const double wedge_radius = w.rim_radius_m > 0.0 ? w.rim_radius_m : radius;
     mjtNum dir[3];
     mju_mulMatVec3(dir, frame, ray_dirs_local_.data() + 3 * r);
@@ -416,6 +409,22 @@ void ChamberPressureSensor::Measure(const mjModel* m, const mjData* d,
   sample->sealed_area_m2 = leaks.sealed_area_m2;
   sample->rays_cast = rays;
   sample->time_s = d->time;
+}
+
+void ChamberPressureSensor::CoverByLobe(const mjData* d, const mjtNum origin[3],
+                                        const mjtNum frame[9], int ray_in_chamber,
+                                        OpeningWedge* w) const {
+  // A lobe folded in under the cup across the wedge's mouth covers it from where it reaches out,
+  // held against the throat: no curtain under it.
+  const CupGeometry& geo = config_.geometry;
+  const double radius = geo.opening_radius_m;
+  const double half_width = std::max(0.5 * w->dtheta_rad, kLobeSectorHalfRad);
+  const double angle = RayAngle(w->chamber, ray_in_chamber, geo.rays_per_chamber);
+  const double cover = lip_.MouthCover(d, origin, frame, angle, half_width, radius);
+  if (cover < w->rim_radius_m) {
+    w->rim_radius_m = std::max(cover, 0.1 * radius);
+    w->rim_gap_m = 0.0;
+  }
 }
 
 void ChamberPressureSensor::ApplyLipForces(const mjModel* m, mjData* d, int instance) const {

@@ -415,7 +415,7 @@ double LipBody::MouthCover(const mjData* d, const mjtNum origin[3], const mjtNum
                            double angle_rad, double half_width_rad, double radius_m) const {
   double cover = radius_m;
   const double reach = throat_depth_m_ + 4.0 * column_radius_m_;  // one thickness below
-  const double inside = radius_m - column_radius_m_;               // the throat ring's own: no
+  const double inside = radius_m - column_radius_m_;  // the throat ring itself is no lobe
   for (int v = 0; v < static_cast<int>(vertex_touching_.size()); ++v) {
     const mjtNum* p = d->flexvert_xpos + 3 * (column_adr_ + v);
     const mjtNum rel[3] = {p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]};
