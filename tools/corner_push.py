@@ -21,6 +21,7 @@ Usage (from the repository, after a build):
   MUJOCO_GL=egl SSC_PLUGIN_LIB=build/lib/libssc_plugin.so .venv/bin/python tools/corner_push.py \\
       --to-mm -3 --frames out/crimp --set thickness_mm=1.5
 """
+
 import argparse
 import os
 import pathlib
@@ -34,17 +35,34 @@ SPEED_M_S = 0.02
 
 
 def parse(p):
-    p.add_argument("--from-mm", type=float, default=16.0,
-                   help="where the cup is lowered, mm from the corner's far wall (x)")
-    p.add_argument("--to-mm", type=float, default=-3.0,
-                   help="the set point's end along the edge, mm from the far wall")
-    p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
-                   help="a skirt parameter of tools/make_flex_tool.py (repeatable)")
+    p.add_argument(
+        "--from-mm",
+        type=float,
+        default=16.0,
+        help="where the cup is lowered, mm from the corner's far wall (x)",
+    )
+    p.add_argument(
+        "--to-mm",
+        type=float,
+        default=-3.0,
+        help="the set point's end along the edge, mm from the far wall",
+    )
+    p.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="KEY=VALUE",
+        help="a skirt parameter of tools/make_flex_tool.py (repeatable)",
+    )
     p.add_argument("--frames", help="write PNG frames to this directory")
     p.add_argument("--frame-mm", type=float, default=2.0, help="set-point travel between frames")
     p.add_argument("--size", default="640x400", help="frame WIDTHxHEIGHT, px")
-    p.add_argument("--elevation", type=float, default=5,
-                   help="camera elevation, deg (+: from below the top face, under the cup)")
+    p.add_argument(
+        "--elevation",
+        type=float,
+        default=5,
+        help="camera elevation, deg (+: from below the top face, under the cup)",
+    )
     a = p.parse_args()
     if not 12 <= a.from_mm <= 30:
         p.error("--from-mm: in [12, 30] mm (the 23 mm rim clear of the far wall)")
@@ -94,6 +112,7 @@ class Frames:
 
     def save(self, label):
         from PIL import Image  # matplotlib's dependency, in the project's requirements
+
         d = self.rig.d
         self.cam.lookat[:] = [d.qpos[0], d.qpos[1], 0.0]
         self.renderer.update_scene(d, self.cam, self.opt)
@@ -138,10 +157,13 @@ def main():
         rig.press_to_preload(a.from_mm * 1e-3, y_m=INSET_M)
         frames = Frames(mujoco, rig, a) if a.frames else None
         inside, lowest = state(np, rig, throat_m)
-        print(f"lowered at x {a.from_mm:.1f} mm: bellows {rig.bellows_n():.2f} N, the lip plane "
-              f"{1e3 * (rig_module.TOOL_Z_M - rig.d.qpos[2]):.2f} mm below the top face, lowest "
-              f"vertex {lowest:+.2f} mm, chambers {np.round(rig.pressures()).astype(int).tolist()}"
-              f" Pa", flush=True)
+        print(
+            f"lowered at x {a.from_mm:.1f} mm: bellows {rig.bellows_n():.2f} N, the lip plane "
+            f"{1e3 * (rig_module.TOOL_Z_M - rig.d.qpos[2]):.2f} mm below the top face, lowest "
+            f"vertex {lowest:+.2f} mm, chambers {np.round(rig.pressures()).astype(int).tolist()}"
+            f" Pa",
+            flush=True,
+        )
         if frames:
             print(frames.save("lowered"))
         start, end = a.from_mm * 1e-3, a.to_mm * 1e-3
@@ -153,9 +175,12 @@ def main():
             mujoco.mj_step(rig.m, rig.d)
             if k % per_report == 0 or k == steps:
                 inside, lowest = state(np, rig, throat_m)
-                print(f"set {1e3 * rig.d.ctrl[0]:+6.2f} cup {1e3 * rig.d.qpos[0]:+6.2f} mm: "
-                      f"chambers {np.round(rig.pressures()).astype(int).tolist()} Pa, "
-                      f"{inside} vertices inside the throat, lowest {lowest:+.2f} mm", flush=True)
+                print(
+                    f"set {1e3 * rig.d.ctrl[0]:+6.2f} cup {1e3 * rig.d.qpos[0]:+6.2f} mm: "
+                    f"chambers {np.round(rig.pressures()).astype(int).tolist()} Pa, "
+                    f"{inside} vertices inside the throat, lowest {lowest:+.2f} mm",
+                    flush=True,
+                )
             if frames and (k % per_frame == 0 or k == steps):
                 print(frames.save(f"x{1e3 * rig.d.ctrl[0]:+.1f}mm"))
         mujoco.mj_step(rig.m, rig.d, int(round(0.3 / rig.m.opt.timestep)))
@@ -164,10 +189,13 @@ def main():
             print(frames.save("held"))
         lowered = rig_module.Rig(rig_module.concave_corner(), tool=tool)
         lowered.press_to_preload(rig.d.qpos[0], y_m=INSET_M)
-        print(f"held at x {1e3 * rig.d.qpos[0]:+.2f} mm: chambers pushed "
-              f"{np.round(rig.pressures()).astype(int).tolist()} / lowered there "
-              f"{np.round(lowered.pressures()).astype(int).tolist()} Pa; {inside} vertices "
-              f"inside the throat, lowest {lowest:+.2f} mm", flush=True)
+        print(
+            f"held at x {1e3 * rig.d.qpos[0]:+.2f} mm: chambers pushed "
+            f"{np.round(rig.pressures()).astype(int).tolist()} / lowered there "
+            f"{np.round(lowered.pressures()).astype(int).tolist()} Pa; {inside} vertices "
+            f"inside the throat, lowest {lowest:+.2f} mm",
+            flush=True,
+        )
     finally:
         if variant:
             os.remove(variant)

@@ -15,6 +15,7 @@ A variant for a sensitivity run: tools/make_flex_tool.py --set height_mm=2.5 --s
 --out PATH writes the model with those values to PATH (and nothing else; the values must be
 numbers, the keys SKIRT's).
 """
+
 import math
 import pathlib
 import re
@@ -24,24 +25,43 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 # name: (value, unit, range argued from the hardware)
 SKIRT = {
-    "throat_radius_mm": (5.5, "mm", "published: the 11 mm opening (Fig. 1c), where the chamber "
-                         "walls end and the skirt starts"),
+    "throat_radius_mm": (
+        5.5,
+        "mm",
+        "published: the 11 mm opening (Fig. 1c), where the chamber walls end and the skirt starts",
+    ),
     "rim_radius_mm": (11.5, "mm", "published: the 23 mm outer diameter is the lip's rim (Fig. 1b)"),
-    "height_mm": (4.0, "mm", "2-4: the throat stands this far above the rim plane; in Fig. 1b "
-                  "the lip below the bellows flange is about a quarter to a third of its 23 mm "
-                  "rim as tall (6-7 mm with the flange), and the walls end about that far above "
-                  "the lip plane (Fig. 1c); the tall end, with flare and thickness at theirs, is "
-                  "the bell that carries the 1.5 N preload standing, as in Fig. 11 "
-                  "(docs/flex_skirt.md)"),
-    "flare": (2.0, "", "1-2: the profile's exponent, z = -height (1 - s)^flare from throat (s 0) "
-              "to rim (s 1); 1 is a straight cone; Fig. 1b and 11 show a bell that leaves the "
-              "throat steeply and meets the object nearly flat at the rim"),
-    "thickness_mm": (1.0, "mm", "0.5-1.0: translucent in Fig. 1c (the walls show through), so "
-                     "not over 1 mm; a cast lip thinner than 0.5 mm tears"),
-    "young_mpa": (2.0, "MPa", "1.2-2.0: Shore 40A (Mold Max 40, the lab's default cup); "
-                  "Gent's relation gives 1.69 MPa at 40A, 1.2-2.0 over 35-45A; the range's end "
-                  "at which issue 25's corner push folds a lobe over the facing chamber and "
-                  "blocks it, as Fig. 11 shows (at 1.7 only part-covered; docs/flex_skirt.md)"),
+    "height_mm": (
+        4.0,
+        "mm",
+        "2-4: the throat stands this far above the rim plane; in Fig. 1b "
+        "the lip below the bellows flange is about a quarter to a third of its 23 mm "
+        "rim as tall (6-7 mm with the flange), and the walls end about that far above "
+        "the lip plane (Fig. 1c); the tall end, with flare and thickness at theirs, is "
+        "the bell that carries the 1.5 N preload standing, as in Fig. 11 "
+        "(docs/flex_skirt.md)",
+    ),
+    "flare": (
+        2.0,
+        "",
+        "1-2: the profile's exponent, z = -height (1 - s)^flare from throat (s 0) "
+        "to rim (s 1); 1 is a straight cone; Fig. 1b and 11 show a bell that leaves the "
+        "throat steeply and meets the object nearly flat at the rim",
+    ),
+    "thickness_mm": (
+        1.0,
+        "mm",
+        "0.5-1.0: translucent in Fig. 1c (the walls show through), so "
+        "not over 1 mm; a cast lip thinner than 0.5 mm tears",
+    ),
+    "young_mpa": (
+        2.0,
+        "MPa",
+        "1.2-2.0: Shore 40A (Mold Max 40, the lab's default cup); "
+        "Gent's relation gives 1.69 MPa at 40A, 1.2-2.0 over 35-45A; the range's end "
+        "at which issue 25's corner push folds a lobe over the facing chamber and "
+        "blocks it, as Fig. 11 shows (at 1.7 only part-covered; docs/flex_skirt.md)",
+    ),
     # MuJoCo's 2-D shell bends this much more than a Kirchhoff plate of the same E, t and nu
     # (a clamped strip under uniform load, mesh-converged; tests/plugin/flex_lip_test.py measures it):
     # the MJCF modulus is the material's times this, so the skirt bends as the silicone would.
@@ -57,17 +77,29 @@ SKIRT = {
     # The bellows between the cup's flange and the chamber body: one axial spring (Fig. 1b: a
     # single convolution above the lip). The approach presses until the transducer reads the
     # preload; this spring and the skirt share it.
-    "bellows_n_per_mm": (1.5, "N/mm", "0.5-3: the 1.5 N preload compresses a single-convolution "
-                         "silicone bellows by 0.5-3 mm; 1.5 N/mm is the segment lip's axial "
-                         "stiffness (1 mm at 1.5 N)"),
-    "bellows_travel_mm": (3.0, "mm", "2-4: the bellows' free travel either way before it bottoms out or stretches taut"),
+    "bellows_n_per_mm": (
+        1.5,
+        "N/mm",
+        "0.5-3: the 1.5 N preload compresses a single-convolution "
+        "silicone bellows by 0.5-3 mm; 1.5 N/mm is the segment lip's axial "
+        "stiffness (1 mm at 1.5 N)",
+    ),
+    "bellows_travel_mm": (
+        3.0,
+        "mm",
+        "2-4: the bellows' free travel either way before it bottoms out or stretches taut",
+    ),
     "chamber_body_g": (5.0, "g", "3-8: the silicone chamber body and walls below the bellows"),
     # The four chamber walls (the cross that splits the throat into quadrants) are moulded with
     # the chamber body: stiff in their own plane, so the model makes each a rigid plate that ends
     # at the throat (Fig. 1c: the "+" stands only inside the 11 mm opening).
     "wall_thickness_mm": (0.8, "mm", "0.6-1.0: the lab's 2-D model uses 0.8 mm"),
-    "rings": (5, "", "vertex rings from the pinned throat to the rim: 4 rows of elements across "
-              "the 6 mm span, so a lobe can fold (cost grows with rings x sectors)"),
+    "rings": (
+        5,
+        "",
+        "vertex rings from the pinned throat to the rim: 4 rows of elements across "
+        "the 6 mm span, so a lobe can fold (cost grows with rings x sectors)",
+    ),
     "sectors": (24, "", "vertices per ring: 3 mm apart on the rim, 1.4 mm at the throat"),
 }
 
@@ -87,7 +119,9 @@ def contact_radius_m():
 def profile(f):
     """(radius, height above the rim's centre line) in metres at s = f from throat to rim."""
     r_throat, r_rim = value("throat_radius_mm") * 1e-3, value("rim_radius_mm") * 1e-3
-    return r_throat + f * (r_rim - r_throat), value("height_mm") * 1e-3 * (1.0 - f) ** value("flare")
+    return r_throat + f * (r_rim - r_throat), value("height_mm") * 1e-3 * (1.0 - f) ** value(
+        "flare"
+    )
 
 
 def skirt_flexcomp():
@@ -103,7 +137,9 @@ def skirt_flexcomp():
     for i in range(rings - 1):
         for j in range(sectors):
             a, b, c, d = vid(i, j), vid(i, j + 1), vid(i + 1, j), vid(i + 1, j + 1)
-            elements += [(a, b, c), (b, d, c)] if (i + rings - 1) % 2 == 0 else [(a, b, d), (a, d, c)]
+            elements += (
+                [(a, b, c), (b, d, c)] if (i + rings - 1) % 2 == 0 else [(a, b, d), (a, d, c)]
+            )
     point = " ".join("%.6f %.6f %.6f" % p for p in points)
     element = " ".join("%d %d %d" % e for e in elements)
     pin = " ".join(str(vid(0, j)) for j in range(sectors))
@@ -112,14 +148,14 @@ def skirt_flexcomp():
                  plane; the pressure plugin reads its columns and loads it with each chamber's
                  vacuum. -->
             <flexcomp name="skirt" type="direct" dim="2" pos="0 0 {LIP_PLANE_M - contact_radius_m():.6f}"
-                      radius="{contact_radius_m():.6f}" mass="{value('mass_g') * 1e-3:.6f}"
+                      radius="{contact_radius_m():.6f}" mass="{value("mass_g") * 1e-3:.6f}"
                       rgba="0.15 0.35 0.85 1" group="4" point="{point}" element="{element}">
-              <elasticity young="{value('young_mpa') * value('shell_bending_correction') * 1e6:.6g}"
-                          poisson="{value('poisson')}"
-                          thickness="{value('thickness_mm') * 1e-3:.6f}" damping="{value('damping_s')}"
+              <elasticity young="{value("young_mpa") * value("shell_bending_correction") * 1e6:.6g}"
+                          poisson="{value("poisson")}"
+                          thickness="{value("thickness_mm") * 1e-3:.6f}" damping="{value("damping_s")}"
                           elastic2d="both"/>
               <contact condim="3" selfcollide="none" contype="1" conaffinity="0"
-                       friction="{value('friction')} 0.005 0.0001"
+                       friction="{value("friction")} 0.005 0.0001"
                        solref="{contact_solref()}"
                        solimp="0.95 0.99 0.0005"/>
               <pin id="{pin}"/>
@@ -136,15 +172,18 @@ def chamber_walls():
     z_edge = LIP_PLANE_M - height  # the skirt's underside at the throat
     z_top = z_edge - 3e-3
     half_r = 0.5 * (r_throat - cr)
-    lines = ["            <!-- The chamber walls (tools/make_flex_tool.py): rigid in their plane;"
-             " they end at the throat. -->"]
+    lines = [
+        "            <!-- The chamber walls (tools/make_flex_tool.py): rigid in their plane;"
+        " they end at the throat. -->"
+    ]
     for k in range(4):
         a = 0.5 * math.pi * k  # the quadrant boundaries (plugin/pneumatics/cup_geometry.h)
         c, s = math.cos(a), math.sin(a)
         lines.append(
             f'            <geom name="wall_{k}" type="box" size="{half_r:.6f} {half_t:.6f} '
             f'{0.5 * (z_edge - z_top):.6f}" pos="{half_r * c:.6f} {half_r * s:.6f} '
-            f'{0.5 * (z_edge + z_top):.6f}" quat="{math.cos(a / 2):.6f} 0 0 {math.sin(a / 2):.6f}" {wall_contact()}/>')
+            f'{0.5 * (z_edge + z_top):.6f}" quat="{math.cos(a / 2):.6f} 0 0 {math.sin(a / 2):.6f}" {wall_contact()}/>'
+        )
     return "\n".join(lines) + "\n"
 
 
@@ -155,7 +194,8 @@ def chamber_body():
     mass = value("chamber_body_g") * 1e-3
     throat_z = LIP_PLANE_M - value("height_mm") * 1e-3
     r_body = value("throat_radius_mm") * 1e-3 + value("wall_thickness_mm") * 1e-3
-    return f"""          <!-- The bellows (tools/make_flex_tool.py): the chamber body hangs from the cup on one
+    return (
+        f"""          <!-- The bellows (tools/make_flex_tool.py): the chamber body hangs from the cup on one
                axial spring; negative = pushed up (compressed). -->
           <body name="chamber_body" gravcomp="1">
             <joint name="bellows" type="slide" axis="0 0 1" range="{-value("bellows_travel_mm") * 1e-3:.6f} {value("bellows_travel_mm") * 1e-3:.6f}"
@@ -163,7 +203,11 @@ def chamber_body():
             <inertial pos="0 0 {throat_z - 2e-3:.6f}" mass="{mass:.6f}" diaginertia="1e-7 1e-7 1e-7"/>
             <geom name="chamber_wall" class="rigid" type="cylinder" size="{r_body:.6f} 0.0070"
                   pos="0 0 {throat_z - 0.0070:.6f}" mass="0" rgba="0.45 0.8 0.7 0.6"/>
-""" + chamber_walls() + skirt_flexcomp() + "          </body>\n"
+"""
+        + chamber_walls()
+        + skirt_flexcomp()
+        + "          </body>\n"
+    )
 
 
 def contact_solref():
@@ -173,9 +217,11 @@ def contact_solref():
 def wall_contact():
     """The walls touch the skirt (and objects) with the skirt's own contact; group 3: no ray of
     the pressure sensor sees them; their mass is in the chamber body's."""
-    return (f'group="3" contype="0" conaffinity="1" condim="3" mass="0" rgba="0.95 0.55 0.1 0.6" '
-            f'friction="{value("friction")} 0.005 0.0001" solref="{contact_solref()}" '
-            f'solimp="0.95 0.99 0.0005"')
+    return (
+        f'group="3" contype="0" conaffinity="1" condim="3" mass="0" rgba="0.95 0.55 0.1 0.6" '
+        f'friction="{value("friction")} 0.005 0.0001" solref="{contact_solref()}" '
+        f'solimp="0.95 0.99 0.0005"'
+    )
 
 
 DOC = ROOT / "docs" / "flex_skirt.md"
@@ -196,11 +242,19 @@ def doc_with_table(doc):
 def parse_args(argv):
     """(check, overrides, out) from argv; exits with a message naming a bad argument."""
     import argparse
-    parser = argparse.ArgumentParser(description="Writes models/ssc_tool_flex.xml and the skirt "
-                                     "table in docs/flex_skirt.md, or a variant model with --out.")
+
+    parser = argparse.ArgumentParser(
+        description="Writes models/ssc_tool_flex.xml and the skirt "
+        "table in docs/flex_skirt.md, or a variant model with --out."
+    )
     parser.add_argument("--check", action="store_true", help="fail when either file is stale")
-    parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
-                        help="override a skirt parameter (only with --out): " + ", ".join(SKIRT))
+    parser.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="KEY=VALUE",
+        help="override a skirt parameter (only with --out): " + ", ".join(SKIRT),
+    )
     parser.add_argument("--out", help="write the variant model here instead (docs untouched)")
     args = parser.parse_args(argv)
     overrides = {}
@@ -230,7 +284,7 @@ def tool_xml(walls=True, vacuum_load=True):
     """The flex tool's MJCF; tests build variants without the walls or the vacuum load."""
     text = (ROOT / "models" / "ssc_tool.xml").read_text()
     # The segment lip and its carrier body go; the skirt takes their place.
-    start = text.index('          <!-- The lip\'s carrier')
+    start = text.index("          <!-- The lip's carrier")
     end = text.index("        </body>\n      </body>\n    </body>\n  </worldbody>")
     body = chamber_body() if walls else chamber_body().replace(chamber_walls(), "")
     text = text[:start] + body + text[end:]
@@ -240,15 +294,22 @@ def tool_xml(walls=True, vacuum_load=True):
     text = re.sub(r"\n  <!-- Rigid lip carrier.*?</equality>\n", "\n", text, flags=re.S)
     text = text.replace('<mujoco model="ssc_tool">', '<mujoco model="ssc_tool_flex">')
     # Each chamber's vacuum loads the skirt and the chamber body.
-    text = text.replace('<instance name="pressure"/>',
-                        '<instance name="pressure">\n        <config key="lip_vacuum_load" '
-                        f'value="{int(vacuum_load)}"/>\n      </instance>')
-    text = re.sub(r"<!--\n  Smart Suction Cup tool:", "<!--\n  GENERATED by tools/make_flex_tool.py from ssc_tool.xml: do not edit.\n"
-                  "  The same tool with a chamber body on a bellows spring, its walls ending at the 11 mm\n"
-                  "  throat, and a deformable skirt (a 2-D flex) from the throat to the 23 mm rim\n"
-                  "  instead of 16 segments and the rigid body; each chamber's vacuum loads it.\n"
-                  "  Scenes using it must set integrator=\"discrete\" (MuJoCo integrates 2-D flex\n"
-                  "  elasticity only there).\n\n  Smart Suction Cup tool:", text, count=1)
+    text = text.replace(
+        '<instance name="pressure"/>',
+        '<instance name="pressure">\n        <config key="lip_vacuum_load" '
+        f'value="{int(vacuum_load)}"/>\n      </instance>',
+    )
+    text = re.sub(
+        r"<!--\n  Smart Suction Cup tool:",
+        "<!--\n  GENERATED by tools/make_flex_tool.py from ssc_tool.xml: do not edit.\n"
+        "  The same tool with a chamber body on a bellows spring, its walls ending at the 11 mm\n"
+        "  throat, and a deformable skirt (a 2-D flex) from the throat to the 23 mm rim\n"
+        "  instead of 16 segments and the rigid body; each chamber's vacuum loads it.\n"
+        '  Scenes using it must set integrator="discrete" (MuJoCo integrates 2-D flex\n'
+        "  elasticity only there).\n\n  Smart Suction Cup tool:",
+        text,
+        count=1,
+    )
     return text
 
 

@@ -2,6 +2,7 @@
 pressed at the preload onto a plate whose straight edge is rounded with radius r, its centre the
 same distance inside where the rounding starts. Over a rounding the skirt stands off the falling
 surface instead of draping onto it, and the larger the radius, the smaller the differential."""
+
 import importlib.util
 import os
 import unittest
@@ -11,7 +12,8 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 spec = importlib.util.spec_from_file_location(
-    "flex_lip_test", os.path.join(HERE, "..", "plugin", "flex_lip_test.py"))
+    "flex_lip_test", os.path.join(HERE, "..", "plugin", "flex_lip_test.py")
+)
 flex = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(flex)
 
@@ -22,10 +24,12 @@ RADII_MM = (2.0, 4.0, 8.0)
 def rounded_edge(radius_m):
     """A plate (top z = 0) over x < 0, its edge along y at x = 0 rounded with radius_m."""
     r = radius_m
-    return (flex.box(((0.05 - r) / 2, 0.05, 0.005), (-(0.05 + r) / 2, 0, -0.005)) +
-            flex.box((r / 2, 0.05, (0.01 - r) / 2), (-r / 2, 0, -r - (0.01 - r) / 2)) +
-            '<geom type="cylinder" size="%g 0.05" pos="%g 0 %g" euler="1.5707963 0 0" '
-            'group="2" contype="1" conaffinity="1"/>' % (r, -r, -r))
+    return (
+        flex.box(((0.05 - r) / 2, 0.05, 0.005), (-(0.05 + r) / 2, 0, -0.005))
+        + flex.box((r / 2, 0.05, (0.01 - r) / 2), (-r / 2, 0, -r - (0.01 - r) / 2))
+        + '<geom type="cylinder" size="%g 0.05" pos="%g 0 %g" euler="1.5707963 0 0" '
+        'group="2" contype="1" conaffinity="1"/>' % (r, -r, -r)
+    )
 
 
 def surface_z(x_m, radius_m):
@@ -50,8 +54,11 @@ class RoundingTest(unittest.TestCase):
             rig = flex.Rig(rounded_edge(r_mm * 1e-3)).press_to_preload(-INSIDE_M)
             p = rig.pressures()
             skirt = rig.rings().reshape(-1, 3)
-            gaps = [v[2] - rig.m.flex_radius[0] - surface_z(v[0], r_mm * 1e-3) for v in skirt
-                    if -r_mm * 1e-3 < v[0] < 0]
+            gaps = [
+                v[2] - rig.m.flex_radius[0] - surface_z(v[0], r_mm * 1e-3)
+                for v in skirt
+                if -r_mm * 1e-3 < v[0] < 0
+            ]
             cls.runs[r_mm] = (p, np.array(gaps))
 
     def test_the_skirt_over_the_rounding_lifts_off_the_surface(self):

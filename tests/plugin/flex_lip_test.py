@@ -3,6 +3,7 @@ pressure plugin reading the deformed skirt under its chambers' vacuum: flattened
 plate at the preload, a notch its unsupported stretch sags into, a lobe over a chamber mouth that
 blocks it (held there, and folded there by issue 25's push into a concave corner), the same run
 twice. The cup hangs from a stiff x/y/z position servo (a flex cannot hang from a mocap body)."""
+
 import importlib.util
 import os
 import tempfile
@@ -20,7 +21,8 @@ PRELOAD_N = 1.5  # the approach's press (paper)
 
 def make_flex_tool():
     spec = importlib.util.spec_from_file_location(
-        "make_flex_tool", os.path.join(ROOT, "tools", "make_flex_tool.py"))
+        "make_flex_tool", os.path.join(ROOT, "tools", "make_flex_tool.py")
+    )
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
@@ -43,8 +45,10 @@ def tool_variant(walls=True, vacuum_load=True):
 
 
 def box(size, pos):
-    return ('<geom type="box" size="%g %g %g" pos="%g %g %g" group="2" contype="1" '
-            'conaffinity="1"/>' % (tuple(size) + tuple(pos)))
+    return (
+        '<geom type="box" size="%g %g %g" pos="%g %g %g" group="2" contype="1" '
+        'conaffinity="1"/>' % (tuple(size) + tuple(pos))
+    )
 
 
 PLATE = box((0.05, 0.05, 0.005), (0, 0, -0.005))
@@ -55,26 +59,33 @@ def notch(width_m, depth_m, inner_end_m=0.004):
     +x, but not across the opening."""
     size = 0.05
     side = (size - width_m / 2) / 2
-    return (box((size, size, 0.005 - depth_m / 2), (0, 0, -0.005 - depth_m / 2)) +
-            box((size, side, depth_m / 2), (0, -(width_m / 2 + side), -depth_m / 2)) +
-            box((size, side, depth_m / 2), (0, width_m / 2 + side, -depth_m / 2)) +
-            box(((inner_end_m + size) / 2, width_m / 2, depth_m / 2),
-                ((inner_end_m - size) / 2, 0, -depth_m / 2)))
+    return (
+        box((size, size, 0.005 - depth_m / 2), (0, 0, -0.005 - depth_m / 2))
+        + box((size, side, depth_m / 2), (0, -(width_m / 2 + side), -depth_m / 2))
+        + box((size, side, depth_m / 2), (0, width_m / 2 + side, -depth_m / 2))
+        + box(
+            ((inner_end_m + size) / 2, width_m / 2, depth_m / 2),
+            ((inner_end_m - size) / 2, 0, -depth_m / 2),
+        )
+    )
 
 
 def concave_corner():
     """A plate (top z = 0) with a 270-degree corner at the origin: the quadrant x > 0, y > 0 is a
     10 mm drop."""
-    return box((0.05, 0.025, 0.005), (0, -0.025, -0.005)) + box((0.025, 0.025, 0.005),
-                                                                  (-0.025, 0.025, -0.005))
+    return box((0.05, 0.025, 0.005), (0, -0.025, -0.005)) + box(
+        (0.025, 0.025, 0.005), (-0.025, 0.025, -0.005)
+    )
 
 
 def groove(width_m, depth_m):
     """A plate (top z = 0) with a groove along y through x = 0."""
     half = 0.025 - width_m / 4
-    return (box((0.05, 0.05, 0.005 - depth_m / 2), (0, 0, -0.005 - depth_m / 2)) +
-            box((half, 0.05, depth_m / 2), (-(width_m / 2 + half), 0, -depth_m / 2)) +
-            box((half, 0.05, depth_m / 2), (width_m / 2 + half, 0, -depth_m / 2)))
+    return (
+        box((0.05, 0.05, 0.005 - depth_m / 2), (0, 0, -0.005 - depth_m / 2))
+        + box((half, 0.05, depth_m / 2), (-(width_m / 2 + half), 0, -depth_m / 2))
+        + box((half, 0.05, depth_m / 2), (width_m / 2 + half, 0, -depth_m / 2))
+    )
 
 
 class Rig:
@@ -85,16 +96,18 @@ class Rig:
         servo = '<position joint="%s" kp="20000" kv="400"/>'
         bodies = ""
         for axis, vec, mass in (("x", "1 0 0", 2), ("y", "0 1 0", 2), ("z", "0 0 1", 1)):
-            bodies += ('<body name="g%s" gravcomp="1"><joint name="g%s" type="slide" axis="%s" '
-                       'damping="20" armature="1"/><inertial pos="0 0 0" mass="%d" '
-                       'diaginertia="0.01 0.01 0.01"/>' % (axis, axis, vec, mass))
+            bodies += (
+                '<body name="g%s" gravcomp="1"><joint name="g%s" type="slide" axis="%s" '
+                'damping="20" armature="1"/><inertial pos="0 0 0" mass="%d" '
+                'diaginertia="0.01 0.01 0.01"/>' % (axis, axis, vec, mass)
+            )
         xml = f"""<mujoco><compiler angle="radian" autolimits="true"/>
 <option timestep="0.002" integrator="{integrator}"/>
-<asset><model name="ssc_tool" file="{os.path.join(ROOT, 'models', tool)}"/></asset>
+<asset><model name="ssc_tool" file="{os.path.join(ROOT, "models", tool)}"/></asset>
 <worldbody>{objects}{bodies}
 <body name="probe" quat="0 0.70710678 -0.70710678 0" gravcomp="1">
 <attach model="ssc_tool" body="tool" prefix="ssc_"/></body></body></body></body></worldbody>
-<actuator>{servo % 'gx'}{servo % 'gy'}{servo % 'gz'}</actuator></mujoco>"""
+<actuator>{servo % "gx"}{servo % "gy"}{servo % "gz"}</actuator></mujoco>"""
         self.m = mujoco.MjModel.from_xml_string(xml)
         self.d = mujoco.MjData(self.m)
         sensor = mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_SENSOR, "ssc_chamber_pressure")
@@ -114,8 +127,9 @@ class Rig:
         j = mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_JOINT, "ssc_bellows")
         return -self.m.jnt_stiffness[j] * self.d.qpos[self.m.jnt_qposadr[j]]
 
-    def press_to_preload(self, x_m, y_m=0.0, force_n=PRELOAD_N, step_mm=0.1, settle_s=0.05,
-                         hold_s=0.3):
+    def press_to_preload(
+        self, x_m, y_m=0.0, force_n=PRELOAD_N, step_mm=0.1, settle_s=0.05, hold_s=0.3
+    ):
         """Lowers the lip from 2 mm above the top face in steps until the bellows carries
         force_n (the approach's stop on the transducer), then holds."""
         self.press(x_m, -2.0 + step_mm, seconds=settle_s, y_m=y_m)
@@ -135,19 +149,20 @@ class Rig:
             self.d.ctrl[0] = start + (to_m - start) * k / steps
             mujoco.mj_step(self.m, self.d)
             rim = self.rim()
-            closest = min(closest, np.hypot(rim[:, 0] - self.d.qpos[0],
-                                            rim[:, 1] - self.d.qpos[1]).min())
+            closest = min(
+                closest, np.hypot(rim[:, 0] - self.d.qpos[0], rim[:, 1] - self.d.qpos[1]).min()
+            )
         mujoco.mj_step(self.m, self.d, int(round(hold_s / self.m.opt.timestep)))
         return closest
 
     def pressures(self):
-        return self.d.sensordata[self.adr:self.adr + 4].copy()
+        return self.d.sensordata[self.adr : self.adr + 4].copy()
 
     def rings(self):
         """World positions of the skirt's vertices, ring by ring from the pinned top."""
         adr, n = self.m.flex_vertadr[0], self.m.flex_vertnum[0]
         sectors = int(skirt_parameters()["sectors"])
-        return self.d.flexvert_xpos[adr:adr + n].reshape(-1, sectors, 3)
+        return self.d.flexvert_xpos[adr : adr + n].reshape(-1, sectors, 3)
 
     def rim(self):
         """World positions of the skirt's free rim (its last ring)."""
@@ -170,15 +185,15 @@ class Rig:
             rotation = self.d.xmat[cup].reshape(3, 3)
             for v, target in targets.items():
                 shift = rotation.T @ (np.asarray(target) - self.d.flexvert_xpos[adr + v])
-                self.d.qpos[qadr[v]:qadr[v] + 3] += shift
-        qpos = {v: (qadr[v], self.d.qpos[qadr[v]:qadr[v] + 3].copy()) for v in targets}
+                self.d.qpos[qadr[v] : qadr[v] + 3] += shift
+        qpos = {v: (qadr[v], self.d.qpos[qadr[v] : qadr[v] + 3].copy()) for v in targets}
         cup_qpos = self.d.qpos[:3].copy()  # the cup held too: the vacuum would lift the rest
         for _ in range(int(round(seconds / self.m.opt.timestep))):
             self.d.qpos[:3] = cup_qpos
             self.d.qvel[:3] = 0
             for v, (q, value) in qpos.items():
-                self.d.qpos[q:q + 3] = value
-                self.d.qvel[dof[v]:dof[v] + 3] = 0
+                self.d.qpos[q : q + 3] = value
+                self.d.qvel[dof[v] : dof[v] + 3] = 0
             mujoco.mj_step(self.m, self.d)
         return self
 
@@ -187,8 +202,12 @@ class ShellTest(unittest.TestCase):
     def test_the_model_and_its_doc_table_are_generated_from_the_skirt_parameters(self):
         import subprocess
         import sys
-        run = subprocess.run([sys.executable, os.path.join(ROOT, "tools", "make_flex_tool.py"),
-                              "--check"], capture_output=True, text=True)
+
+        run = subprocess.run(
+            [sys.executable, os.path.join(ROOT, "tools", "make_flex_tool.py"), "--check"],
+            capture_output=True,
+            text=True,
+        )
         self.assertEqual(run.returncode, 0, run.stderr)
 
     def test_a_strip_of_the_skirt_material_bends_as_plate_theory_predicts(self):
@@ -204,22 +223,24 @@ class ShellTest(unittest.TestCase):
         tris = []
         for i in range(nx):
             for j in range(ny):
-                tris += [(vid(i, j), vid(i + 1, j), vid(i + 1, j + 1)),
-                         (vid(i, j), vid(i + 1, j + 1), vid(i, j + 1))]
+                tris += [
+                    (vid(i, j), vid(i + 1, j), vid(i + 1, j + 1)),
+                    (vid(i, j), vid(i + 1, j + 1), vid(i, j + 1)),
+                ]
         pin = [vid(i, j) for i in (0, 1) for j in range(ny + 1)]
         xml = f"""<mujoco><option timestep="0.001" integrator="discrete"/><worldbody>
 <body name="b"><flexcomp name="s" type="direct" dim="2" radius="0.0002"
- mass="{q * length * width / 9.81}" point="{' '.join('%g %g %g' % p for p in pts)}"
- element="{' '.join('%d %d %d' % e for e in tris)}">
-<elasticity young="{young * s['shell_bending_correction']}" poisson="{nu}" thickness="{t}"
- damping="{s['damping_s']}" elastic2d="both"/><contact contype="0" conaffinity="0"/>
-<pin id="{' '.join(map(str, pin))}"/></flexcomp></body></worldbody></mujoco>"""
+ mass="{q * length * width / 9.81}" point="{" ".join("%g %g %g" % p for p in pts)}"
+ element="{" ".join("%d %d %d" % e for e in tris)}">
+<elasticity young="{young * s["shell_bending_correction"]}" poisson="{nu}" thickness="{t}"
+ damping="{s["damping_s"]}" elastic2d="both"/><contact contype="0" conaffinity="0"/>
+<pin id="{" ".join(map(str, pin))}"/></flexcomp></body></worldbody></mujoco>"""
         m = mujoco.MjModel.from_xml_string(xml)
         d = mujoco.MjData(m)
         mujoco.mj_step(m, d, 2000)
         tip_m = -d.flexvert_xpos[[vid(nx, j) for j in range(ny + 1)], 2].mean()
         free = length - length / nx
-        theory_m = q * free ** 4 / (8 * young * t ** 3 / (12 * (1 - nu ** 2)))
+        theory_m = q * free**4 / (8 * young * t**3 / (12 * (1 - nu**2)))
         self.assertAlmostEqual(tip_m / theory_m, 1.0, delta=0.10)
 
 
