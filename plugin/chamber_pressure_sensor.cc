@@ -481,19 +481,18 @@ void ChamberPressureSensor::Visualize(const mjModel* m, mjData* d, const mjvOpti
 
 const ChamberPressureDiagnostics* FindChamberPressureDiagnostics(const mjModel* m, const mjData* d,
                                                                  std::string* why) {
-  int slot = -1;
+  // Called in the step (the F/T reader): counts, allocates nothing.
+  int slot = -1, first = -1, found = 0;
   const mjpPlugin* plugin = mjp_getPlugin(kChamberPressurePluginName, &slot);
-  std::vector<int> found;
   for (int i = 0; plugin != nullptr && i < m->nplugin; ++i) {
-    if (m->plugin[i] == slot && d->plugin_data[i] != 0) found.push_back(i);
+    if (m->plugin[i] == slot && d->plugin_data[i] != 0 && found++ == 0) first = i;
   }
-  if (found.size() == 1) return SensorOf(d, found[0]);
+  if (found == 1) return SensorOf(d, first);
   if (why != nullptr) {
-    *why = found.empty()
-               ? std::string("scene has no ") + kChamberPressurePluginName + " sensor"
-               : "scene has " + std::to_string(found.size()) + " " + kChamberPressurePluginName +
-                     " sensors (a cup each): a trial follows with one cup; remove the "
-                     "others";
+    *why = found == 0 ? std::string("scene has no ") + kChamberPressurePluginName + " sensor"
+                      : "scene has " + std::to_string(found) + " " + kChamberPressurePluginName +
+                            " sensors (a cup each): a trial follows with one cup; remove the "
+                            "others";
   }
   return nullptr;
 }
