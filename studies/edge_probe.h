@@ -22,7 +22,7 @@ struct ProbeReading {
   std::array<double, 4> sealed_area_mm2{};
   std::array<double, 4> leak_area_mm2{};
   int lip_contacts = 0;
-  // Reference formulas on the filtered pressures (docs/controller.md): differentials and the
+  // Reference formulas on the filtered pressures (docs/controllers.md): differentials and the
   // world-frame direction toward the object (g) and of travel with the object on the left.
   double pbar_pa = 0, dpx_pa = 0, dpy_pa = 0;
   double g_world_rad = 0, travel_world_rad = 0;
