@@ -13,7 +13,7 @@
 #include "compare/frames.h"
 #include "compare/replay.h"
 #include "compare/twin_log.h"
-#include "controller/pure/trial_metrics.h"
+#include "controller/trial/trial_metrics.h"
 #include "runtime/trial.h"
 
 namespace ssc {

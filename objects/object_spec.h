@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "controller/pure/trial_goal.h"
+#include "controller/trial/trial_goal.h"
 #include "geometry/contour_path.h"
 #include "geometry/dimensions.h"
 #include "objects/fillet_profile.h"

@@ -20,11 +20,11 @@
 #include "controller/pure/contour_law.h"
 #include "controller/pure/controller.h"
 #include "controller/pure/controller_registry.h"
-#include "controller/pure/robot_effects.h"
-#include "controller/pure/trial_effects.h"
-#include "controller/pure/trial_goal.h"
-#include "controller/pure/trial_metrics.h"
-#include "controller/pure/trial_outcome.h"
+#include "controller/trial/robot_effects.h"
+#include "controller/trial/trial_effects.h"
+#include "controller/trial/trial_goal.h"
+#include "controller/trial/trial_metrics.h"
+#include "controller/trial/trial_outcome.h"
 #include "geometry/dimensions.h"
 #include "plugin/chamber_pressure_sensor.h"
 #include "runtime/control_dispatch.h"
@@ -76,7 +76,7 @@ struct TrialConfig {
   double timeout_s = 120;        // follow phase limit, simulated seconds
   std::uint64_t seed = 1;        // sensor noise seed for this trial
   double log_period_s = 0.02;    // path sampling for metrics and the log
-  // The real loop, lip and sensors (controller/pure/robot_effects.h): the fitted set by
+  // The real loop, lip and sensors (controller/trial/robot_effects.h): the fitted set by
   // default (each step lands off target; each chamber keeps a tare offset); all zero
   // (`--effects off`) = the ideal loop.
   RobotEffectsParams effects = FittedRobotEffects();

@@ -12,9 +12,10 @@
 
 #include "common/csv_cell.h"
 #include "common/output_file.h"
-#include "controller/pure/trial_outcome.h"
+#include "controller/trial/trial_outcome.h"
 #include "studies/equivalence.h"
-#include "studies/map_scores.h"
+#include "studies/scores/map_scores.h"
+#include "studies/statistics/intervals.h"
 #include "studies/sweep_io.h"
 #include "studies/trial_io.h"
 #include "studies/trial_manifest.h"
@@ -225,15 +226,6 @@ std::vector<std::size_t> ParetoFront(const std::vector<std::array<double, 2>>& p
   std::sort(front.begin(), front.end(),
             [&](std::size_t a, std::size_t b) { return points[a][0] < points[b][0]; });
   return front;
-}
-
-double StudentT95(double dof) {
-  double lo = 1.0, hi = 100.0;  // t_0.975 lies in (1.96, 12.71] for dof >= 1
-  for (int k = 0; k < 100; ++k) {
-    const double mid = 0.5 * (lo + hi);
-    (StudentTwoSidedP(mid, dof) > 0.05 ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
 }
 
 std::string TuneCsvHeader(const std::vector<TuneKey>& keys) {

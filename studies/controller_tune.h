@@ -60,9 +60,6 @@ double TuneScore(int successes, int trials, double mean_speed_mm_s, double min_s
 // each; a point equal to another in both is kept once, the first), in order of rising speed.
 std::vector<std::size_t> ParetoFront(const std::vector<std::array<double, 2>>& speed_success);
 
-// The two-sided 95 % Student t quantile for `dof` degrees of freedom (dof >= 1).
-double StudentT95(double dof);
-
 // What one evaluation gave.
 struct TuneEvaluation {
   std::string label;           // "eval N", or a reference controller's name

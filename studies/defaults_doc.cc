@@ -3,7 +3,7 @@
 #include <sstream>
 
 #include "controller/pure/contour_law.h"
-#include "controller/pure/robot_effects.h"
+#include "controller/trial/robot_effects.h"
 #include "geometry/dimensions.h"
 #include "runtime/trial.h"
 #include "studies/success_map_fit.h"
@@ -66,7 +66,7 @@ std::string DefaultsMarkdown() {
         "off) | - | s | "
      << kObjectStallWindowS << " (object trials), " << trial.thresholds.stall_window_s
      << " (off: disk trials) | - |\n\n"
-     << "## Robot effects (`--effects key=value,...`; controller/pure/robot_effects.h)\n\n"
+     << "## Robot effects (`--effects key=value,...`; controller/trial/robot_effects.h)\n\n"
         "`--effects off` sets every key whose range starts at 0 to 0 (the ideal loop).\n\n"
         "| key | unit | valid | default | fit range | what it is |\n"
         "| --- | --- | --- | --- | --- | --- |\n";

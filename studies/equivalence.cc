@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "studies/map_ceiling.h"
+#include "studies/statistics/intervals.h"
 
 namespace ssc {
 namespace {
@@ -43,35 +44,6 @@ double FisherP(const Hypergeometric& h, int x) {
   return std::min(1.0, sum);
 }
 
-// Continued fraction of the incomplete beta (modified Lentz).
-double BetaContinuedFraction(double x, double a, double b) {
-  constexpr double kTiny = 1e-300, kEps = 1e-15;
-  double c = 1, d = 1 - (a + b) * x / (a + 1);
-  if (std::fabs(d) < kTiny) d = kTiny;
-  d = 1 / d;
-  double h = d;
-  for (int m = 1; m <= 10000; ++m) {
-    const double m2 = 2.0 * m;
-    double num = m * (b - m) * x / ((a + m2 - 1) * (a + m2));
-    d = 1 + num * d;
-    if (std::fabs(d) < kTiny) d = kTiny;
-    c = 1 + num / c;
-    if (std::fabs(c) < kTiny) c = kTiny;
-    d = 1 / d;
-    h *= d * c;
-    num = -(a + m) * (a + b + m) * x / ((a + m2) * (a + m2 + 1));
-    d = 1 + num * d;
-    if (std::fabs(d) < kTiny) d = kTiny;
-    c = 1 + num / c;
-    if (std::fabs(c) < kTiny) c = kTiny;
-    d = 1 / d;
-    const double delta = d * c;
-    h *= delta;
-    if (std::fabs(delta - 1) < kEps) break;
-  }
-  return h;
-}
-
 // P(Binomial(n, q) >= k).
 double BinomialAtLeast(int n, double q, int k) {
   return ProbabilityAtLeast(std::vector<double>(static_cast<std::size_t>(n), q), k);
@@ -93,21 +65,6 @@ double FisherFalseAlarmChance(int n_a, int n_b, int successes, double alpha) {
     if (FisherP(h, x) <= alpha) chance += h.p[static_cast<std::size_t>(x - h.lo)];
   }
   return chance;
-}
-
-double RegularizedIncompleteBeta(double x, double a, double b) {
-  if (x <= 0) return 0;
-  if (x >= 1) return 1;
-  const double front = std::exp(std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) +
-                                a * std::log(x) + b * std::log1p(-x));
-  // The continued fraction converges fast for x < (a + 1) / (a + b + 2); else use the symmetry.
-  if (x < (a + 1) / (a + b + 2)) return front * BetaContinuedFraction(x, a, b) / a;
-  return 1 - front * BetaContinuedFraction(1 - x, b, a) / b;
-}
-
-double StudentTwoSidedP(double t, double dof) {
-  if (!std::isfinite(t)) return 0;
-  return RegularizedIncompleteBeta(dof / (dof + t * t), dof / 2, 0.5);
 }
 
 namespace {

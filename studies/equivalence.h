@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "studies/map_scores.h"
+#include "studies/scores/map_scores.h"
 
 namespace ssc {
 
@@ -37,11 +37,6 @@ double FisherExactP(int k_a, int n_a, int k_b, int n_b);
 // the arms' sizes and their total successes (exact: the hypergeometric law of the table). At
 // most alpha; 0 when no table with these margins can reach alpha (e.g. 20 successes of 20).
 double FisherFalseAlarmChance(int n_a, int n_b, int successes, double alpha);
-
-// The regularised incomplete beta function I_x(a, b) (a, b > 0, x in [0, 1]).
-double RegularizedIncompleteBeta(double x, double a, double b);
-// Two-sided p-value of Student's t with `dof` degrees of freedom (dof > 0).
-double StudentTwoSidedP(double t, double dof);
 
 // One arm's trials in a cell.
 struct ArmCounts {

@@ -4,8 +4,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "controller/pure/robot_effects.h"
-#include "studies/job_runner.h"
+#include "controller/trial/robot_effects.h"
+#include "studies/jobs/job_runner.h"
 #include "studies/success_map_fit.h"
 
 namespace ssc {

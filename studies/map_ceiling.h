@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "studies/map_scores.h"
+#include "studies/scores/map_scores.h"
 
 namespace ssc {
 

@@ -9,8 +9,9 @@
 #include "common/output_file.h"
 #include "common/strict_number.h"
 #include "objects/object_mjcf.h"
+#include "runtime/guarded_trial.h"
 #include "runtime/mujoco_model.h"
-#include "studies/job_runner.h"
+#include "studies/jobs/job_runner.h"
 #include "studies/object_trials.h"
 #include "studies/sweep_io.h"
 
@@ -276,6 +277,7 @@ bool RunObjectStudy(const ObjectStudySpec& spec,
   JobRunnerOptions options;
   options.threads = spec.threads;
   std::string write_error;
+  ScopedTrialErrorGuard guard;  // a MuJoCo error ends its trial as unstable, not the study
   const JobRunStats stats = RunJobs(set, options, [&](size_t j, const std::string& result) {
     if (result.empty()) return;  // interrupted: no row
     const size_t a = result.find('\n'), b = result.find('\n', a + 1);

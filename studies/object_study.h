@@ -12,7 +12,7 @@
 
 #include "controller/pure/contour_law.h"
 #include "controller/pure/controller_registry.h"
-#include "controller/pure/robot_effects.h"
+#include "controller/trial/robot_effects.h"
 #include "objects/object_spec.h"
 #include "studies/object_trials.h"
 

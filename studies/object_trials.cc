@@ -8,6 +8,7 @@
 
 #include "common/csv_cell.h"
 #include "geometry/dimensions.h"
+#include "runtime/guarded_trial.h"
 
 namespace ssc {
 
@@ -122,13 +123,13 @@ ObjectTrialRow RunObjectTrial(const mjModel* model, const ObjectSpec& spec,
   row.kind = ObjectKindName(spec.kind);
   row.param = spec.param;
   row.seed = seed;
-  std::string error;
   TrialConfig base;
   base.law = law;
   base.seed = seed;
   base.effects = effects;
   base.controller = controller;
-  row.result = RunTrial(model, ObjectTrialConfig(spec, base, stall), keep_log, &error);
+  row.result =
+      RunGuardedTrial(model, ObjectTrialConfig(spec, base, stall), nullptr, nullptr, keep_log);
   const double steps = row.result.sim_time_s / model->opt.timestep;
   row.step_cost_us = steps > 0 ? row.result.wall_time_s / steps * 1e6 : 0;
   row.approach_compression_mm = (spec.trial.surface_top_z_m - row.result.hold_height_m) * 1e3;

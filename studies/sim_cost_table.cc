@@ -12,6 +12,7 @@
 #include "compare/replay.h"
 #include "compare/twin_log.h"
 #include "geometry/dimensions.h"
+#include "runtime/guarded_trial.h"
 #include "runtime/mujoco_model.h"
 #include "studies/edge_probe.h"
 
@@ -237,7 +238,7 @@ bool RunSimTierTable(const SimTierSpec& spec,
       c.law.step_mm = 5;
       c.seed = spec.seed + static_cast<std::uint64_t>(i % spec.seeds);
       std::string e;
-      results[i] = RunTrial(disk.get(), c, false, &e);
+      results[i] = RunGuardedTrial(disk.get(), c, nullptr, &e);
       if (results[i].outcome == Outcome::kRunning) results[i].detail = e;
     });
     double wall = 0, steps = 0, compression = 0;

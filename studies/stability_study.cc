@@ -9,7 +9,8 @@
 #include <string_view>
 
 #include "common/strict_number.h"
-#include "studies/job_runner.h"
+#include "runtime/guarded_trial.h"
+#include "studies/jobs/job_runner.h"
 #include "studies/sweep_io.h"
 #include "studies/trial_manifest.h"
 
@@ -116,8 +117,7 @@ StabilityResult RunStabilityStudy(const mjModel* model, const StabilitySpec& spe
     mjModel* m = mj_copyModel(nullptr, model);
     m->opt.integrator = jobs[i].integrator.id;
     m->opt.timestep = jobs[i].ms * 1e-3;
-    std::string e;
-    const TrialResult r = RunTrial(m, spec.config, false, &e);
+    const TrialResult r = RunGuardedTrial(m, spec.config);
     mj_deleteModel(m);
     char buf[160];
     std::snprintf(buf, sizeof(buf), "%d %.17g %.17g %.17g", static_cast<int>(r.outcome),
@@ -150,6 +150,7 @@ StabilityResult RunStabilityStudy(const mjModel* model, const StabilitySpec& spe
   set.skip = [&](std::size_t i) { return !out[i].empty(); };
   JobRunnerOptions options;
   options.threads = std::max(1, spec.threads);
+  ScopedTrialErrorGuard guard;  // a MuJoCo error ends its trial as unstable, not the study
   const JobRunStats stats = RunJobs(set, options, [&](std::size_t i, const std::string& r) {
     out[i] = r;
     if (!spec.trials_csv.empty() && result.error.empty()) {

@@ -1,4 +1,4 @@
-// `ssc calibrate --dynamic`: fits the robot effects (controller/pure/robot_effects.h) and the
+// `ssc calibrate --dynamic`: fits the robot effects (controller/trial/robot_effects.h) and the
 // real loop's timing GLOBALLY to the published success map at dL 5 mm together with the Fig. 6
 // targets (dr against P_ref; sigma_r and s_c against beta). No per-cell parameters, no outcome
 // tables: each parameter is physical, with a unit and a range argued from the hardware
@@ -14,7 +14,8 @@
 #include <vector>
 
 #include "runtime/trial.h"
-#include "studies/map_scores.h"
+#include "studies/scores/map_scores.h"
+#include "studies/scores/metric_targets.h"
 #include "studies/validation.h"
 
 namespace ssc {
@@ -36,31 +37,6 @@ const std::vector<DynamicParameter>& DynamicParameters();
 // "" when `keys` name at least one parameter, each a DynamicParameters() key, none twice; else
 // the problem, listing the valid keys.
 std::string CheckDynamicKeys(const std::vector<std::string>& keys);
-
-// One Fig. 6 target at dL 5 mm (the map's cells; metrics of the successful trials).
-struct MetricTarget {
-  std::string name;  // e.g. "dr_mm beta 1.5 P_ref 40"
-  double beta, pref_pa;
-  enum Metric { kDr, kSigmaR, kSc } metric;
-  double published, tolerance;
-  double model = 0;   // the twin's mean over successful trials (NaN if none succeeded)
-  int successes = 0;  // the successful trials the mean is over
-  // Standard error of that mean, sample sd / sqrt(n) (NaN below 2 successes): the mean's
-  // uncertainty from the seeds, to weigh against the tolerance.
-  double standard_error = std::numeric_limits<double>::quiet_NaN();
-};
-std::vector<MetricTarget> PublishedMetricTargets();
-// Fills each target's model and successes from the trials of the cells at dL 5 mm with its beta
-// and P_ref (results[i] are cells[i]'s trials); a target whose cell is absent or never succeeded
-// gets NaN and 0.
-void MeasureMetricTargets(const std::vector<MapCell>& cells,
-                          const std::vector<std::vector<MapTrial>>& results,
-                          std::vector<MetricTarget>* targets);
-// The published outcomes beside the map (calibration targets in smart-suction-cup.md): the pilot
-// controller (P_ref 70, beta 1, dL 2.5 mm) succeeds; P_ref 100, beta 2 succeeds 3/3 at dL 2.5,
-// 5 and 7.5 mm; and beta 0.5 fails (at P_ref 100, dL 2.5 and 7.5 mm: "beta <= 0.5 always
-// failed"). The fit scores them like map cells.
-std::vector<MapCell> PublishedOutcomeCells();
 
 struct DynamicFitSpec {
   TrialConfig base;               // the starting point (its values are the start)

@@ -12,10 +12,10 @@
 
 #include "common/counter_rng.h"
 #include "common/strict_number.h"
-#include "controller/pure/robot_effects.h"
+#include "controller/trial/robot_effects.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/rig.h"
-#include "studies/job_runner.h"
+#include "studies/jobs/job_runner.h"
 #include "studies/sweep_io.h"
 #include "studies/trial_io.h"
 #include "studies/trial_manifest.h"
@@ -35,15 +35,6 @@ SweepManifest MakeManifest(const mjModel* m, const SweepSpec& spec) {
   manifest["csv_columns"] = SweepCsvHeader();
   manifest["seed"] = std::to_string(spec.seed);
   return manifest;
-}
-
-// MuJoCo calls mju_user_error on fatal errors (the default exits the process); a sweep turns
-// them into an exception caught per trial so the sweep goes on.
-thread_local bool t_in_trial = false;
-void ThrowingError(const char* msg) {
-  if (t_in_trial) throw std::runtime_error(msg);
-  std::fprintf(stderr, "MuJoCo error: %s\n", msg);
-  std::abort();
 }
 
 }  // namespace
@@ -93,26 +84,6 @@ std::uint64_t TrialSeed(std::uint64_t base, double pref, double beta, double ste
 
 // Estimated simulated time of a trial, for the longest-first handout: a lap of the disk at
 // about four step lengths per second (docs/trials.md) plus the approach and move.
-ScopedTrialErrorGuard::ScopedTrialErrorGuard() : previous_(mju_user_error) {
-  mju_user_error = ThrowingError;
-}
-ScopedTrialErrorGuard::~ScopedTrialErrorGuard() { mju_user_error = previous_; }
-
-TrialResult RunGuardedTrial(const mjModel* m, const TrialConfig& config, ApproachCache* cache) {
-  TrialResult result;
-  std::string trial_error;
-  t_in_trial = true;
-  try {
-    result = RunTrialShared(m, config, cache, &trial_error);
-  } catch (const std::exception& e) {
-    result = TrialResult();
-    result.outcome = Outcome::kUnstable;
-    result.detail = std::string("MuJoCo error: ") + e.what();
-  }
-  t_in_trial = false;
-  return result;
-}
-
 double EstimatedTrialCost(const TrialConfig& c) {
   const double lap_mm = 2 * 3.14159265358979 * c.target.disk_radius_m * 1e3;
   return 5.0 + lap_mm / (4.0 * std::max(c.law.step_mm, 0.1));

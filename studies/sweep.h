@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "runtime/approach_cache.h"
+#include "runtime/guarded_trial.h"
 #include "runtime/trial.h"
 
 namespace ssc {
@@ -57,22 +58,6 @@ std::uint64_t TrialSeed(std::uint64_t base, double pref, double beta, double ste
 
 // Estimated simulated time of a trial (for the longest-first handout).
 double EstimatedTrialCost(const TrialConfig& c);
-
-// While alive, MuJoCo's fatal errors inside RunGuardedTrial become 'unstable' results instead of
-// ending the process (mju_user_error is process-wide: one guard at a time, around a whole run).
-class ScopedTrialErrorGuard {
- public:
-  ScopedTrialErrorGuard();
-  ~ScopedTrialErrorGuard();
-  ScopedTrialErrorGuard(const ScopedTrialErrorGuard&) = delete;
-  ScopedTrialErrorGuard& operator=(const ScopedTrialErrorGuard&) = delete;
-
- private:
-  void (*previous_)(const char*);
-};
-// One trial without a log; through `cache` (runtime/approach_cache.h) when given.
-TrialResult RunGuardedTrial(const mjModel* m, const TrialConfig& config,
-                            ApproachCache* cache = nullptr);
 
 // Runs the sweep on `m` (shared read-only by the threads). Collective under MPI: every rank
 // calls it; rank 0 writes the CSV. `progress` (optional) is called on rank 0 after each row. False

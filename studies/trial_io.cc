@@ -7,7 +7,7 @@
 
 #include "common/csv_cell.h"
 #include "common/output_file.h"
-#include "controller/pure/robot_effects.h"
+#include "controller/trial/robot_effects.h"
 
 namespace ssc {
 namespace {

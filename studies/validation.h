@@ -12,7 +12,7 @@
 
 #include "runtime/trial.h"
 #include "studies/map_ceiling.h"
-#include "studies/map_scores.h"
+#include "studies/scores/map_scores.h"
 #include "studies/sweep.h"
 
 namespace ssc {
@@ -37,7 +37,7 @@ struct ValidateSpec {
 bool PrepareValidation(const ValidateSpec& spec, std::vector<MapCell>* cells, SweepSpec* sweep,
                        std::string* error);
 
-struct MetricTarget;  // studies/success_map_fit.h
+struct MetricTarget;  // studies/scores/metric_targets.h
 
 // Runs and scores. Rank 0 writes the files and fills *score (and, when given, *fig6: the
 // published Fig. 6 targets measured on the map's cells, in validate.json too); other ranks only
@@ -47,11 +47,6 @@ bool RunValidation(const mjModel* m, const ValidateSpec& spec,
                    SweepSummary* summary, std::string* error,
                    std::vector<MetricTarget>* fig6 = nullptr, MapCeilings* ceilings = nullptr);
 
-// One trial of a map cell, in memory (for fits: no disk).
-struct MapTrial {
-  std::string outcome;
-  double dr_mm = 0, sigma_r_mm = 0, s_c = 0;
-};
 // Runs `seeds` trials of each cell with `base` (seeds as the sweep's). Rank 0 gets the results
 // (MPI: every rank, since an optimiser runs in lock-step on all ranks).
 bool RunMapTrials(const mjModel* m, const std::vector<MapCell>& cells, const TrialConfig& base,

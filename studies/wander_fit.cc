@@ -6,6 +6,7 @@
 
 #include "calibration/nelder_mead.h"
 #include "calibration/published_targets.h"
+#include "runtime/guarded_trial.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/trial.h"
 #include "studies/loop_calibration.h"
@@ -48,8 +49,7 @@ bool FitWander(const std::string& scene, const std::vector<WanderTarget>& target
         c.law.step_mm = step_mm;
         c.effects = effects;
         c.seed = static_cast<std::uint64_t>(k + 1);
-        std::string e;
-        const TrialResult r = RunTrial(m.get(), c, false, &e);
+        const TrialResult r = RunGuardedTrial(m.get(), c);
         sigma += r.metrics.sigma_r_mm / seeds;
         sc += r.metrics.s_c / seeds;
       }

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "calibration/pneumatic_fit.h"
-#include "controller/pure/robot_effects.h"
+#include "controller/trial/robot_effects.h"
 #include "studies/tool_variants.h"
 
 namespace ssc {

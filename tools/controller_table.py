@@ -7,34 +7,20 @@ with its 95 % Student t interval.
 """
 import csv
 import math
+import os
 import sys
 
 
-def wilson(k, n, z=1.96):
-    if n == 0:
-        return (0.0, 1.0)
-    p = k / n
-    d = 1 + z * z / n
-    c = (p + z * z / (2 * n)) / d
-    h = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / d
-    return (max(0.0, c - h), min(1.0, c + h))
-
-
-# Two-sided 95 % Student t quantiles, dof 1..30; beyond, 1.96 + 2.4 / dof (within 0.002).
-T95 = [12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228, 2.201, 2.179,
-       2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086, 2.080, 2.074, 2.069, 2.064, 2.060,
-       2.056, 2.052, 2.048, 2.045, 2.042]
-
-
-def t95(dof):
-    return T95[dof - 1] if dof <= len(T95) else 1.96 + 2.4 / dof
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build",
+                                "python_pkg"))
+from ssc_twin import student_t95, wilson_interval  # noqa: E402  the project's one home of both
 
 
 def row(name, path):
     with open(path) as f:
         rows = list(csv.DictReader(f))
     ok = [float(r["speed_mm_s"]) for r in rows if r["outcome"] == "success"]
-    lo, hi = wilson(len(ok), len(rows))
+    lo, hi = wilson_interval(len(ok), len(rows))
     fails = {}
     for r in rows:
         if r["outcome"] != "success":
@@ -42,7 +28,7 @@ def row(name, path):
     if ok:
         mean = sum(ok) / len(ok)
         sd = math.sqrt(sum((v - mean) ** 2 for v in ok) / (len(ok) - 1)) if len(ok) > 1 else 0
-        half = t95(len(ok) - 1) * sd / math.sqrt(len(ok)) if len(ok) > 1 else float("nan")
+        half = student_t95(len(ok) - 1) * sd / math.sqrt(len(ok)) if len(ok) > 1 else float("nan")
         speed = f"{mean:.1f} ± {half:.1f}"
     else:
         speed = "–"

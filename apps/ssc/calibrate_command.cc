@@ -13,7 +13,7 @@
 #include "apps/ssc/trial_options.h"
 #include "calibration/pneumatic_fit.h"
 #include "common/output_file.h"
-#include "controller/pure/robot_effects.h"
+#include "controller/trial/robot_effects.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/rig.h"
 #include "studies/loop_calibration.h"

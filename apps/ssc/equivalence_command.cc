@@ -12,7 +12,7 @@
 #include "apps/ssc/trial_options.h"
 #include "runtime/rig.h"
 #include "studies/equivalence_study.h"
-#include "studies/job_runner.h"
+#include "studies/jobs/job_runner.h"
 
 namespace ssc {
 namespace {

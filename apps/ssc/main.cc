@@ -11,7 +11,7 @@
 #include "common/exit_codes.h"
 #include "common/output_file.h"
 #include "runtime/mujoco_model.h"
-#include "studies/job_runner.h"
+#include "studies/jobs/job_runner.h"
 
 namespace {
 

@@ -14,7 +14,7 @@
 #include "apps/ssc/trial_options.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/rig.h"
-#include "studies/job_runner.h"
+#include "studies/jobs/job_runner.h"
 #include "studies/success_map_fit.h"
 #include "studies/validation.h"
 

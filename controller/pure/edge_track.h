@@ -29,6 +29,7 @@
 #include "controller/pure/contour_law.h"
 #include "controller/pure/controller_registry.h"
 #include "controller/pure/fast_following.h"
+#include "geometry/edge_arc.h"
 
 namespace ssc {
 
@@ -49,26 +50,6 @@ struct EdgeTrackParams {
   double tare_clearance_mm = 4;     // ... from the readings this far above the hold height
 };
 
-// A piece of edge near the tool: a point on it, the unit tangent there in the sense of travel
-// and the signed curvature (+: turning counter-clockwise seen from above), world, mm.
-struct EdgeArc {
-  std::array<double, 2> point_mm{};
-  std::array<double, 2> tangent{1, 0};
-  double curvature_per_mm = 0;
-  // The point at arc length s_mm from point_mm (negative: behind), and the tangent there.
-  std::array<double, 2> PointAt(double s_mm) const;
-  std::array<double, 2> TangentAt(double s_mm) const;
-  // The arc length of the point of the edge nearest q (on a circle: within half a turn).
-  double Project(const std::array<double, 2>& q_mm) const;
-};
-
-// The circle (or line) through points_mm[0..n) in the least-squares sense, the oldest first:
-// the tangent in the sense from the oldest toward the newest, the point the newest one's
-// projection. False when fewer than 3 points, the points span less than 1 mm, or a value is not
-// finite. The curvature is clamped to 1 / min_radius_mm; without circle_allowed, a line.
-bool FitEdgeArc(const std::array<double, 2>* points_mm, std::size_t n, double min_radius_mm,
-                EdgeArc* arc, bool circle_allowed = true);
-
 // How far the cup centre sits inside a straight edge, mm, read from the mean vacuum: the
 // static curve (the twin's at the control iterations of disk trials with the default effects,
 // within 0.3 mm of the published points 40 Pa at 0.7 mm, 100 Pa at 2.5 mm, 200 Pa at 3.2 mm;
@@ -79,7 +60,7 @@ double InsetFromMeanVacuumMm(double p_mean_pa);
 
 class EdgeTrackController : public Controller {
  public:
-  static constexpr std::size_t kMaxFitPoints = 16;
+  static constexpr std::size_t kMaxFitPoints = kEdgeArcMaxPoints;
   EdgeTrackController(const ControllerContext& context, const EdgeTrackParams& p);
   ControllerCommand Step(const ControllerInput& in) override;
   bool ObservesBeforeFollowing() const override { return p_.tare_in_air > 0; }

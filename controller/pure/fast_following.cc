@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/plane.h"
+
 namespace ssc {
 namespace {
 
@@ -10,10 +12,7 @@ constexpr double kPi = 3.14159265358979323846;
 // Below this travel between iterations the differential's turn says nothing of the edge.
 constexpr double kMinTravelM = 0.5e-3;
 
-std::array<double, 2> Rotated(const std::array<double, 2>& v, double angle_rad) {
-  const double c = std::cos(angle_rad), s = std::sin(angle_rad);
-  return {c * v[0] - s * v[1], s * v[0] + c * v[1]};
-}
+using plane::Rotated;
 
 }  // namespace
 

@@ -29,7 +29,7 @@
 #include "compare/twin_log.h"
 #include "controller/pure/contour_law.h"
 #include "controller/pure/controller_registry.h"
-#include "controller/pure/robot_effects.h"
+#include "controller/trial/robot_effects.h"
 #include "geometry/dimensions.h"
 #include "objects/object_mjcf.h"
 #include "objects/object_spec.h"
@@ -45,6 +45,7 @@
 #include "studies/edge_probe.h"
 #include "studies/object_study.h"
 #include "studies/object_trials.h"
+#include "studies/statistics/intervals.h"
 #include "studies/sweep.h"
 #include "studies/tool_variants.h"
 #include "studies/validation.h"
@@ -997,6 +998,10 @@ NB_MODULE(_core, m) {
     return names;
   });
 
+  m.def("wilson_interval", &WilsonInterval, "successes"_a, "trials"_a,
+        "The Wilson score interval (95 %) of a success rate (studies/statistics/intervals.h).");
+  m.def("student_t95", &StudentT95, "dof"_a,
+        "The two-sided 95 % Student t quantile for dof degrees of freedom (dof >= 1).");
   m.def(
       "contour_step",
       [](std::array<double, 4> p_pa, double pref, double beta, double step_mm) {
@@ -1442,7 +1447,7 @@ NB_MODULE(_core, m) {
   m.attr("LAB_DISK_CENTRE_BASE_LINK_M") = nb::make_tuple(kLabDiskCentreX, kLabDiskCentreY);
   m.attr("LAB_DISK_ENGAGE_Z_M") = kLabDiskEngageZ;
   m.attr("TOOL_CENTRE_OFFSET_M") = kToolCentreOffsetM;
-  // How a trial ends (controller/pure/trial_outcome.h, trial_goal.h), for the SIL's verdict.
+  // How a trial ends (controller/trial/trial_outcome.h, trial_goal.h), for the SIL's verdict.
   nb::dict exit_codes;
   for (const ExitCodeRow& row : kExitCodeTable) exit_codes[row.name] = static_cast<int>(row.code);
   m.attr("EXIT_CODES") = exit_codes;  // common/exit_codes.h

@@ -25,12 +25,13 @@ import mujoco as _mujoco  # noqa: E402,F401  loads libmujoco, which _core links 
 from . import _core
 from ._core import (Probe, SilPlant, SteppedTrial, check_seed, compare, contour_step,
                     controllers, default_scene, max_seed, mujoco_version, object_names, objects,
-                    phase_names, resource_dir, run_trial, scene_path, scene_tiers, sweep,
-                    validate, write_lab_mat, write_robot_log)
+                    phase_names, resource_dir, run_trial, scene_path, scene_tiers, student_t95,
+                    sweep, validate, wilson_interval, write_lab_mat, write_robot_log)
 
 __all__ = ["Probe", "SilPlant", "SteppedTrial", "check_seed", "compare", "contour_step",
            "controllers", "default_scene", "max_seed", "mujoco_version", "object_names",
            "objects", "phase_names", "resource_dir", "run_trial", "scene_path", "scene_tiers",
+           "student_t95", "wilson_interval",
            "sweep", "write_lab_mat",
            "write_robot_log", "plugin_library", "load_plugin", "read_sweep", "validate"]
 

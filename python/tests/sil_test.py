@@ -38,6 +38,7 @@ def fresh_world(tmp):
 class SilContracts(unittest.TestCase):
     def setUp(self):
         self.tmp = tempfile.mkdtemp(prefix="ssc_sil_test_")
+        self.addCleanup(shutil.rmtree, self.tmp, True)
         self.world = fresh_world(self.tmp)
 
     def test_subscriber_receives_packets_at_sensor_rate(self):
@@ -394,6 +395,7 @@ class LimitsUnit(unittest.TestCase):
 class SilLoop(unittest.TestCase):
     def test_lab_style_script_completes_a_disk_trial_and_opens_in_compare(self):
         out = tempfile.mkdtemp(prefix="ssc_sil_loop_")
+        self.addCleanup(shutil.rmtree, out, True)
         report = os.path.join(out, "report.json")
         p = run_sil(["--out", out, "--report", report, LAB_STYLE], out)
         self.assertEqual(p.returncode, 0, p.stdout[-3000:] + p.stderr[-3000:])
@@ -414,6 +416,7 @@ class SilLoop(unittest.TestCase):
 
     def test_a_missing_interface_is_named(self):
         out = tempfile.mkdtemp(prefix="ssc_sil_missing_")
+        self.addCleanup(shutil.rmtree, out, True)
         script = os.path.join(out, "needs_io.py")
         with open(script, "w") as f:
             f.write("import rospy\nimport rtde_io\n")
@@ -423,6 +426,7 @@ class SilLoop(unittest.TestCase):
 
     def test_the_real_plot_draws_and_its_pause_costs_simulated_time(self):
         out = tempfile.mkdtemp(prefix="ssc_sil_plots_")
+        self.addCleanup(shutil.rmtree, out, True)
         script = os.path.join(out, "plots.py")
         with open(script, "w") as f:
             f.write("import rospy\nimport matplotlib.pyplot as plt\n"
@@ -451,6 +455,7 @@ class SilLoop(unittest.TestCase):
     def test_a_method_missing_from_the_scripts_own_helper_is_named_as_its_bug(self):
         # The lab's HEAD: the script calls a helper method its own helper no longer defines.
         out = tempfile.mkdtemp(prefix="ssc_sil_labbug_")
+        self.addCleanup(shutil.rmtree, out, True)
         os.makedirs(os.path.join(out, "lab", "helperFunction"))
         with open(os.path.join(out, "lab", "helperFunction", "__init__.py"), "w"):
             pass
@@ -474,6 +479,7 @@ class SilViewer(unittest.TestCase):
         if not shutil.which("xvfb-run"):
             self.skipTest("xvfb-run is not installed")
         out = tempfile.mkdtemp(prefix="ssc_sil_viewer_")
+        self.addCleanup(shutil.rmtree, out, True)
         script = os.path.join(out, "moves.py")
         with open(script, "w") as f:
             f.write("import rospy, rtde_control, rtde_receive\n"
@@ -491,6 +497,7 @@ class SilViewer(unittest.TestCase):
 
     def test_viewer_without_a_display_says_so(self):
         out = tempfile.mkdtemp(prefix="ssc_sil_viewer_")
+        self.addCleanup(shutil.rmtree, out, True)
         script = os.path.join(out, "s.py")
         with open(script, "w") as f:
             f.write("import rospy\n")
@@ -508,6 +515,7 @@ class LabCheckout(unittest.TestCase):
             self.skipTest("SSC_LAB_REPO is not set (a checkout of the lab's edg_suction_cup)")
         script = os.path.join(repo, "src", "SDL_ur_control_edgeFollowing_livePlot_oneDiskRevolution.py")
         out = tempfile.mkdtemp(prefix="ssc_sil_lab_")
+        self.addCleanup(shutil.rmtree, out, True)
         p = run_sil(["--out", out, "--max-sim", "5", script], out)
         # It starts: the node comes up and moves (at the time limit the trial has no outcome yet:
         # exit 5); at the lab's HEAD it stops on the lab's own missing setCalibrationMatrix,

@@ -1,6 +1,7 @@
 """Progress of ssc sweep when stderr is not a terminal (batch jobs, logs): a line each time
 another 5 % of the trials is done; none with --no-progress."""
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -13,6 +14,7 @@ SSC = os.path.join(BIN, "ssc")
 class CliProgressTest(unittest.TestCase):
     def sweep(self, *extra):
         out = tempfile.mkdtemp(prefix="ssc_progress_")
+        self.addCleanup(shutil.rmtree, out, True)
         return subprocess.run([SSC, "sweep", "--pref", "100,1000", "--beta", "2", "--step", "7.5",
                                "--repeats", "1", "--threads", "2", "--no-plot", "--out", out,
                                *extra], capture_output=True, text=True, timeout=300)

@@ -9,10 +9,11 @@
 #include <filesystem>
 
 #include "compare/comparison.h"
-#include "controller/pure/robot_effects.h"
+#include "controller/trial/robot_effects.h"
 #include "lab_log_generator.h"
 #include "runtime/mujoco_model.h"
 #include "studies/tool_variants.h"
+#include "tests/scratch_dir.h"
 
 namespace ssc {
 namespace {
@@ -43,8 +44,7 @@ const Fixture& Shared() {
 }
 
 std::string TempDir(const std::string& tag) {
-  const fs::path p =
-      fs::temp_directory_path() / ("ssc_compare_" + tag + "_" + std::to_string(::getpid()));
+  const fs::path p = ScratchDir() / ("ssc_compare_" + tag);
   fs::remove_all(p);
   fs::create_directories(p);
   return p.string();

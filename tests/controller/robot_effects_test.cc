@@ -1,5 +1,5 @@
-// The robot effects, each on its own (controller/pure/robot_effects.h), against hand values.
-#include "controller/pure/robot_effects.h"
+// The robot effects, each on its own (controller/trial/robot_effects.h), against hand values.
+#include "controller/trial/robot_effects.h"
 
 #include <gtest/gtest.h>
 

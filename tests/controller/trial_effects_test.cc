@@ -1,7 +1,7 @@
-// The robot effects' per-trial state (controller/pure/trial_effects.h): off is the ideal loop,
+// The robot effects' per-trial state (controller/trial/trial_effects.h): off is the ideal loop,
 // a reset starts every trial afresh (same seed, same answers), a held step never misses, a step
 // waits for the pose read after the plot, and the lip's shear shows in both readings.
-#include "controller/pure/trial_effects.h"
+#include "controller/trial/trial_effects.h"
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,12 @@
-#include "controller/pure/trial_metrics.h"
+#include "controller/trial/trial_metrics.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "controller/pure/trial_goal.h"
-#include "controller/pure/trial_outcome.h"
+#include "controller/trial/trial_goal.h"
+#include "controller/trial/trial_outcome.h"
 
 namespace ssc {
 namespace {

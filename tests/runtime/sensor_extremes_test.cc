@@ -12,6 +12,7 @@
 #include "geometry/dimensions.h"
 #include "plugin/chamber_pressure_sensor.h"
 #include "runtime/mujoco_model.h"
+#include "tests/scratch_dir.h"
 
 namespace ssc {
 namespace {
@@ -21,7 +22,7 @@ namespace fs = std::filesystem;
 // Tool on a mocap body (tool0 frame; tool z down) over: a plate with a corner at (0, 0) covering
 // x < 0, y < 0 (top 10 mm); a 0.3 mm sheet floating at 10 mm covering x > 0.1 (air below).
 std::string Scene() {
-  const fs::path dir = fs::temp_directory_path() / ("ssc_extremes_" + std::to_string(::getpid()));
+  const fs::path dir = ScratchDir() / "ssc_extremes";
   fs::create_directories(dir);
   const fs::path path = dir / "extremes.xml";
   std::ofstream(path)

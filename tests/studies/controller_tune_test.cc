@@ -105,12 +105,5 @@ TEST(TuneValues, SetAndReadBackTheSearchedKeys) {
   EXPECT_DOUBLE_EQ(c.controller.values[0], fast->keys[0].default_value);
 }
 
-TEST(StudentT95, KnownQuantiles) {
-  EXPECT_NEAR(StudentT95(1), 12.706, 1e-3);
-  EXPECT_NEAR(StudentT95(5), 2.571, 1e-3);
-  EXPECT_NEAR(StudentT95(29), 2.045, 1e-3);
-  EXPECT_NEAR(StudentT95(1e6), 1.960, 1e-3);
-}
-
 }  // namespace
 }  // namespace ssc

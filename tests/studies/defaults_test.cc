@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include "controller/pure/robot_effects.h"
+#include "controller/trial/robot_effects.h"
 #include "geometry/dimensions.h"
 #include "runtime/mujoco_model.h"
 #include "studies/defaults_doc.h"

@@ -13,6 +13,7 @@
 #include <random>
 
 #include "studies/equivalence_study.h"
+#include "studies/statistics/intervals.h"
 #include "studies/sweep.h"
 
 namespace ssc {
@@ -54,15 +55,6 @@ TEST(FisherExactTest, FalseAlarmChanceIsTheTestsSizeGivenTheMargins) {
     EXPECT_NEAR(by_margins, by_tables, 1e-12) << q;
     EXPECT_LE(by_margins, 0.05);
   }
-}
-
-TEST(StudentTTest, TwoSidedPValuesMatchTheTables) {
-  EXPECT_NEAR(StudentTwoSidedP(2.0, 10), 0.073388, 1e-6);
-  EXPECT_NEAR(StudentTwoSidedP(2.228139, 10), 0.05, 1e-6);
-  EXPECT_NEAR(StudentTwoSidedP(1.959964, 1e7), 0.05, 1e-6);
-  EXPECT_NEAR(StudentTwoSidedP(-12.706205, 1), 0.05, 1e-6);
-  EXPECT_DOUBLE_EQ(StudentTwoSidedP(0, 5), 1.0);
-  EXPECT_NEAR(RegularizedIncompleteBeta(0.3, 2, 3), 0.3483, 1e-12);  // 1 - (0.7^4 + 4 0.3 0.7^3)
 }
 
 // A published-like map: 45 cells whose rates span 0..1.

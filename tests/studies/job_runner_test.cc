@@ -1,7 +1,7 @@
 // The study job runner on threads (MPI runs are tested by tests/studies/mpi_sweep_test.sh):
 // longest- first handout, every job delivered exactly once in handout order, resume by skip,
 // interruption.
-#include "studies/job_runner.h"
+#include "studies/jobs/job_runner.h"
 
 #include <gtest/gtest.h>
 #include <signal.h>

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-#include "studies/job_runner.h"
+#include "studies/jobs/job_runner.h"
 
 int main(int argc, char** argv) {
   ssc::InitJobRunnerMpi(&argc, &argv);

@@ -9,6 +9,7 @@ import json
 import math
 import os
 import runpy
+import shutil
 import sys
 import tempfile
 import unittest
@@ -99,6 +100,7 @@ def clipped_texts(fig):
 class FigureScriptsTest(unittest.TestCase):
     def setUp(self):
         self.tmp = tempfile.mkdtemp(prefix="ssc_figures_")
+        self.addCleanup(shutil.rmtree, self.tmp, True)
         self.keep = os.environ.get("SSC_FIGURES_DIR")
 
     def render(self, script, argv):

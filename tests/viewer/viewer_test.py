@@ -33,6 +33,7 @@ class ViewerTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.tmp = tempfile.mkdtemp(prefix="ssc_view_")
+        cls.addClassCleanup(shutil.rmtree, cls.tmp, True)
         cls.png = os.path.join(cls.tmp, "shot.png")
         cls.shot = run([XVFB, "-a", "-s", "-screen 0 1280x720x24", SSC, "view", "--scene",
                         ARM_SCENE, "--screenshot", cls.png, "--time", "6", "--seed", "3"])

@@ -1,16 +1,16 @@
 // The robot effects' state through one trial (pure C++, no MuJoCo): what the trial keeps between
-// control steps to apply controller/pure/robot_effects.h — the lip's shear, the chambers' drawn
+// control steps to apply controller/trial/robot_effects.h — the lip's shear, the chambers' drawn
 // gains and slow noise, the iteration count the loop's jitter is drawn for, and a step waiting for
 // the pose read after the plot. The trial (runtime/trial.cc) measures the tool and the chambers and
 // asks this object what the host reads and where the arm lands; with the same parameters and seed
 // the same calls give the same answers on any thread.
-#ifndef SSC_CONTROLLER_PURE_TRIAL_EFFECTS_H_
-#define SSC_CONTROLLER_PURE_TRIAL_EFFECTS_H_
+#ifndef SSC_CONTROLLER_TRIAL_TRIAL_EFFECTS_H_
+#define SSC_CONTROLLER_TRIAL_TRIAL_EFFECTS_H_
 
 #include <array>
 #include <cstdint>
 
-#include "controller/pure/robot_effects.h"
+#include "controller/trial/robot_effects.h"
 
 namespace ssc {
 
@@ -58,4 +58,4 @@ class TrialEffects {
 
 }  // namespace ssc
 
-#endif  // SSC_CONTROLLER_PURE_TRIAL_EFFECTS_H_
+#endif  // SSC_CONTROLLER_TRIAL_TRIAL_EFFECTS_H_

@@ -10,7 +10,7 @@
 #include <deque>
 #include <mutex>
 
-#include "studies/job_transport.h"
+#include "studies/jobs/job_transport.h"
 
 namespace ssc {
 namespace job_runner_detail {

@@ -1,8 +1,8 @@
 // Trajectory metrics of a trial (the published ones): path length s, mean radius r, dr, radial
 // standard deviation sigma_r, relative travel s_c, duration and speed, and the distance of the
 // cup-centre path from the true contour. Pure C++.
-#ifndef SSC_CONTROLLER_PURE_TRIAL_METRICS_H_
-#define SSC_CONTROLLER_PURE_TRIAL_METRICS_H_
+#ifndef SSC_CONTROLLER_TRIAL_TRIAL_METRICS_H_
+#define SSC_CONTROLLER_TRIAL_TRIAL_METRICS_H_
 
 #include <array>
 #include <functional>
@@ -42,4 +42,4 @@ std::array<double, 2> ContourError(const std::vector<Point2>& path_m, const Cont
 
 }  // namespace ssc
 
-#endif  // SSC_CONTROLLER_PURE_TRIAL_METRICS_H_
+#endif  // SSC_CONTROLLER_TRIAL_TRIAL_METRICS_H_

@@ -15,14 +15,14 @@
 // passes close by; with a band it may also move forward over any stretch of edge that lies
 // under the cup body (within band_m of the cup centre): the apex of a sharp corner that passes
 // under the body is followed round, one the cup turns back from short of it is not.
-#ifndef SSC_CONTROLLER_PURE_TRIAL_GOAL_H_
-#define SSC_CONTROLLER_PURE_TRIAL_GOAL_H_
+#ifndef SSC_CONTROLLER_TRIAL_TRIAL_GOAL_H_
+#define SSC_CONTROLLER_TRIAL_TRIAL_GOAL_H_
 
 #include <limits>
 #include <memory>
 #include <string>
 
-#include "controller/pure/trial_outcome.h"
+#include "controller/trial/trial_outcome.h"
 #include "geometry/contour_path.h"
 #include "geometry/dimensions.h"
 #include "geometry/point2.h"
@@ -103,4 +103,4 @@ class GoalTracker {
 
 }  // namespace ssc
 
-#endif  // SSC_CONTROLLER_PURE_TRIAL_GOAL_H_
+#endif  // SSC_CONTROLLER_TRIAL_TRIAL_GOAL_H_

@@ -2,7 +2,7 @@
 // there is nobody to reach.
 #include <cstdlib>
 
-#include "studies/job_transport.h"
+#include "studies/jobs/job_transport.h"
 
 namespace ssc {
 namespace job_runner_detail {

@@ -1,4 +1,4 @@
-#include "controller/pure/trial_outcome.h"
+#include "controller/trial/trial_outcome.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 // How the job runner (studies/job_runner.h) reaches the other ranks: MPI when the build found it
 // (job_transport_mpi.cc), a single rank otherwise (job_transport_local.cc). studies/CMakeLists.txt
 // compiles exactly one of the two.
-#ifndef SSC_STUDIES_JOB_TRANSPORT_H_
-#define SSC_STUDIES_JOB_TRANSPORT_H_
+#ifndef SSC_STUDIES_JOBS_JOB_TRANSPORT_H_
+#define SSC_STUDIES_JOBS_JOB_TRANSPORT_H_
 
 #include <cstddef>
 #include <functional>
@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "studies/job_runner.h"
-#include "studies/job_workers.h"
+#include "studies/jobs/job_runner.h"
+#include "studies/jobs/job_workers.h"
 
 namespace ssc {
 namespace job_runner_detail {
@@ -43,4 +43,4 @@ void ShareResults(const std::vector<std::size_t>& indices, const std::vector<std
 }  // namespace job_runner_detail
 }  // namespace ssc
 
-#endif  // SSC_STUDIES_JOB_TRANSPORT_H_
+#endif  // SSC_STUDIES_JOBS_JOB_TRANSPORT_H_

@@ -20,8 +20,8 @@
 //
 // Determinism: every random draw is a pure function of (seed, counter), so a trial with the same
 // seed gives the same rows on any thread or rank.
-#ifndef SSC_CONTROLLER_PURE_ROBOT_EFFECTS_H_
-#define SSC_CONTROLLER_PURE_ROBOT_EFFECTS_H_
+#ifndef SSC_CONTROLLER_TRIAL_ROBOT_EFFECTS_H_
+#define SSC_CONTROLLER_TRIAL_ROBOT_EFFECTS_H_
 
 #include <array>
 #include <cstdint>
@@ -177,4 +177,4 @@ void ApplyChamberSpread(const ChamberSpreadParams& p, std::uint64_t seed, double
 
 }  // namespace ssc
 
-#endif  // SSC_CONTROLLER_PURE_ROBOT_EFFECTS_H_
+#endif  // SSC_CONTROLLER_TRIAL_ROBOT_EFFECTS_H_

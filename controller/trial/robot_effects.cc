@@ -1,4 +1,4 @@
-#include "controller/pure/robot_effects.h"
+#include "controller/trial/robot_effects.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,8 +2,8 @@
 // swept angle about a centre, and the classification of one filtered sample into running /
 // success / failure I / failure II / unstable / timeout (the implementation tested each on a
 // single filtered sample). What counts as success is the trial's goal (trial_goal.h).
-#ifndef SSC_CONTROLLER_PURE_TRIAL_OUTCOME_H_
-#define SSC_CONTROLLER_PURE_TRIAL_OUTCOME_H_
+#ifndef SSC_CONTROLLER_TRIAL_TRIAL_OUTCOME_H_
+#define SSC_CONTROLLER_TRIAL_TRIAL_OUTCOME_H_
 
 #include <array>
 #include <string>
@@ -106,4 +106,4 @@ SampleCheck ClassifySample(const TrialThresholds& t, const std::array<double, 4>
 
 }  // namespace ssc
 
-#endif  // SSC_CONTROLLER_PURE_TRIAL_OUTCOME_H_
+#endif  // SSC_CONTROLLER_TRIAL_TRIAL_OUTCOME_H_

@@ -1,11 +1,12 @@
-#include "studies/map_scores.h"
+#include "studies/scores/map_scores.h"
 
 #include <algorithm>
 #include <cmath>
 #include <random>
 #include <sstream>
 
-#include "controller/pure/trial_outcome.h"
+#include "controller/trial/trial_outcome.h"
+#include "studies/statistics/intervals.h"
 
 namespace ssc {
 
@@ -52,15 +53,6 @@ double ClassProbability(MapClass c, double p) {
       return std::max(0.0, 1.0 - three - two);
   }
   return 0;
-}
-
-std::array<double, 2> WilsonInterval(int k, int n) {
-  if (n <= 0) return {0, 1};
-  const double z = 1.959963984540054, p = static_cast<double>(k) / n;
-  const double denom = 1 + z * z / n;
-  const double centre = (p + z * z / (2.0 * n)) / denom;
-  const double half = z * std::sqrt(p * (1 - p) / n + z * z / (4.0 * n * n)) / denom;
-  return {k == 0 ? 0.0 : std::max(0.0, centre - half), k == n ? 1.0 : std::min(1.0, centre + half)};
 }
 
 bool ScoreMap(const std::vector<MapCell>& cells, const std::vector<CellTrials>& trials,

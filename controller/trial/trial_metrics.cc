@@ -1,4 +1,4 @@
-#include "controller/pure/trial_metrics.h"
+#include "controller/trial/trial_metrics.h"
 
 #include <algorithm>
 #include <cmath>

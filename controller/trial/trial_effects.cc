@@ -1,4 +1,4 @@
-#include "controller/pure/trial_effects.h"
+#include "controller/trial/trial_effects.h"
 
 #include <cmath>
 

@@ -11,8 +11,8 @@
 // Interruption (SIGINT/SIGTERM while running): no new job starts, every finished result is
 // delivered at once (out of order), jobs already running on rank 0 finish and are delivered;
 // the stats say `interrupted`. A second signal ends the process the default way.
-#ifndef SSC_STUDIES_JOB_RUNNER_H_
-#define SSC_STUDIES_JOB_RUNNER_H_
+#ifndef SSC_STUDIES_JOBS_JOB_RUNNER_H_
+#define SSC_STUDIES_JOBS_JOB_RUNNER_H_
 
 #include <cstddef>
 #include <functional>
@@ -75,4 +75,4 @@ int JobRunnerRankCount();  // 1 without MPI
 
 }  // namespace ssc
 
-#endif  // SSC_STUDIES_JOB_RUNNER_H_
+#endif  // SSC_STUDIES_JOBS_JOB_RUNNER_H_

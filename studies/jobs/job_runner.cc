@@ -1,4 +1,4 @@
-#include "studies/job_runner.h"
+#include "studies/jobs/job_runner.h"
 
 #include <signal.h>
 
@@ -12,8 +12,8 @@
 #include <mutex>
 #include <numeric>
 
-#include "studies/job_transport.h"
-#include "studies/job_workers.h"
+#include "studies/jobs/job_transport.h"
+#include "studies/jobs/job_workers.h"
 
 namespace ssc {
 namespace job_runner_detail {

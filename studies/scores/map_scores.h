@@ -6,8 +6,8 @@
 //   expected agreement   P(Binomial(3, p) lands in the published class), p the twin's success
 //                        rate over N seeds, averaged over the cells;
 //   opposite cells       published 3/3 where p <= 1/3, or published <= 1/3 where p >= 0.9.
-#ifndef SSC_STUDIES_MAP_SCORES_H_
-#define SSC_STUDIES_MAP_SCORES_H_
+#ifndef SSC_STUDIES_SCORES_MAP_SCORES_H_
+#define SSC_STUDIES_SCORES_MAP_SCORES_H_
 
 #include <array>
 #include <limits>
@@ -27,15 +27,18 @@ MapClass ClassOfSuccesses(int successes_of_3);
 // P(Binomial(3, p) in class c), exact.
 double ClassProbability(MapClass c, double p_success);
 
-// Wilson score interval (95 %) of k successes in n trials.
-std::array<double, 2> WilsonInterval(int successes, int trials);
-
 struct MapCell {
   double step_mm = 0, beta = 0, pref_pa = 0;
   MapClass published = MapClass::kThreeOfThree;
 };
 
 // Outcomes of one cell's trials in repeat order (repeat 0, 1, ...).
+// One trial of a map cell, in memory (for fits: no disk).
+struct MapTrial {
+  std::string outcome;
+  double dr_mm = 0, sigma_r_mm = 0, s_c = 0;
+};
+
 struct CellTrials {
   std::vector<std::string> outcomes;  // "success", "failure_I", ... (OutcomeName)
 };
@@ -87,4 +90,4 @@ std::string AgreementIntervalNote(const MapScore& score);
 
 }  // namespace ssc
 
-#endif  // SSC_STUDIES_MAP_SCORES_H_
+#endif  // SSC_STUDIES_SCORES_MAP_SCORES_H_

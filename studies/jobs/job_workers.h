@@ -1,7 +1,7 @@
 // Inside the job runner (studies/job_runner.h): the worker threads of one rank, and the link to
 // the other ranks (job_transport.h). Not for studies' own use.
-#ifndef SSC_STUDIES_JOB_WORKERS_H_
-#define SSC_STUDIES_JOB_WORKERS_H_
+#ifndef SSC_STUDIES_JOBS_JOB_WORKERS_H_
+#define SSC_STUDIES_JOBS_JOB_WORKERS_H_
 
 #include <chrono>
 #include <condition_variable>
@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-#include "studies/job_runner.h"
+#include "studies/jobs/job_runner.h"
 
 namespace ssc {
 namespace job_runner_detail {
@@ -58,4 +58,4 @@ class LocalWorkers {
 }  // namespace job_runner_detail
 }  // namespace ssc
 
-#endif  // SSC_STUDIES_JOB_WORKERS_H_
+#endif  // SSC_STUDIES_JOBS_JOB_WORKERS_H_

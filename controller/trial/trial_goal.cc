@@ -1,4 +1,4 @@
-#include "controller/pure/trial_goal.h"
+#include "controller/trial/trial_goal.h"
 
 #include <algorithm>
 #include <cmath>
