@@ -13,7 +13,7 @@ void InstallMuJoCoMessageHandlers();
 // flex M+K solve of the discrete integrator ran out of opt.iterations ("Flex stiffness is too
 // ill-conditioned for the effective-metric block preconditioner ...") and the inertia warning
 // MuJoCo raises right after it for the same solve: the flex scenes cap the iterations below what
-// that solve needs on purpose, measured harmless (docs/objects.md, "The skirt's M+K solve and
+// that solve needs on purpose, measured harmless (docs/flex_cost.md, "The skirt's M+K solve and
 // MuJoCo's inertia warning"). An inertia warning that does not follow the flex note (a singular
 // mass matrix) is printed, as is every other.
 // `after_flex_note` carries the pairing from one message to the next (one per thread).

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""How the flex skirt's M+K solve fares against <option iterations> (docs/objects.md, "The
+"""How the flex skirt's M+K solve fares against <option iterations> (docs/flex_cost.md, "The
 skirt's M+K solve and MuJoCo's inertia warning"): the corner push of tools/corner_push.py (cup
 pressed 1 mm 2.5 mm inside an edge, pushed 7 mm toward a 270-degree corner's wall) run once per
 cap. Printed per cap: the steps on which the solve stopped short of MuJoCo's tolerance (MuJoCo

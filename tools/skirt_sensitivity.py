@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Sensitivity of the flex skirt lip to its unpublished parameters (docs/objects.md, "Sensitivity
+"""Sensitivity of the flex skirt lip to its unpublished parameters (docs/flex_cost.md, "Sensitivity
 of the flex lip").
 
 Each variant is the skirt of tools/make_flex_tool.py with one parameter at an end of its argued

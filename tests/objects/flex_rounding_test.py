@@ -1,4 +1,4 @@
-"""The flex skirt lip over a rounded edge (the fillet's mechanism, docs/objects.md): the cup
+"""The flex skirt lip over a rounded edge (the fillet's mechanism, docs/flex_objects.md): the cup
 pressed at the preload onto a plate whose straight edge is rounded with radius r, its centre the
 same distance inside where the rounding starts. Over a rounding the skirt stands off the falling
 surface instead of draping onto it, and the larger the radius, the smaller the differential."""

@@ -733,7 +733,7 @@ TEST(MuJoCoMessagesTest, OnlyTheFlexSolveNoteAndItsInertiaWarningAreLeftOut) {
       &after));
 }
 
-// The flex scene caps opt.iterations below what its M+K solve needs (docs/objects.md, "Cost of
+// The flex scene caps opt.iterations below what its M+K solve needs (docs/flex_cost.md, "Cost of
 // the flex tier"): its trial steps without printing that note.
 TEST(TrialEndsTest, TheFlexSceneStepsWithoutTheFlexSolveNote) {
   std::string error;
