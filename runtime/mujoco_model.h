@@ -28,7 +28,7 @@ using DataPtr = std::unique_ptr<mjData, DataDeleter>;
 // A scene may leave joints of the models it attaches out: <custom><text name="ssc_remove_joints"
 // data="joint names, space separated"/></custom>. LoadModel and LoadModelFromTexts then compile it
 // without those joints and without the joint equality constraints on them (e.g. the light
-// scene's rigid lip carrier; docs/performance.md). A name the model does not have is an error.
+// scene's rigid lip carrier; docs/scenes.md). A name the model does not have is an error.
 inline constexpr char kRemoveJointsText[] = "ssc_remove_joints";
 // Applies that list to a parsed scene (for code that compiles an mjSpec itself). False + *error
 // when a named joint does not exist.

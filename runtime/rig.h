@@ -57,7 +57,7 @@ const std::vector<RigTier>& RigTiers();
 // The tier that is the default for `use` (kNone: the trial default).
 const RigTier& RigTierFor(RigUse use);
 // The scene every trial entry point runs when no scene is named (the fast tier:
-// docs/performance.md, no different from the arm by `ssc equivalence`).
+// docs/scenes.md, no different from the arm by `ssc equivalence`).
 const char* DefaultScene();
 // The tier named `name` (tier name, not scene), or nullptr.
 const RigTier* RigTierNamed(const std::string& name);

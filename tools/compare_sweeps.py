@@ -3,7 +3,7 @@
 
 A trial is unchanged when the outcome is the same and, for successes, r_mean and sigma_r differ
 by at most --dr-mm (default 0.1 mm) and the path length s by at most --ds-rel (default 2 %): the
-published trial-to-trial spread the light scene must stay within (docs/performance.md).
+published trial-to-trial spread the light scene must stay within (docs/scenes.md).
 
 usage: compare_sweeps.py BEFORE.csv AFTER.csv [--dr-mm 0.1] [--ds-rel 0.02] [--markdown]
 Exit status 0 whatever the result (a report, not a test); 2 on unreadable input.
