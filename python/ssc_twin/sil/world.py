@@ -38,7 +38,7 @@ MEASURED = "measured"     # pause_cost_s: charge the script's measured CPU time 
 # What one plt.pause of the lab's disk loop costs beyond its argument: building and drawing its
 # 8x4 in arrow plot with the real matplotlib, measured (`ssc sil --plots --pause-cost measured`,
 # TkAgg under Xvfb: median 12.7 ms building + 51.8 ms drawing CPU per iteration, the 10 ms
-# argument's timer running while it draws). docs/sil.md has the measurement and its spread.
+# argument's timer running while it draws). docs/sil_measured.md has the measurement and its spread.
 DEFAULT_PAUSE_COST_S = 0.055
 DEFAULT_TOPICS = ("/netft_data", "/SensorPacket", "/pwm", "/endEffectorPose", "/sync")
 
