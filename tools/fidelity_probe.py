@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A quick probe of candidate fidelity settings on 19 telling cells (docs/history.md).
+"""A quick probe of candidate fidelity settings on 19 telling cells (docs/fidelity_options.md).
 
 The cells: 14 of the published dL 5 mm map (the low-beta row the twin passes and the robot failed,
 the high P_ref x beta corner where the robot grasped, and controls the robot passed 3/3), the
