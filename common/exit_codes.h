@@ -1,5 +1,5 @@
 // The exit codes of every command (ssc and its subcommands, ssc sil, the Python entry points
-// that exit): one code per class of outcome, the one home of the table that docs/exit_codes.md
+// that exit): one code per class of outcome, the one home of the table that docs/reliability.md
 // shows and the tests check command by command.
 #ifndef SSC_COMMON_EXIT_CODES_H_
 #define SSC_COMMON_EXIT_CODES_H_

@@ -29,7 +29,7 @@ from . import limits as limits_mod, noop, verdict as verdict_mod, world as world
 
 STANDINS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "standins")
 
-# The project's exit codes (common/exit_codes.h, docs/exit_codes.md).
+# The project's exit codes (common/exit_codes.h, docs/reliability.md).
 _CODES = _core.EXIT_CODES
 EXIT_OK, EXIT_ERROR, EXIT_USAGE = _CODES["ok"], _CODES["failed"], _CODES["usage"]
 EXIT_MISSING_INPUT, EXIT_BAD_DATA = _CODES["missing_input"], _CODES["bad_data"]
