@@ -10,7 +10,7 @@
 //             models are the same (each cell's exact chance of a false alarm given its margins:
 //             Fisher's test is discrete, so that chance is below alpha and often 0);
 //   score     the difference of the expected agreement with the published classes (the map
-//             score of `ssc validate`, studies/map_scores.h) with a 95 % posterior interval;
+//             score of `ssc validate`, studies/scores/map_scores.h) with a 95 % posterior interval;
 //   targets   the published Fig. 6 targets (means over the successful trials) side by side with
 //             their standard errors and Welch's test of their difference.
 // The two arms share their seeds, which makes their outcomes positively correlated; every test

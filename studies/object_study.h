@@ -1,6 +1,6 @@
 // ssc objects as a library function: write the test objects' scenes and contours, run the
-// contour-following trial on each object and seed on the job runner (studies/job_runner.h), and
-// write the table (objects.csv), the cup-centre paths (paths/) and the fillet's along-edge
+// contour-following trial on each object and seed on the job runner (studies/jobs/job_runner.h),
+// and write the table (objects.csv), the cup-centre paths (paths/) and the fillet's along-edge
 // profile (fillet_profile.csv, first fillet seed).
 #ifndef SSC_STUDIES_OBJECT_STUDY_H_
 #define SSC_STUDIES_OBJECT_STUDY_H_
@@ -45,7 +45,7 @@ struct ObjectStudySummary {
 // (OUT/objects.csv) resumes as a sweep does (studies/sweep_io.h, ResumableTable): the same study
 // run again skips the trials whose rows are in it, reruns rows it cannot trust, refuses other
 // options (OUT/objects.json) and a second run on the same OUT; each row is appended as its trial
-// finishes. Interrupted (studies/job_runner.h), the table keeps the finished rows and
+// finishes. Interrupted (studies/jobs/job_runner.h), the table keeps the finished rows and
 // summary->interrupted is set; complete, the rows are rewritten in object and seed order. False +
 // *error when a file cannot be read or written, or the table cannot be resumed.
 bool RunObjectStudy(const ObjectStudySpec& spec,

@@ -1,7 +1,7 @@
 // ssc stability as a library function: the same disk trial with every integrator over a range
 // of time steps, against a 0.5 ms RK4 reference; per integrator, the largest step at which the
 // trial stays stable and its outcome, mean radius and path length stay within tolerance.
-// Trials run on the job runner (studies/job_runner.h).
+// Trials run on the job runner (studies/jobs/job_runner.h).
 #ifndef SSC_STUDIES_STABILITY_STUDY_H_
 #define SSC_STUDIES_STABILITY_STUDY_H_
 
@@ -36,7 +36,7 @@ struct StabilityResult {
   std::vector<StabilityRow> rows;  // integrator by integrator, steps in the given order
   // Per integrator with a step run: NaN when none of its steps kept the results unchanged.
   std::vector<std::pair<std::string, double>> largest_unchanged_ms;
-  // SIGINT/SIGTERM (studies/job_runner.h): `rows` holds the finished trials, judged when the
+  // SIGINT/SIGTERM (studies/jobs/job_runner.h): `rows` holds the finished trials, judged when the
   // reference finished (none otherwise); largest_unchanged_ms is empty (it needs every step).
   bool interrupted = false;
   int trials = 0;     // asked for, with the reference

@@ -1,5 +1,5 @@
 // Parameter sweeps: a grid of P_ref x beta x step x repeats, run by the job runner
-// (studies/job_runner.h: threads, and MPI ranks under mpirun), one CSV row per trial appended
+// (studies/jobs/job_runner.h: threads, and MPI ranks under mpirun), one CSV row per trial appended
 // and flushed by rank 0 as each trial ends (in the runner's handout order). Re-running the same
 // sweep resumes: rows already in the CSV (same pref, beta, step, repeat) are skipped. Seeds depend
 // only on the base seed and the grid point, so any thread count gives the same rows.

@@ -1,5 +1,5 @@
 // `ssc validate`: the twin on every cell of a published success map, scored
-// (studies/map_scores.h). Trials run through the sweep (studies/sweep.h: the job runner,
+// (studies/scores/map_scores.h). Trials run through the sweep (studies/sweep.h: the job runner,
 // threads and MPI ranks, rows flushed as trials end, resumable) with the sweep's seeds, so the
 // first three repeats of a cell are exactly the rows `ssc sweep --seed S` gives for it.
 #ifndef SSC_STUDIES_VALIDATION_H_

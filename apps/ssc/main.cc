@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
   }
   for (const Command& c : kCommands) {
     if (std::strcmp(argv[1], c.name)) continue;
-    // Under mpirun the studies share their trials between ranks (studies/job_runner.h).
+    // Under mpirun the studies share their trials between ranks (studies/jobs/job_runner.h).
     ssc::InitJobRunnerMpi(&argc, &argv);
     int rc = 1;
     // Last line of defence: an unexpected exception (I/O, allocation) ends the command with a

@@ -1,6 +1,6 @@
-// How the job runner (studies/job_runner.h) reaches the other ranks: MPI when the build found it
-// (job_transport_mpi.cc), a single rank otherwise (job_transport_local.cc). studies/CMakeLists.txt
-// compiles exactly one of the two.
+// How the job runner (studies/jobs/job_runner.h) reaches the other ranks: MPI when the build found
+// it (job_transport_mpi.cc), a single rank otherwise (job_transport_local.cc).
+// studies/CMakeLists.txt compiles exactly one of the two.
 #ifndef SSC_STUDIES_JOBS_JOB_TRANSPORT_H_
 #define SSC_STUDIES_JOBS_JOB_TRANSPORT_H_
 

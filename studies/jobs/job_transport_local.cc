@@ -1,4 +1,4 @@
-// The job runner's transport when the build has no MPI (studies/job_transport.h): one rank, so
+// The job runner's transport when the build has no MPI (studies/jobs/job_transport.h): one rank, so
 // there is nobody to reach.
 #include <cstdlib>
 

@@ -1,4 +1,4 @@
-// The job runner's transport between MPI ranks (studies/job_transport.h): rank 0 hands out one
+// The job runner's transport between MPI ranks (studies/jobs/job_transport.h): rank 0 hands out one
 // job per request and receives every result; built when CMake finds MPI.
 #include <mpi.h>
 

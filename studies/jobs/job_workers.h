@@ -1,5 +1,5 @@
-// Inside the job runner (studies/job_runner.h): the worker threads of one rank, and the link to
-// the other ranks (job_transport.h). Not for studies' own use.
+// Inside the job runner (studies/jobs/job_runner.h): the worker threads of one rank, and the link
+// to the other ranks (job_transport.h). Not for studies' own use.
 #ifndef SSC_STUDIES_JOBS_JOB_WORKERS_H_
 #define SSC_STUDIES_JOBS_JOB_WORKERS_H_
 

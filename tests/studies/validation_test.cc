@@ -1,4 +1,4 @@
-// Scoring a published success map (studies/map_scores.h) and `ssc validate`'s study
+// Scoring a published success map (studies/scores/map_scores.h) and `ssc validate`'s study
 // (studies/validation.h) on maps whose scores are known.
 #include "studies/validation.h"
 

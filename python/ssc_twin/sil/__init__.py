@@ -19,7 +19,7 @@ def save_data_params(args, append_txt="", mat_dir=None, recording=None):
     Returns the path."""
     import numpy as np
     from .. import _core
-    from .world import current
+    from .current import current
     w = current()
     if recording is None:
         if not w.logger.paths:

@@ -32,6 +32,9 @@ def _get(msg, path):
         msg = getattr(msg, part)
     return msg
 
+# The topics the lab's logger records unless its topic file names others.
+DEFAULT_TOPICS = ("/netft_data", "/SensorPacket", "/pwm", "/endEffectorPose", "/sync")
+
 
 class DataLogger:
     def __init__(self, world, topics_file=None):
@@ -45,7 +48,6 @@ class DataLogger:
 
     @staticmethod
     def _read_topics(path):
-        from .world import DEFAULT_TOPICS
         if not path:
             return list(DEFAULT_TOPICS)
         with open(path) as f:

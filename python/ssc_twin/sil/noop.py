@@ -70,7 +70,7 @@ class NoOpModule(types.ModuleType):
 
 
 def _pause(interval=0.0):
-    from .world import current
+    from .current import current
     current().pause(interval)
 
 
@@ -82,7 +82,7 @@ def real_pause(pyplot):
     from matplotlib import _pylab_helpers
 
     def pause(interval=0.0):
-        from .world import current
+        from .current import current
         t0 = time.process_time()
         manager = _pylab_helpers.Gcf.get_active()
         if manager is not None:
@@ -112,7 +112,7 @@ def _ic(*args):
 
 
 def _wait_key(delay=0):
-    from .world import current
+    from .current import current
     current().sleep(max(delay, 1) * 1e-3)
     return -1
 

@@ -81,7 +81,7 @@ class Duration(_TVal):
 class Time(_TVal):
     @staticmethod
     def now():
-        from .world import current
+        from .current import current
         return Time.from_sec(current().ros_time_s())
 
     def __add__(self, o):

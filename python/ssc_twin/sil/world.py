@@ -18,6 +18,8 @@ import time as _time
 
 import numpy as np
 
+from .current import current, install, set_factory  # noqa: F401  (world.current, world.install)
+from .logger import DEFAULT_TOPICS, DataLogger  # noqa: F401  (world.DEFAULT_TOPICS)
 from .rostime import Time
 from .verdict import Verdict
 
@@ -40,23 +42,6 @@ MEASURED = "measured"     # pause_cost_s: charge the script's measured CPU time 
 # TkAgg under Xvfb: median 12.7 ms building + 51.8 ms drawing CPU per iteration, the 10 ms
 # argument's timer running while it draws). docs/sil_measured.md has the measurement and its spread.
 DEFAULT_PAUSE_COST_S = 0.055
-DEFAULT_TOPICS = ("/netft_data", "/SensorPacket", "/pwm", "/endEffectorPose", "/sync")
-
-_world = None
-
-
-def current():
-    """The process's world (a virtual-time disk world is made on first use)."""
-    global _world
-    if _world is None:
-        _world = World()
-    return _world
-
-
-def install(world):
-    global _world
-    _world = world
-    return world
 
 
 def _rot_z180(v):
@@ -166,7 +151,6 @@ class World:
         from suction_cup.msg import SensorPacket
         self.published_types.update({"/SensorPacket": SensorPacket, "/netft_data": WrenchStamped,
                                      "/endEffectorPose": PoseStamped})
-        from .logger import DataLogger
         self.logger = DataLogger(self)
         self.viewer = None
 
@@ -402,3 +386,6 @@ class World:
     def stop(self):
         self.velocity = None
         self.plant.stop()
+
+
+set_factory(World)
