@@ -50,6 +50,20 @@ if ! cppcheck -q -j2 --std=c++17 --language=c++ --enable=warning,performance,por
   failed+=(cppcheck)
 fi
 
+# Python: ruff's lint and format (pyproject.toml [tool.ruff]; pinned in requirements.txt).
+RUFF=ruff
+[ -x .venv/bin/ruff ] && RUFF=.venv/bin/ruff
+mapfile -t PY_SOURCES < <(files '*.py')
+echo "[check] ruff lint and format over ${#PY_SOURCES[@]} Python files"
+if ! "$RUFF" check -q "${PY_SOURCES[@]}"; then
+  echo "[check] lint: fix the lines above (ruff check --fix helps)"
+  failed+=(ruff-lint)
+fi
+if ! "$RUFF" format --check -q "${PY_SOURCES[@]}"; then
+  echo "[check] formatting: run  .venv/bin/ruff format <file>  on the files above"
+  failed+=(ruff-format)
+fi
+
 if ((${#failed[@]})); then
   echo "[check] FAILED: ${failed[*]}"
   exit 1

@@ -5,14 +5,16 @@ with its 95 % Student t interval.
 
     tools/controller_table.py NAME=out/ctl_published/sweep.csv NAME=out/ctl_fast/sweep.csv
 """
+
 import csv
 import math
 import os
 import sys
 
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build",
-                                "python_pkg"))
+sys.path.insert(
+    0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build", "python_pkg")
+)
 from ssc_twin import student_t95, wilson_interval  # noqa: E402  the project's one home of both
 
 
@@ -33,16 +35,20 @@ def row(name, path):
     else:
         speed = "–"
     others = ", ".join(f"{k} {v}" for k, v in sorted(fails.items())) or "–"
-    return (f"| {name} | {len(ok)}/{len(rows)} ({100 * len(ok) / len(rows):.0f} %, "
-            f"{100 * lo:.0f}–{100 * hi:.0f} %) | {speed} | {others} |")
+    return (
+        f"| {name} | {len(ok)}/{len(rows)} ({100 * len(ok) / len(rows):.0f} %, "
+        f"{100 * lo:.0f}–{100 * hi:.0f} %) | {speed} | {others} |"
+    )
 
 
 def main(args):
     if not args:
         print(__doc__, file=sys.stderr)
         return 2
-    print("| controller | success (95 % interval) | speed of successes, mm/s (95 %) | "
-          "other outcomes |")
+    print(
+        "| controller | success (95 % interval) | speed of successes, mm/s (95 %) | "
+        "other outcomes |"
+    )
     print("| --- | --- | --- | --- |")
     for a in args:
         name, _, path = a.partition("=")

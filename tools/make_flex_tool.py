@@ -133,7 +133,10 @@ def skirt_flexcomp():
             # Rim vertices on the middle of each of the sectors' arcs; rings alternate by half.
             a = 2.0 * math.pi * (j + 0.5 * ((i + rings - 1) % 2)) / sectors + math.pi / sectors
             points.append((r * math.cos(a), r * math.sin(a), -up))  # +z of the tool is down
-    vid = lambda i, j: i * sectors + j % sectors
+
+    def vid(i, j):
+        return i * sectors + j % sectors
+
     for i in range(rings - 1):
         for j in range(sectors):
             a, b, c, d = vid(i, j), vid(i, j + 1), vid(i + 1, j), vid(i + 1, j + 1)

@@ -3,11 +3,11 @@ environment, per robot-effects setting. Prints one table row per policy and sett
 
     python python/examples/edge_following_baseline.py [--seeds 5] [--scene SCENE]
 """
+
 import argparse
 import time
 
 import gymnasium as gym
-import numpy as np
 
 import ssc_twin  # noqa: F401  registers the environment
 from ssc_twin.edge_following import PublishedLawPolicy
@@ -33,10 +33,12 @@ def main():
     for effects in ("default", "off"):
         env = gym.make("ssc_twin/EdgeFollowing-v0", scene=args.scene, effects=effects)
         env.action_space.seed(7)
-        policies = {"published law (P_ref 100 Pa, β 2, ΔL 7.5 mm)":
-                    PublishedLawPolicy(env, pref=100, beta=2, step_mm=7.5),
-                    "uniform random actions (action seed 7)":
-                    lambda obs: env.action_space.sample()}
+        policies = {
+            "published law (P_ref 100 Pa, β 2, ΔL 7.5 mm)": PublishedLawPolicy(
+                env, pref=100, beta=2, step_mm=7.5
+            ),
+            "uniform random actions (action seed 7)": lambda obs: env.action_space.sample(),
+        }
         for name, policy in policies.items():
             start = time.perf_counter()
             runs = [episode(env, policy, seed) for seed in range(args.seeds)]
@@ -46,10 +48,12 @@ def main():
                 outcomes[outcome] = outcomes.get(outcome, 0) + 1
             returns = [r for _, r, _ in runs]
             steps = [s for _, _, s in runs]
-            print(f"| {name} | {effects} | 0–{args.seeds - 1} | "
-                  + ", ".join(f"{n} {o}" for o, n in sorted(outcomes.items()))
-                  + f" | {min(returns):.1f} to {max(returns):.1f} | {min(steps)}–{max(steps)} | "
-                  f"{wall:.2f} s |")
+            print(
+                f"| {name} | {effects} | 0–{args.seeds - 1} | "
+                + ", ".join(f"{n} {o}" for o, n in sorted(outcomes.items()))
+                + f" | {min(returns):.1f} to {max(returns):.1f} | {min(steps)}–{max(steps)} | "
+                f"{wall:.2f} s |"
+            )
         env.close()
 
 

@@ -7,6 +7,7 @@ differentials across the cup and the mean pressure, one episode per candidate. p
 optional library is installed (pip install stable-baselines3). Either prints the trained
 policy's outcome and return on five unseen episodes beside the published law's.
 """
+
 import argparse
 import sys
 import time
@@ -27,8 +28,14 @@ def features(obs):
     north-south in the tool frame: P1 SE, P2 NE, P3 NW, P4 SW), the log mean, and a bias."""
     p1, p2, p3, p4 = np.maximum(np.asarray(obs[:4], dtype=np.float64), 0.0)
     total = p1 + p2 + p3 + p4 + 1.0
-    return np.array([(p1 + p2 - p3 - p4) / total, (p2 + p3 - p1 - p4) / total,
-                     np.log1p(total / 4 / PRESSURE_SCALE_PA), 1.0])
+    return np.array(
+        [
+            (p1 + p2 - p3 - p4) / total,
+            (p2 + p3 - p1 - p4) / total,
+            np.log1p(total / 4 / PRESSURE_SCALE_PA),
+            1.0,
+        ]
+    )
 
 
 class LinearPolicy:
@@ -53,7 +60,7 @@ def run_episode(env, policy, seed):
 
 def train_cem(env, budget_s, rng, population=8, elite=2):
     mean, std = np.zeros(2 * N_FEATURES), np.full(2 * N_FEATURES, 1.0)
-    best, best_return, generation, episodes = mean, -np.inf, 0, 0
+    _best, best_return, generation, episodes = mean, -np.inf, 0, 0
     start = time.perf_counter()
     while time.perf_counter() - start < budget_s:
         seed = int(rng.integers(1_000_000))  # every candidate of a generation on one episode
@@ -64,11 +71,13 @@ def train_cem(env, budget_s, rng, population=8, elite=2):
         mean = candidates[order[:elite]].mean(axis=0)
         std = np.maximum(candidates[order[:elite]].std(axis=0), 0.05)
         if returns[order[0]] > best_return:
-            best, best_return = candidates[order[0]], returns[order[0]]
+            _best, best_return = candidates[order[0]], returns[order[0]]
         generation += 1
-        print(f"generation {generation}: best return {returns[order[0]]:.1f}, mean "
-              f"{returns.mean():.1f} ({time.perf_counter() - start:.0f} s, {episodes} episodes)",
-              file=sys.stderr)
+        print(
+            f"generation {generation}: best return {returns[order[0]]:.1f}, mean "
+            f"{returns.mean():.1f} ({time.perf_counter() - start:.0f} s, {episodes} episodes)",
+            file=sys.stderr,
+        )
     return LinearPolicy(mean)
 
 
@@ -94,14 +103,21 @@ def main():
     args = parser.parse_args()
     env = gym.make("ssc_twin/EdgeFollowing-v0", **ENV_KWARGS)
     rng = np.random.default_rng(args.seed)
-    policy = (train_cem(env, args.budget_s, rng) if args.algo == "cem"
-              else train_ppo(env, args.budget_s))
+    policy = (
+        train_cem(env, args.budget_s, rng) if args.algo == "cem" else train_ppo(env, args.budget_s)
+    )
     law = PublishedLawPolicy(env)
     for name, p in (("trained", policy), ("published law", law)):
         results = [run_episode(env, p, 10_000 + k) for k in range(5)]
-        print(f"{name}: returns " + " ".join(f"{r:.1f}" for r, _ in results) + "; outcomes "
-              + " ".join(info["outcome"] for _, info in results) + "; progress "
-              + " ".join(f"{info['progress_mm']:.0f}" for _, info in results) + " mm")
+        print(
+            f"{name}: returns "
+            + " ".join(f"{r:.1f}" for r, _ in results)
+            + "; outcomes "
+            + " ".join(info["outcome"] for _, info in results)
+            + "; progress "
+            + " ".join(f"{info['progress_mm']:.0f}" for _, info in results)
+            + " mm"
+        )
 
 
 if __name__ == "__main__":

@@ -14,6 +14,7 @@ group ``mujoco.plugins``), so ``import mujoco`` can load the bundled scenes::
 and the Gymnasium environment ``ssc_twin/EdgeFollowing-v0`` is registered when gymnasium is
 installed (``pip install .[gym]``).
 """
+
 import os as _os
 
 from . import _gl
@@ -22,18 +23,61 @@ _HEADLESS_PROBLEM = _gl.choose_headless_backend()  # before mujoco picks its GL 
 
 import mujoco as _mujoco  # noqa: E402,F401  loads libmujoco, which _core links (the same library)
 
-from . import _core
-from ._core import (Probe, SilPlant, SteppedTrial, check_seed, compare, contour_step,
-                    controllers, default_scene, max_seed, mujoco_version, object_names, objects,
-                    phase_names, resource_dir, run_trial, scene_path, scene_tiers, student_t95,
-                    sweep, validate, wilson_interval, write_lab_mat, write_robot_log)
+from . import _core  # noqa: E402  after the GL choice above
+from ._core import (  # noqa: E402
+    Probe,
+    SilPlant,
+    SteppedTrial,
+    check_seed,
+    compare,
+    contour_step,
+    controllers,
+    default_scene,
+    max_seed,
+    mujoco_version,
+    object_names,
+    objects,
+    phase_names,
+    resource_dir,
+    run_trial,
+    scene_path,
+    scene_tiers,
+    student_t95,
+    sweep,
+    validate,
+    wilson_interval,
+    write_lab_mat,
+    write_robot_log,
+)
 
-__all__ = ["Probe", "SilPlant", "SteppedTrial", "check_seed", "compare", "contour_step",
-           "controllers", "default_scene", "max_seed", "mujoco_version", "object_names",
-           "objects", "phase_names", "resource_dir", "run_trial", "scene_path", "scene_tiers",
-           "student_t95", "wilson_interval",
-           "sweep", "write_lab_mat",
-           "write_robot_log", "plugin_library", "load_plugin", "read_sweep", "validate"]
+__all__ = [
+    "Probe",
+    "SilPlant",
+    "SteppedTrial",
+    "check_seed",
+    "compare",
+    "contour_step",
+    "controllers",
+    "default_scene",
+    "max_seed",
+    "mujoco_version",
+    "object_names",
+    "objects",
+    "phase_names",
+    "resource_dir",
+    "run_trial",
+    "scene_path",
+    "scene_tiers",
+    "student_t95",
+    "wilson_interval",
+    "sweep",
+    "write_lab_mat",
+    "write_robot_log",
+    "plugin_library",
+    "load_plugin",
+    "read_sweep",
+    "validate",
+]
 
 _core.install_message_handlers()
 _version_problem = _core.check_mujoco_version()
@@ -72,6 +116,7 @@ def read_sweep(csv_path):
     a row with another number of fields).
     """
     import csv
+
     path = _os.fspath(csv_path)
     if not _os.path.isfile(path):
         raise ValueError(f"{path}: not a regular file (the sweep CSV to read)")
@@ -79,8 +124,10 @@ def read_sweep(csv_path):
         head = f.readline(4096)
     if b"\0" in head or not head.startswith(b"scene,pref_pa,beta,step_mm,repeat,seed,outcome"):
         shown = head[:60].decode("ascii", "backslashreplace").rstrip()
-        raise ValueError(f"{path}: not a sweep CSV (its first line is {shown!r}, expected the "
-                         "header scene,pref_pa,beta,step_mm,repeat,seed,outcome,...)")
+        raise ValueError(
+            f"{path}: not a sweep CSV (its first line is {shown!r}, expected the "
+            "header scene,pref_pa,beta,step_mm,repeat,seed,outcome,...)"
+        )
     try:
         with open(path, newline="", encoding="utf-8") as f:
             rows = list(csv.reader(f, strict=True))
@@ -89,8 +136,10 @@ def read_sweep(csv_path):
     names, body = rows[0], rows[1:]
     for line, row in enumerate(body, start=2):
         if len(row) != len(names):
-            raise ValueError(f"{path}: line {line} has {len(row)} fields, the header "
-                             f"{len(names)}: not a whole sweep row")
+            raise ValueError(
+                f"{path}: line {line} has {len(row)} fields, the header "
+                f"{len(names)}: not a whole sweep row"
+            )
     return {name: _column([row[i] for row in body]) for i, name in enumerate(names)}
 
 
@@ -98,6 +147,7 @@ def _column(cells):
     """One CSV column as a NumPy array: int64 when every cell is a whole number, float when every
     cell is a number (nan included), str otherwise."""
     import numpy as np
+
     try:
         return np.array([int(c) for c in cells], dtype=np.int64)
     except ValueError:
@@ -114,4 +164,5 @@ except ImportError:  # the environment needs gymnasium (pip install .[gym])
     pass
 else:
     from .edge_following import register_envs as _register_envs
+
     _register_envs()

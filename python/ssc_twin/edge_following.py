@@ -16,6 +16,7 @@ on the test objects (disk_dNN, hole_dNN, corner_aNNN, volute, strips, fillet).
     env.unwrapped.model, env.unwrapped.data                      # mujoco.MjModel / MjData
     env = gym.make("ssc_twin/EdgeFollowing-v0", controller="fast")  # a residual on a controller
 """
+
 import math
 import os
 import time
@@ -38,8 +39,9 @@ FAILURES = ("failure_I", "failure_II", "lost_edge")
 CONTROL_PERIOD_S = _core.default_control_period_s  # one step: one control iteration
 DEFAULT_SCENE = _core.default_scene()
 # The rig's scenes a contour-following trial runs in (the others replay a log or hold a probe).
-TRIAL_SCENES = tuple(t["scene"] for t in _core.scene_tiers()
-                     if t["kind"] in ("arm", "gantry", "flex"))
+TRIAL_SCENES = tuple(
+    t["scene"] for t in _core.scene_tiers() if t["kind"] in ("arm", "gantry", "flex")
+)
 CUP_VIEW_DISTANCE_M = 0.15  # the "cup" camera: the cup and the edge under it fill the frame
 LIP_GEOM_GROUP = 4  # models/ssc_tool.xml: the lip segments
 
@@ -61,27 +63,50 @@ class EdgeFollowingEnv(gym.Env):
     # video at this rate plays in real time.
     # Without a display there is no window to draw in: "human" is not offered there (so
     # gymnasium's check_env, which renders every mode it is offered, passes headless).
-    metadata = {"render_modes": ["rgb_array"] + ([] if _gl.no_display() else ["human"]),
-                "render_fps": 1.0 / CONTROL_PERIOD_S}
+    metadata = {
+        "render_modes": ["rgb_array"] + ([] if _gl.no_display() else ["human"]),
+        "render_fps": 1.0 / CONTROL_PERIOD_S,
+    }
 
-    def __init__(self, objects=None, include_ft=False, max_step_mm=10.0, pref=_LAW["pref"],
-                 beta=_LAW["beta"], failure_penalty=10.0, terminal_reward=10.0, timeout_s=None,
-                 effects="default", scene=DEFAULT_SCENE, render_mode=None, width=640, height=480,
-                 camera="cup", controller=None, controller_params="", reset_cache=True):
+    def __init__(
+        self,
+        objects=None,
+        include_ft=False,
+        max_step_mm=10.0,
+        pref=_LAW["pref"],
+        beta=_LAW["beta"],
+        failure_penalty=10.0,
+        terminal_reward=10.0,
+        timeout_s=None,
+        effects="default",
+        scene=DEFAULT_SCENE,
+        render_mode=None,
+        width=640,
+        height=480,
+        camera="cup",
+        controller=None,
+        controller_params="",
+        reset_cache=True,
+    ):
         super().__init__()
         # The scene: one of TRIAL_SCENES (the rig's tiers, ssc_twin.scene_tiers()) or an MJCF
         # path. With test objects, the tier's kind (arm, gantry, flex) picks their scenes.
         self.scene = str(scene)
         if not os.path.exists(_core.scene_path(self.scene)):
-            raise ValueError(f"scene {self.scene!r} not found: a name among {list_scenes()} or "
-                             "an MJCF file")
+            raise ValueError(
+                f"scene {self.scene!r} not found: a name among {list_scenes()} or an MJCF file"
+            )
         if render_mode == "human" and _gl.no_display():
-            raise ValueError("render_mode='human' needs a display (none here: DISPLAY and "
-                             "WAYLAND_DISPLAY are unset); use render_mode='rgb_array', or run "
-                             "under xvfb-run")
+            raise ValueError(
+                "render_mode='human' needs a display (none here: DISPLAY and "
+                "WAYLAND_DISPLAY are unset); use render_mode='rgb_array', or run "
+                "under xvfb-run"
+            )
         if render_mode is not None and render_mode not in self.metadata["render_modes"]:
-            raise ValueError(f"render_mode must be one of {self.metadata['render_modes']} or "
-                             f"None, got {render_mode!r}")
+            raise ValueError(
+                f"render_mode must be one of {self.metadata['render_modes']} or "
+                f"None, got {render_mode!r}"
+            )
         self.render_mode = render_mode
         if not (16 <= int(width) <= 4096 and 16 <= int(height) <= 4096):
             raise ValueError(f"width and height must be in [16, 4096] pixels, got {width}x{height}")
@@ -90,7 +115,7 @@ class EdgeFollowingEnv(gym.Env):
         # scene; else a camera the model names.
         self.camera = str(camera)
         self._renderer = None  # mujoco.Renderer for rgb_array, per model
-        self._viewer = None    # mujoco.viewer handle for human
+        self._viewer = None  # mujoco.viewer handle for human
         self._last_frame_wall_s = None
         # None: the disk benchmark scene; else test objects by name, one drawn per episode: a
         # list, or one string of comma-separated names as ``ssc objects --objects`` takes them.
@@ -99,7 +124,9 @@ class EdgeFollowingEnv(gym.Env):
         self.objects = [None] if not objects else list(objects)
         for name in self.objects:
             if name is not None and name not in _core.object_names() and not _parametric(name):
-                raise ValueError(f"unknown test object {name!r}; ssc_twin.object_names() lists them")
+                raise ValueError(
+                    f"unknown test object {name!r}; ssc_twin.object_names() lists them"
+                )
         self.include_ft = bool(include_ft)
         if not 0 < max_step_mm <= 50:
             raise ValueError(f"max_step_mm must be in (0, 50] mm, got {max_step_mm}")
@@ -107,8 +134,10 @@ class EdgeFollowingEnv(gym.Env):
         self.pref, self.beta = float(pref), float(beta)
         self.failure_penalty, self.terminal_reward = float(failure_penalty), float(terminal_reward)
         if not (math.isfinite(self.failure_penalty) and math.isfinite(self.terminal_reward)):
-            raise ValueError("failure_penalty and terminal_reward must be finite, got "
-                             f"{failure_penalty} and {terminal_reward}")
+            raise ValueError(
+                "failure_penalty and terminal_reward must be finite, got "
+                f"{failure_penalty} and {terminal_reward}"
+            )
         self.timeout_s = float(timeout_s) if timeout_s else 0.0
         # The robot effects (docs/fidelity.md): "default" (the fitted set: each step lands off
         # target), "off" (the ideal loop) or "key=value,...".
@@ -137,20 +166,29 @@ class EdgeFollowingEnv(gym.Env):
         first = self._trial_for(self.objects[0])
         if render_mode is not None and self.camera not in ("cup", "free"):
             import mujoco
+
             model = first.model
             if mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_CAMERA, self.camera) < 0:
                 names = [model.camera(k).name for k in range(model.ncam)]
-                raise ValueError(f"camera {self.camera!r}: use 'cup', 'free' or a camera of the "
-                                 f"model {names}")
+                raise ValueError(
+                    f"camera {self.camera!r}: use 'cup', 'free' or a camera of the model {names}"
+                )
 
     # -- helpers ---------------------------------------------------------------------------
     def _trial_for(self, name):
         if name not in self._trials:
-            t = _core.SteppedTrial(scene=self.scene, pref=self.pref, beta=self.beta,
-                                   step_mm=_LAW["step_mm"], seed=1, object=name or "",
-                                   timeout_s=self.timeout_s, effects=self.effects,
-                                   controller=self.controller,
-                                   controller_params=self.controller_params)
+            t = _core.SteppedTrial(
+                scene=self.scene,
+                pref=self.pref,
+                beta=self.beta,
+                step_mm=_LAW["step_mm"],
+                seed=1,
+                object=name or "",
+                timeout_s=self.timeout_s,
+                effects=self.effects,
+                controller=self.controller,
+                controller_params=self.controller_params,
+            )
             t.set_external_policy(True, controller_in_loop=self.controller is not None)
             t.set_reset_cache(self.reset_cache)
             self._trials[name] = t
@@ -160,7 +198,9 @@ class EdgeFollowingEnv(gym.Env):
         p = np.asarray(self._trial.iteration_pressures(), dtype=np.float64)
         if self.include_ft:
             p = np.concatenate([p, np.asarray(self._trial.force_torque())])
-        return np.clip(p, self.observation_space.low, self.observation_space.high).astype(np.float32)
+        return np.clip(p, self.observation_space.low, self.observation_space.high).astype(
+            np.float32
+        )
 
     def _progress(self):
         """Distance travelled along the edge in the followed sense, mm."""
@@ -178,16 +218,22 @@ class EdgeFollowingEnv(gym.Env):
     def _info(self):
         x, y, _ = self._trial.tool_position()
         result = self._trial.result()
-        return {"object": self._object or "disk_benchmark", "scene": self._trial.scene,
-                "phase": self._trial.phase,
-                "time_s": self._trial.time, "progress_mm": self._progress_mm,
-                "tool_xy_m": (x, y), "contour_distance_mm": 1e3 * self._trial.contour_distance_m(x, y),
-                "outcome": result["outcome"],
-                # Why the episode ended (a controller's fault, the failing value), as run_trial
-                # gives it; "" while it runs.
-                "detail": result.get("detail", ""),
-                "controller_step_m": (tuple(self._trial.controller_step())
-                                      if self.controller is not None else (0.0, 0.0))}
+        return {
+            "object": self._object or "disk_benchmark",
+            "scene": self._trial.scene,
+            "phase": self._trial.phase,
+            "time_s": self._trial.time,
+            "progress_mm": self._progress_mm,
+            "tool_xy_m": (x, y),
+            "contour_distance_mm": 1e3 * self._trial.contour_distance_m(x, y),
+            "outcome": result["outcome"],
+            # Why the episode ended (a controller's fault, the failing value), as run_trial
+            # gives it; "" while it runs.
+            "detail": result.get("detail", ""),
+            "controller_step_m": (
+                tuple(self._trial.controller_step()) if self.controller is not None else (0.0, 0.0)
+            ),
+        }
 
     # -- Gymnasium API ---------------------------------------------------------------------
     def reset(self, *, seed=None, options=None):
@@ -242,6 +288,7 @@ class EdgeFollowingEnv(gym.Env):
 
     def _camera(self):
         import mujoco
+
         cam = mujoco.MjvCamera()
         model, data = self.model, self.data
         if self.camera == "cup":
@@ -254,13 +301,15 @@ class EdgeFollowingEnv(gym.Env):
             cam_id = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_CAMERA, self.camera)
             if cam_id < 0:
                 names = [model.camera(k).name for k in range(model.ncam)]
-                raise ValueError(f"camera {self.camera!r}: use 'cup', 'free' or a camera of the "
-                                 f"model {names}")
+                raise ValueError(
+                    f"camera {self.camera!r}: use 'cup', 'free' or a camera of the model {names}"
+                )
             cam.type, cam.fixedcamid = mujoco.mjtCamera.mjCAMERA_FIXED, cam_id
         return cam
 
     def _scene_option(self):
         import mujoco
+
         option = mujoco.MjvOption()
         option.geomgroup[LIP_GEOM_GROUP] = 1  # the lip segments (the plugin colours them)
         return option
@@ -269,8 +318,10 @@ class EdgeFollowingEnv(gym.Env):
         """rgb_array: an (height, width, 3) uint8 frame of the current state; human: a MuJoCo
         viewer window kept in step (about real time: one step per control period)."""
         if self.render_mode is None:
-            gym.logger.warn("render() called without a render_mode; gymnasium.make(..., "
-                            "render_mode='rgb_array' or 'human')")
+            gym.logger.warn(
+                "render() called without a render_mode; gymnasium.make(..., "
+                "render_mode='rgb_array' or 'human')"
+            )
             return None
         if self._trial is None:
             raise RuntimeError("call reset() before render()")
@@ -280,13 +331,14 @@ class EdgeFollowingEnv(gym.Env):
         return None
 
     def _render_rgb(self):
-        import mujoco
+
         if self._renderer is None or self._renderer.model is not self.model:
             if self._renderer is not None:
                 self._renderer.close()
             self._renderer = _Renderer(self.model, self.height, self.width)
-        self._renderer.update_scene(self.data, camera=self._camera(),
-                                    scene_option=self._scene_option())
+        self._renderer.update_scene(
+            self.data, camera=self._camera(), scene_option=self._scene_option()
+        )
         return self._renderer.render()
 
     def _render_human(self):
@@ -307,10 +359,13 @@ class EdgeFollowingEnv(gym.Env):
 
     def _status(self):
         p = self._trial.iteration_pressures()
-        return ("object\ntime\nphase\nP1..P4\nprogress",
-                f"{self._object or 'disk_benchmark'}\n{self._trial.time:.2f} s\n"
-                f"{self._trial.phase}\n" + " ".join(f"{x:.0f}" for x in p) +
-                f" Pa\n{self._progress_mm:.0f} mm")
+        return (
+            "object\ntime\nphase\nP1..P4\nprogress",
+            f"{self._object or 'disk_benchmark'}\n{self._trial.time:.2f} s\n"
+            f"{self._trial.phase}\n"
+            + " ".join(f"{x:.0f}" for x in p)
+            + f" Pa\n{self._progress_mm:.0f} mm",
+        )
 
     def close(self):
         if self._renderer is not None:
@@ -327,12 +382,15 @@ class _Renderer:
 
     def __init__(self, model, height, width):
         import mujoco
+
         self.model = model
         try:
             self._renderer = mujoco.Renderer(model, height, width)
         except Exception as e:  # no GL at all: say what would make one
-            raise RuntimeError(f"render_mode='rgb_array' cannot make an OpenGL context "
-                               f"({type(e).__name__}: {e}); {_gl.render_fix()}") from e
+            raise RuntimeError(
+                f"render_mode='rgb_array' cannot make an OpenGL context "
+                f"({type(e).__name__}: {e}); {_gl.render_fix()}"
+            ) from e
 
     def update_scene(self, data, camera, scene_option):
         self._renderer.update_scene(data, camera=camera, scene_option=scene_option)
@@ -351,9 +409,12 @@ class _Window:
     def __init__(self, model, width, height):
         import glfw
         import mujoco
+
         if not glfw.init():
-            raise RuntimeError("render_mode='human' needs a display (GLFW could not start); "
-                               "use render_mode='rgb_array' without one")
+            raise RuntimeError(
+                "render_mode='human' needs a display (GLFW could not start); "
+                "use render_mode='rgb_array' without one"
+            )
         self.model = model
         self._glfw = glfw
         self._window = glfw.create_window(width, height, "ssc_twin EdgeFollowing", None, None)
@@ -367,17 +428,25 @@ class _Window:
 
     def show(self, data, camera, option, status):
         import mujoco
+
         glfw = self._glfw
         if glfw.window_should_close(self._window):
             self.close()
             return
         glfw.make_context_current(self._window)
-        mujoco.mjv_updateScene(self.model, data, option, None, camera, mujoco.mjtCatBit.mjCAT_ALL,
-                               self._scene)
+        mujoco.mjv_updateScene(
+            self.model, data, option, None, camera, mujoco.mjtCatBit.mjCAT_ALL, self._scene
+        )
         viewport = mujoco.MjrRect(0, 0, *glfw.get_framebuffer_size(self._window))
         mujoco.mjr_render(viewport, self._scene, self._context)
-        mujoco.mjr_overlay(mujoco.mjtFont.mjFONT_NORMAL, mujoco.mjtGridPos.mjGRID_TOPLEFT, viewport,
-                           status[0], status[1], self._context)
+        mujoco.mjr_overlay(
+            mujoco.mjtFont.mjFONT_NORMAL,
+            mujoco.mjtGridPos.mjGRID_TOPLEFT,
+            viewport,
+            status[0],
+            status[1],
+            self._context,
+        )
         glfw.swap_buffers(self._window)
         glfw.poll_events()
 
@@ -393,8 +462,9 @@ class _Window:
 def list_scenes():
     """The scene names under the package's scenes/ folder that a trial can run."""
     folder = os.path.join(_core.resource_dir(), "scenes")
-    return sorted(f[:-4] for f in os.listdir(folder)
-                  if f.endswith(".xml") and f[:-4] in TRIAL_SCENES)
+    return sorted(
+        f[:-4] for f in os.listdir(folder) if f.endswith(".xml") and f[:-4] in TRIAL_SCENES
+    )
 
 
 def _parametric(name):
@@ -411,12 +481,14 @@ class PublishedLawPolicy:
         self.pref, self.beta, self.step_mm = pref, beta, step_mm
 
     def __call__(self, observation):
-        step = _core.contour_step(observation[:4].astype(float).tolist(), self.pref, self.beta,
-                                  self.step_mm)["step_m"]
+        step = _core.contour_step(
+            observation[:4].astype(float).tolist(), self.pref, self.beta, self.step_mm
+        )["step_m"]
         return (np.asarray(step) * 1e3 / self.max_step_mm).astype(np.float32)
 
 
 def register_envs():
     if ENV_ID not in gym.registry:
-        gym.register(id=ENV_ID, entry_point="ssc_twin.edge_following:EdgeFollowingEnv",
-                     max_episode_steps=400)
+        gym.register(
+            id=ENV_ID, entry_point="ssc_twin.edge_following:EdgeFollowingEnv", max_episode_steps=400
+        )

@@ -5,6 +5,7 @@ edge-following environment (checker, the published law succeeds, a random policy
 
     python package_test.py PATH/TO/ssc
 """
+
 import csv
 import json
 import os
@@ -39,10 +40,13 @@ class PackageTest(unittest.TestCase):
 
     def test_import_mujoco_alone_finds_the_plugin_and_writes_no_log(self):
         import ssc_twin
+
         scene = ssc_twin.scene_path("disk_benchmark")
         # A fresh interpreter that never imports ssc_twin: only the entry point can load it.
-        script = ("import mujoco; m = mujoco.MjModel.from_xml_path(%r); d = mujoco.MjData(m); "
-                  "mujoco.mj_step(m, d, 50); print('plugins', m.nplugin)" % scene)
+        script = (
+            "import mujoco; m = mujoco.MjModel.from_xml_path(%r); d = mujoco.MjData(m); "
+            "mujoco.mj_step(m, d, 50); print('plugins', m.nplugin)" % scene
+        )
         r = run([sys.executable, "-c", script], cwd=self.tmp)
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertIn("plugins 1", r.stdout)
@@ -51,17 +55,20 @@ class PackageTest(unittest.TestCase):
 
     def test_resources_come_from_the_installed_package(self):
         import ssc_twin
+
         pkg = os.path.dirname(ssc_twin.__file__)
         self.assertEqual(os.path.realpath(ssc_twin.resource_dir()), os.path.realpath(pkg))
         self.assertTrue(ssc_twin.scene_path("probe_edge").startswith(pkg))
         self.assertTrue(os.path.exists(ssc_twin.plugin_library()))
         # validate's default map ships with the package.
-        self.assertTrue(os.path.exists(os.path.join(pkg, "data", "published",
-                                                    "success_map_dl5.csv")))
+        self.assertTrue(
+            os.path.exists(os.path.join(pkg, "data", "published", "success_map_dl5.csv"))
+        )
 
     @unittest.skipUnless(SSC, "no ssc executable given")
     def test_trial_equals_the_cli(self):
         import ssc_twin
+
         out = os.path.join(self.tmp, "cli")
         r = run([SSC, "trial", "--seed", "3", "--no-plot", "--out", out])
         self.assertEqual(r.returncode, 0, r.stderr)
@@ -71,13 +78,17 @@ class PackageTest(unittest.TestCase):
         self.assertEqual(py["outcome"], cli["outcome"])
         self.assertEqual(py["detail"], cli["detail"])
         for key, value in cli["metrics"].items():  # summary.json keeps 6 significant digits
-            self.assertAlmostEqual(py["metrics"][key], value, delta=1e-5 * abs(value) + 1e-9,
-                                   msg=key)
+            self.assertAlmostEqual(
+                py["metrics"][key], value, delta=1e-5 * abs(value) + 1e-9, msg=key
+            )
         with open(os.path.join(out, "trial.csv")) as f:
             rows = list(csv.DictReader(f))
         log = py["log"]
         self.assertEqual(len(rows), len(log["t_s"]))
-        col = lambda name: np.array([float(r[name]) for r in rows])
+
+        def col(name):
+            return np.array([float(r[name]) for r in rows])
+
         # trial.csv keeps 6 significant digits (8 for positions): equal to that precision.
         np.testing.assert_allclose(log["t_s"], col("t_s"), atol=1e-9)
         for k in range(4):
@@ -87,41 +98,69 @@ class PackageTest(unittest.TestCase):
 
     def test_sweep_writes_its_rows(self):
         import ssc_twin
+
         path = os.path.join(self.tmp, "sweep.csv")
-        s = ssc_twin.sweep(pref=[100, 1000], beta=[2], step_mm=[7.5], repeats=1, seed=5,
-                           threads=2, out_csv=path)
+        s = ssc_twin.sweep(
+            pref=[100, 1000], beta=[2], step_mm=[7.5], repeats=1, seed=5, threads=2, out_csv=path
+        )
         self.assertEqual((s["total"], s["ran"]), (2, 2))
         rows = ssc_twin.read_sweep(path)
         self.assertEqual(sorted(rows["pref_pa"].tolist()), [100.0, 1000.0])
         self.assertTrue(set(rows["outcome"]) <= {"success", "failure_I", "failure_II", "timeout"})
-        again = ssc_twin.sweep(pref=[100, 1000], beta=[2], step_mm=[7.5], repeats=1, seed=5,
-                               threads=1, out_csv=path)
+        again = ssc_twin.sweep(
+            pref=[100, 1000], beta=[2], step_mm=[7.5], repeats=1, seed=5, threads=1, out_csv=path
+        )
         self.assertEqual(again["skipped"], 2)  # resumed: nothing runs twice
 
     def test_sweep_reports_progress(self):
         import ssc_twin
+
         calls = []
         path = os.path.join(self.tmp, "progress.csv")
-        ssc_twin.sweep(pref=[100, 1000], beta=[2], step_mm=[7.5], repeats=1, seed=6, threads=2,
-                       out_csv=path, progress=lambda *a: calls.append(a))
+        ssc_twin.sweep(
+            pref=[100, 1000],
+            beta=[2],
+            step_mm=[7.5],
+            repeats=1,
+            seed=6,
+            threads=2,
+            out_csv=path,
+            progress=lambda *a: calls.append(a),
+        )
         self.assertEqual([c[:2] for c in calls], [(1, 2), (2, 2)])
         self.assertTrue(all(c[2] >= 0 for c in calls))
         # True: lines on stderr (a fresh interpreter, to read them).
-        script = ("import ssc_twin; ssc_twin.sweep(pref=[100], beta=[2], step_mm=[7.5], "
-                  "repeats=2, seed=6, out_csv=%r, progress=True)" %
-                  os.path.join(self.tmp, "progress_lines.csv"))
+        script = (
+            "import ssc_twin; ssc_twin.sweep(pref=[100], beta=[2], step_mm=[7.5], "
+            "repeats=2, seed=6, out_csv=%r, progress=True)"
+            % os.path.join(self.tmp, "progress_lines.csv")
+        )
         r = run([sys.executable, "-c", script], cwd=self.tmp)
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertIn("ssc_twin.sweep: 2/2 trials (100 %)", r.stderr)
 
         def fails(done, total, elapsed_s):
             raise KeyError("from the callback")
+
         with self.assertRaisesRegex(KeyError, "from the callback"):
-            ssc_twin.sweep(pref=[100], beta=[2], step_mm=[7.5], repeats=1, seed=7,
-                           out_csv=os.path.join(self.tmp, "progress_fails.csv"), progress=fails)
+            ssc_twin.sweep(
+                pref=[100],
+                beta=[2],
+                step_mm=[7.5],
+                repeats=1,
+                seed=7,
+                out_csv=os.path.join(self.tmp, "progress_fails.csv"),
+                progress=fails,
+            )
         with self.assertRaisesRegex(TypeError, "progress must be"):
-            ssc_twin.sweep(pref=[100], beta=[2], step_mm=[7.5], repeats=1,
-                           out_csv=os.path.join(self.tmp, "progress_bad.csv"), progress="yes")
+            ssc_twin.sweep(
+                pref=[100],
+                beta=[2],
+                step_mm=[7.5],
+                repeats=1,
+                out_csv=os.path.join(self.tmp, "progress_bad.csv"),
+                progress="yes",
+            )
 
     def test_a_python_controller_follows_the_disk_and_a_failing_one_is_an_outcome(self):
         import math
@@ -145,12 +184,14 @@ class PackageTest(unittest.TestCase):
             if r["iteration"] == 2:
                 raise RuntimeError("lost the plot")
             return (0.001, 0.0)
+
         r = ssc_twin.run_trial(scene="disk_benchmark_gantry", controller=raises, keep_log=False)
         self.assertEqual(r["outcome"], "controller_fault")
         self.assertIn("RuntimeError: lost the plot", r["detail"])
         self.assertEqual(r["metrics"]["iterations"], 3)
-        r = ssc_twin.run_trial(scene="disk_benchmark_gantry", controller=lambda r: "step",
-                               keep_log=False, timeout_s=2)
+        r = ssc_twin.run_trial(
+            scene="disk_benchmark_gantry", controller=lambda r: "step", keep_log=False, timeout_s=2
+        )
         self.assertEqual(r["outcome"], "controller_fault")
         self.assertIn("returned a str", r["detail"])
         with self.assertRaisesRegex(ValueError, "unknown key 'nope'"):
@@ -164,9 +205,18 @@ class PackageTest(unittest.TestCase):
             def __call__(self, r):
                 self.calls += 1
                 return {"step_m": (0.004, 0.0), "height_offset_m": 0.0, "lifted": False}
+
         path = os.path.join(self.tmp, "python_controller_sweep.csv")
-        s = ssc_twin.sweep(pref=[100], beta=[2], step_mm=[7.5], repeats=2, seed=5, threads=2,
-                           out_csv=path, controller=Leave)
+        s = ssc_twin.sweep(
+            pref=[100],
+            beta=[2],
+            step_mm=[7.5],
+            repeats=2,
+            seed=5,
+            threads=2,
+            out_csv=path,
+            controller=Leave,
+        )
         self.assertEqual(s["ran"], 2)
         outcomes = set(ssc_twin.read_sweep(path)["outcome"])
         self.assertTrue(outcomes <= {"failure_I", "failure_II", "lost_edge"}, outcomes)
@@ -174,6 +224,7 @@ class PackageTest(unittest.TestCase):
     @unittest.skipUnless(SSC, "no ssc executable given")
     def test_validate_equals_the_cli(self):
         import ssc_twin
+
         # A tiny map: two cells, 3 seeds each (the least validate takes), a shorter follow limit.
         # The twin succeeds in the first and grasps (failure II) in the second: one class match.
         map_csv = os.path.join(self.tmp, "tiny_map.csv")
@@ -181,21 +232,43 @@ class PackageTest(unittest.TestCase):
             f.write("step_mm,beta,pref_pa,successes_of_3\n7.5,2,100,3\n7.5,2,1000,2\n")
         seeds, seed, timeout_s = 3, 4, VALIDATE_TIMEOUT_S
         cli_dir = os.path.join(self.tmp, "validate_cli")
-        r = run([SSC, "validate", "--map", map_csv, "--seeds", str(seeds), "--seed", str(seed),
-                 "--timeout", str(timeout_s), "--threads", "2", "--no-plot", "--no-progress",
-                 "--out", cli_dir])
+        r = run(
+            [
+                SSC,
+                "validate",
+                "--map",
+                map_csv,
+                "--seeds",
+                str(seeds),
+                "--seed",
+                str(seed),
+                "--timeout",
+                str(timeout_s),
+                "--threads",
+                "2",
+                "--no-plot",
+                "--no-progress",
+                "--out",
+                cli_dir,
+            ]
+        )
         self.assertEqual(r.returncode, 0, r.stderr)
         py_dir = os.path.join(self.tmp, "validate_py")
-        py = ssc_twin.validate(map_csv, out_dir=py_dir, seeds=seeds, seed=seed, threads=2,
-                               timeout_s=timeout_s)
+        py = ssc_twin.validate(
+            map_csv, out_dir=py_dir, seeds=seeds, seed=seed, threads=2, timeout_s=timeout_s
+        )
         self.assertEqual(py["summary"]["ran"], 2 * seeds)
 
         # The same trials: every outcome and seed (rows land in finishing order; sort them).
         def trials(folder):
             with open(os.path.join(folder, "trials.csv")) as f:
                 rows = list(csv.DictReader(f))
-            key = lambda r: (float(r["pref_pa"]), float(r["beta"]), int(r["repeat"]))
+
+            def key(r):
+                return (float(r["pref_pa"]), float(r["beta"]), int(r["repeat"]))
+
             return [(key(r), r["seed"], r["outcome"]) for r in sorted(rows, key=key)]
+
         self.assertEqual(trials(py_dir), trials(cli_dir))
         self.assertEqual(len(trials(cli_dir)), 2 * seeds)
 
@@ -222,15 +295,23 @@ class PackageTest(unittest.TestCase):
             if column in ("published", "twin_class", "main_failure"):
                 self.assertEqual(cells[column], [r[column] for r in rows], column)
             else:
-                np.testing.assert_allclose(cells[column], [float(r[column]) for r in rows],
-                                           rtol=6e-6, atol=1e-12, err_msg=column)
+                np.testing.assert_allclose(
+                    cells[column],
+                    [float(r[column]) for r in rows],
+                    rtol=6e-6,
+                    atol=1e-12,
+                    err_msg=column,
+                )
         self.assertEqual(cells["trials"].tolist(), [seeds, seeds])
-        self.assertEqual(cells["class_match"].tolist(),
-                         [p == t for p, t in zip(cells["published"], cells["twin_class"])])
+        self.assertEqual(
+            cells["class_match"].tolist(),
+            [p == t for p, t in zip(cells["published"], cells["twin_class"])],
+        )
 
         # Resumable like the CLI: a second call reruns nothing and scores the same.
-        again = ssc_twin.validate(map_csv, out_dir=py_dir, seeds=seeds, seed=seed,
-                                  timeout_s=timeout_s)
+        again = ssc_twin.validate(
+            map_csv, out_dir=py_dir, seeds=seeds, seed=seed, timeout_s=timeout_s
+        )
         self.assertEqual((again["summary"]["ran"], again["summary"]["skipped"]), (0, 2 * seeds))
         self.assertEqual(again["scores"], py["scores"])
         with self.assertRaisesRegex(Exception, "seeds = 2 is out of range"):
@@ -238,15 +319,17 @@ class PackageTest(unittest.TestCase):
 
     def test_probe_grasps_on_the_plate_and_reads_ambient_in_air(self):
         import ssc_twin
+
         probe = ssc_twin.Probe()
-        on = probe.read(-0.03, 0.0)          # well inside the plate
-        off = probe.read(0.05, 0.0)          # beyond its edge, over the table
+        on = probe.read(-0.03, 0.0)  # well inside the plate
+        off = probe.read(0.05, 0.0)  # beyond its edge, over the table
         self.assertTrue(np.all(on["filtered_pa"] > 10000), on)
         self.assertLess(float(np.abs(off["filtered_pa"]).max()), 50.0, off)
         self.assertEqual(on["filtered_pa"].shape, (4,))
 
     def test_compare_replays_a_twin_log(self):
         import ssc_twin
+
         log_dir = os.path.join(self.tmp, "robot_log")
         # The ideal loop (effects off): the replay is compared with a run it can reproduce.
         self.assertEqual(ssc_twin.write_robot_log(log_dir, seed=2, effects="off"), "success")
@@ -258,11 +341,13 @@ class PackageTest(unittest.TestCase):
     def test_plugin_loads_once_when_asked_twice(self):
         # import mujoco registered the plugin (entry point); loading it again by hand is what
         # raised "already registered". load_plugin() is safe any number of times.
-        script = ("import mujoco, ssc_twin\n"
-                  "print('loaded', ssc_twin.load_plugin(), ssc_twin.load_plugin(),\n"
-                  "      ssc_twin.load_plugin(ssc_twin.plugin_library()))\n"
-                  "m = mujoco.MjModel.from_xml_path(ssc_twin.scene_path('probe_edge'))\n"
-                  "print('plugins', m.nplugin)\n")
+        script = (
+            "import mujoco, ssc_twin\n"
+            "print('loaded', ssc_twin.load_plugin(), ssc_twin.load_plugin(),\n"
+            "      ssc_twin.load_plugin(ssc_twin.plugin_library()))\n"
+            "m = mujoco.MjModel.from_xml_path(ssc_twin.scene_path('probe_edge'))\n"
+            "print('plugins', m.nplugin)\n"
+        )
         r = run([sys.executable, "-c", script], cwd=self.tmp)
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertIn("loaded False False False", r.stdout)
@@ -271,9 +356,9 @@ class PackageTest(unittest.TestCase):
         # mj_loadPluginLibrary registers the name a second time, which MuJoCo refuses.
         copy = os.path.join(self.tmp, "libssc_plugin_copy.so")
         import ssc_twin
+
         shutil.copy(ssc_twin.plugin_library(), copy)
-        script = ("import mujoco, ssc_twin\n"
-                  "print('loaded', ssc_twin.load_plugin(%r))\n" % copy)
+        script = "import mujoco, ssc_twin\nprint('loaded', ssc_twin.load_plugin(%r))\n" % copy
         r = run([sys.executable, "-c", script], cwd=self.tmp)
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertIn("loaded False", r.stdout)
@@ -285,8 +370,19 @@ class PackageTest(unittest.TestCase):
     @unittest.skipUnless(XVFB, "xvfb-run not installed")
     def test_mujoco_viewer_opens_our_scene(self):
         import ssc_twin
-        cmd = [XVFB, "-a", "-s", "-screen 0 1024x768x24", "timeout", "12", sys.executable, "-m",
-               "mujoco.viewer", "--mjcf=" + ssc_twin.scene_path("disk_benchmark")]
+
+        cmd = [
+            XVFB,
+            "-a",
+            "-s",
+            "-screen 0 1024x768x24",
+            "timeout",
+            "12",
+            sys.executable,
+            "-m",
+            "mujoco.viewer",
+            "--mjcf=" + ssc_twin.scene_path("disk_benchmark"),
+        ]
         r = run(cmd, timeout=60, cwd=self.tmp)
         # Still running when the timeout ended it: the scene loaded and the window stayed up.
         self.assertEqual(r.returncode, 124, r.stderr[-2000:])
@@ -298,8 +394,8 @@ class EdgeFollowingTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         import gymnasium as gym
-        import ssc_twin  # registers the environment
         from ssc_twin.edge_following import PublishedLawPolicy
+
         cls.gym, cls.policy = gym, PublishedLawPolicy
 
     def episode(self, env, policy, seed, options=None):
@@ -314,6 +410,7 @@ class EdgeFollowingTest(unittest.TestCase):
 
     def test_environment_passes_the_checker(self):
         from gymnasium.utils.env_checker import check_env
+
         env = self.gym.make("ssc_twin/EdgeFollowing-v0", include_ft=True)
         check_env(env.unwrapped, skip_render_check=True)  # rendering: the tests below
         self.assertEqual(env.observation_space.shape, (10,))
@@ -329,35 +426,45 @@ class EdgeFollowingTest(unittest.TestCase):
     def test_random_policy_does_not(self):
         env = self.gym.make("ssc_twin/EdgeFollowing-v0")
         env.action_space.seed(7)
-        random_policy = lambda obs: env.action_space.sample()
+
+        def random_policy(obs):
+            return env.action_space.sample()
+
         for seed in range(3):
             info, total, _ = self.episode(env, random_policy, seed=seed)
             self.assertNotEqual(info["outcome"], "success", info)
             self.assertLess(total, 5)
 
     def test_controller_runs_in_the_loop(self):
-        zero = lambda obs: np.zeros(2, dtype=np.float32)
+        def zero(obs):
+            return np.zeros(2, dtype=np.float32)
+
         env = self.gym.make("ssc_twin/EdgeFollowing-v0", controller="published", effects="off")
         info, total, steps = self.episode(env, zero, seed=1)
         self.assertEqual(info["outcome"], "success", info)  # a zero action: the law as it is
         self.assertGreater(info["progress_mm"], 200)
         self.assertNotEqual(info["controller_step_m"], (0.0, 0.0))
+
         # The action adds to the controller's step: pushing off the object every step loses it.
-        outward = lambda obs: np.array([0.0, -1.0], dtype=np.float32)
+        def outward(obs):
+            return np.array([0.0, -1.0], dtype=np.float32)
+
         info, _, _ = self.episode(env, outward, seed=1)
         self.assertIn(info["outcome"], ("failure_I", "lost_edge"), info)
 
         class Broken:  # a Python controller: one instance per episode
             def __call__(self, reading):
                 return (float("nan"), 0.0)
+
         env = self.gym.make("ssc_twin/EdgeFollowing-v0", controller=Broken)
         obs, info = env.reset(seed=1)
         obs, reward, terminated, truncated, info = env.step(zero(obs))
         self.assertTrue(terminated)
         self.assertEqual(info["outcome"], "controller_fault", info)
         with self.assertRaisesRegex(ValueError, "step_max_mm"):
-            self.gym.make("ssc_twin/EdgeFollowing-v0", controller="fast",
-                          controller_params="step_max_mm=99")
+            self.gym.make(
+                "ssc_twin/EdgeFollowing-v0", controller="fast", controller_params="step_max_mm=99"
+            )
         with self.assertRaisesRegex(ValueError, "controller"):
             self.gym.make("ssc_twin/EdgeFollowing-v0", controller="no_such")
         with self.assertRaisesRegex(ValueError, "controller_params"):
@@ -365,12 +472,16 @@ class EdgeFollowingTest(unittest.TestCase):
 
     def test_scene_option_runs_the_named_scene(self):
         import mujoco
+
         arm = self.gym.make("ssc_twin/EdgeFollowing-v0", scene="disk_benchmark", effects="off")
         obs, info = arm.reset(seed=1)
         model, data = arm.unwrapped.model, arm.unwrapped.data
         self.assertIsInstance(model, mujoco.MjModel)
         self.assertIsInstance(data, mujoco.MjData)
-        body = lambda m, name: mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, name)
+
+        def body(m, name):
+            return mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, name)
+
         self.assertGreaterEqual(body(model, "shoulder_link"), 0)  # the UR-10
         self.assertLess(body(model, "gantry_x"), 0)
         # The live data: the trial's clock and the cup where the info says.

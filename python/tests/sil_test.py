@@ -6,6 +6,7 @@ Runs where the ssc_twin package is installed (the python_package CTest's venv). 
 runs the lab's own script needs a checkout of the lab's repository given as $SSC_LAB_REPO and is
 skipped, saying so, without one.
 """
+
 import importlib
 import json
 import math
@@ -44,6 +45,7 @@ class SilContracts(unittest.TestCase):
     def test_subscriber_receives_packets_at_sensor_rate(self):
         import rospy
         from suction_cup.msg import SensorPacket, cmdPacket
+
         got = []
         rospy.Subscriber("SensorPacket", SensorPacket, got.append)
         rospy.sleep(0.5)
@@ -64,6 +66,7 @@ class SilContracts(unittest.TestCase):
         from std_msgs.msg import Int8
         from suction_cup.msg import cmdPacket
         from suction_cup.srv import Enable
+
         pwm = rospy.Publisher("pwm", Int8, queue_size=1)
         rospy.Publisher("cmdPacket", cmdPacket, queue_size=1).publish(cmdPacket(cmdInput=2))
         rospy.wait_for_service("data_logging")
@@ -81,8 +84,11 @@ class SilContracts(unittest.TestCase):
         by_topic = {f.split("__")[-1]: os.path.join(self.tmp, f) for f in files}
         with open(by_topic["SensorPacket.csv"]) as f:
             lines = f.read().splitlines()
-        self.assertEqual(lines[0], "ROStimestamp,/SensorPacket.ch,/SensorPacket.data[0],"
-                         "/SensorPacket.data[1],/SensorPacket.data[2],/SensorPacket.data[3]")
+        self.assertEqual(
+            lines[0],
+            "ROStimestamp,/SensorPacket.ch,/SensorPacket.data[0],"
+            "/SensorPacket.data[1],/SensorPacket.data[2],/SensorPacket.data[3]",
+        )
         rate = self.world.plant.sample_rate_hz
         self.assertAlmostEqual(len(lines) - 1, rate * 1.0, delta=2)  # only while enabled
         stamp, ch, rest = lines[1].split(",", 2)
@@ -90,13 +96,18 @@ class SilContracts(unittest.TestCase):
         self.assertEqual(len(rest.split(", ")), 4)  # array elements joined by ", "
         with open(by_topic["endEffectorPose.csv"]) as f:
             header = f.readline().strip().split(",")
-        self.assertEqual(header[1:], ["/endEffectorPose.pose.orientation.w",
-                                      "/endEffectorPose.pose.orientation.x",
-                                      "/endEffectorPose.pose.orientation.y",
-                                      "/endEffectorPose.pose.orientation.z",
-                                      "/endEffectorPose.pose.position.x",
-                                      "/endEffectorPose.pose.position.y",
-                                      "/endEffectorPose.pose.position.z"])
+        self.assertEqual(
+            header[1:],
+            [
+                "/endEffectorPose.pose.orientation.w",
+                "/endEffectorPose.pose.orientation.x",
+                "/endEffectorPose.pose.orientation.y",
+                "/endEffectorPose.pose.orientation.z",
+                "/endEffectorPose.pose.position.x",
+                "/endEffectorPose.pose.position.y",
+                "/endEffectorPose.pose.position.z",
+            ],
+        )
         with open(by_topic["pwm.csv"]) as f:
             self.assertEqual(f.read().splitlines()[1].split(",")[1], "30")
         # A second start opens a new recording.
@@ -110,22 +121,40 @@ class SilContracts(unittest.TestCase):
         from suction_cup.msg import cmdPacket
         from suction_cup.srv import Enable
         from ssc_twin.sil import save_data_params
+
         rospy.Publisher("cmdPacket", cmdPacket, queue_size=1).publish(cmdPacket(cmdInput=2))
         enable = rospy.ServiceProxy("data_logging", Enable)
         enable(True)
         rospy.sleep(1.0)
-        history = [[0.1, -0.63, 0.097, np.array([1.0, 0.0]), np.array([0.0, 1.0]),
-                    np.array([1.0, 0.0]), -1.1, -90.0, -95.0, -100.0, -105.0]]
-        path = save_data_params({"Pref": 100, "beta": 2.0, "d_lat": 7.5e-3,
-                                 "edgeFollowing_history": history}, "sil_test",
-                                mat_dir=self.tmp)
+        history = [
+            [
+                0.1,
+                -0.63,
+                0.097,
+                np.array([1.0, 0.0]),
+                np.array([0.0, 1.0]),
+                np.array([1.0, 0.0]),
+                -1.1,
+                -90.0,
+                -95.0,
+                -100.0,
+                -105.0,
+            ]
+        ]
+        path = save_data_params(
+            {"Pref": 100, "beta": 2.0, "d_lat": 7.5e-3, "edgeFollowing_history": history},
+            "sil_test",
+            mat_dir=self.tmp,
+        )
         enable(False)
         self.assertRegex(os.path.basename(path), r"^DataLog_\d{4}_\d{4}_\d{6}_sil_test\.mat$")
         from scipy.io import loadmat
+
         m = loadmat(path)
         self.assertEqual(m["SensorPacket_data"].shape[1], 6)
-        self.assertAlmostEqual(m["SensorPacket_data"].shape[0], self.world.plant.sample_rate_hz,
-                               delta=2)
+        self.assertAlmostEqual(
+            m["SensorPacket_data"].shape[0], self.world.plant.sample_rate_hz, delta=2
+        )
         self.assertEqual(m["endEffectorPose_data"].shape[1], 8)
         self.assertEqual(int(np.ravel(m["Pref"])[0]), 100)
         self.assertAlmostEqual(float(np.ravel(m["d_lat"])[0]), 7.5e-3)
@@ -135,6 +164,7 @@ class SilContracts(unittest.TestCase):
         import rospy
         import rtde_control
         import rtde_receive
+
         c = rtde_control.RTDEControlInterface("10.0.0.1", 125)
         r = rtde_receive.RTDEReceiveInterface("10.0.0.1", 125)
         c.setTcp([0, 0, 0.146, 0, 0, 0])
@@ -151,6 +181,7 @@ class SilContracts(unittest.TestCase):
         self.assertGreater(took, np.hypot(0.02, 0.01) / 0.05)
         # tf and RTDE agree: tool0 in base_link is the TCP turned 180 deg about z, 146 mm up.
         import tf
+
         trans, _ = tf.TransformListener().lookupTransform("/base_link", "/tool0", rospy.Time(0))
         self.assertAlmostEqual(trans[0], -now[0], places=6)
         self.assertAlmostEqual(trans[1], -now[1], places=6)
@@ -158,6 +189,7 @@ class SilContracts(unittest.TestCase):
 
     def test_virtual_time_advances_with_sleep(self):
         import rospy
+
         wall0, t0 = time.perf_counter(), rospy.get_time()
         rospy.sleep(3.0)
         self.assertAlmostEqual(rospy.get_time() - t0, 3.0, delta=self.world.plant.timestep)
@@ -177,6 +209,7 @@ class SilContracts(unittest.TestCase):
         import rtde_receive
         from suction_cup.msg import SensorPacket, cmdPacket
         from ssc_twin.sil import noop
+
         got = []
         rospy.Subscriber("SensorPacket", SensorPacket, got.append)
         rospy.Publisher("cmdPacket", cmdPacket, queue_size=1).publish(cmdPacket(cmdInput=2))
@@ -188,8 +221,12 @@ class SilContracts(unittest.TestCase):
         goal = list(start)
         goal[0] += 0.005
         c.servoL(goal, 0.0, 0.0, 0.05, 0.2, 100.0)
-        self.assertAlmostEqual(r.getActualTCPPose()[0], start[0], delta=1e-6,
-                               msg="servoL returns at once, as ur_rtde's does")
+        self.assertAlmostEqual(
+            r.getActualTCPPose()[0],
+            start[0],
+            delta=1e-6,
+            msg="servoL returns at once, as ur_rtde's does",
+        )
         self.world.pause_cost_s = 0.1
         n0, t0 = len(got), rospy.get_time()
         noop._pause(0.01)
@@ -202,6 +239,7 @@ class SilContracts(unittest.TestCase):
     def test_a_measured_pause_charges_the_scripts_cpu_time(self):
         import rospy
         from ssc_twin.sil import noop
+
         self.world.pause_cost_s = world_mod.MEASURED
         rospy.sleep(0.01)
         c0, x = time.process_time(), 0
@@ -219,8 +257,7 @@ class SilContracts(unittest.TestCase):
 def run_sil(args, cwd):
     cmd = [SSC, "sil"] if SSC else [sys.executable, "-m", "ssc_twin.sil"]
     env = dict(os.environ, SSC_PYTHON=sys.executable)
-    return subprocess.run(cmd + args, cwd=cwd, env=env, capture_output=True, text=True,
-                          timeout=600)
+    return subprocess.run(cmd + args, cwd=cwd, env=env, capture_output=True, text=True, timeout=600)
 
 
 class SilBounds(unittest.TestCase):
@@ -263,8 +300,10 @@ class SilBounds(unittest.TestCase):
         self.assertIn("the wall-clock limit (--max-wall 2 s)", p.stdout)
 
     def test_a_script_that_swallows_the_stop_still_ends(self):
-        text = ("while True:\n    try:\n        while True:\n            pass\n"
-                "    except BaseException:\n        pass\n")
+        text = (
+            "while True:\n    try:\n        while True:\n            pass\n"
+            "    except BaseException:\n        pass\n"
+        )
         report = os.path.join(self.out, "report.json")
         p = self.sil("--max-wall", "1", "--report", report, self.script(text), timeout=40)
         self.assertEqual(p.returncode, 1, p.stderr[-2000:])
@@ -272,11 +311,13 @@ class SilBounds(unittest.TestCase):
             self.assertIn("wall-clock limit", json.load(f)["stopped_by"])
 
     def test_children_end_with_the_run_and_temp_files_stay_in_out(self):
-        text = ("import subprocess, tempfile\n"
-                "p = subprocess.Popen(['sleep', '300'])\n"
-                "open('child.pid', 'w').write(str(p.pid))\n"
-                "fd, path = tempfile.mkstemp()\n"
-                "open('temp.path', 'w').write(path)\n")
+        text = (
+            "import subprocess, tempfile\n"
+            "p = subprocess.Popen(['sleep', '300'])\n"
+            "open('child.pid', 'w').write(str(p.pid))\n"
+            "fd, path = tempfile.mkstemp()\n"
+            "open('temp.path', 'w').write(path)\n"
+        )
         p = self.sil(self.script(text))
         # The script ran to its end without touching anything: the trial failed (exit 5).
         self.assertEqual(p.returncode, 5, p.stdout + p.stderr)
@@ -301,12 +342,25 @@ class SilBounds(unittest.TestCase):
             ([self.out], 4, "is a directory, not a script"),
             ([fifo], 4, "not a regular file"),
             ([os.path.join(self.out, "absent.py")], 3, "no such file"),
-            ([self.script("from rospy import no_such_name\n", "name.py")], 6,
-             "the twin's stand-in lacks it"),
-            (["--report", os.path.join(self.out, "no", "r.json"), self.script("x = 1\n", "ok.py")],
-             2, "--report"),
-            (["--set", "x=1", "--set", "x=2", self.script("x = 0\n", "knob.py")], 2,
-             "--set x: given twice"),
+            (
+                [self.script("from rospy import no_such_name\n", "name.py")],
+                6,
+                "the twin's stand-in lacks it",
+            ),
+            (
+                [
+                    "--report",
+                    os.path.join(self.out, "no", "r.json"),
+                    self.script("x = 1\n", "ok.py"),
+                ],
+                2,
+                "--report",
+            ),
+            (
+                ["--set", "x=1", "--set", "x=2", self.script("x = 0\n", "knob.py")],
+                2,
+                "--set x: given twice",
+            ),
         ]
         for args, code, text in cases:
             with self.subTest(args=args):
@@ -325,9 +379,16 @@ class SilBounds(unittest.TestCase):
 
         def limit():
             resource.setrlimit(resource.RLIMIT_FSIZE, (1 << 16, 1 << 16))
-        p = subprocess.run(cmd + ["--out", os.path.join(self.out, "run"), script], cwd=self.out,
-                           env=dict(os.environ, SSC_PYTHON=sys.executable), capture_output=True,
-                           text=True, timeout=120, preexec_fn=limit)
+
+        p = subprocess.run(
+            cmd + ["--out", os.path.join(self.out, "run"), script],
+            cwd=self.out,
+            env=dict(os.environ, SSC_PYTHON=sys.executable),
+            capture_output=True,
+            text=True,
+            timeout=120,
+            preexec_fn=limit,
+        )
         self.assert_one_line(p, 1, "the disk is full or a size limit was hit")
 
 
@@ -336,6 +397,7 @@ class VerdictUnit(unittest.TestCase):
 
     def run_path(self, vacuum_of, force_n=1.8, turns=1.0, centre=(0.65, 0.0), r=0.033, n=400):
         from ssc_twin.sil.verdict import Verdict
+
         v = Verdict(centre)
         v.add(0.0, [0.0] * 4, (0, 0), 0.3)  # in air: the F/T's tare
         for i in range(n + 1):
@@ -373,9 +435,11 @@ class LimitsUnit(unittest.TestCase):
 
     def test_no_simulated_time_for_the_stuck_span_stops(self):
         from ssc_twin.sil import limits
+
         w = self.FakeWorld()
-        lim = limits.Limits(w, max_wall_s=60, stuck_wall_s=0.2, max_idle_calls=10, grace_s=1,
-                            give_up=lambda: None)
+        lim = limits.Limits(
+            w, max_wall_s=60, stuck_wall_s=0.2, max_idle_calls=10, grace_s=1, give_up=lambda: None
+        )
         lim._tick(None, None)
         w.sim_time = 1.0
         time.sleep(0.25)
@@ -407,11 +471,18 @@ class SilLoop(unittest.TestCase):
         self.assertGreater(abs(summary["verdict"]["swept_deg"]), 355)
         self.assertEqual(len(summary["mat_files"]), 1, summary)
         mat = summary["mat_files"][0]
-        self.assertRegex(os.path.basename(mat), r"^DataLog_\d{4}_\d{4}_\d{6}_seb_testEdgeFollowing_"
-                         r"refP_100.0_beta_2.0_step_0.0075_deleteMe\.mat$")
+        self.assertRegex(
+            os.path.basename(mat),
+            r"^DataLog_\d{4}_\d{4}_\d{6}_seb_testEdgeFollowing_"
+            r"refP_100.0_beta_2.0_step_0.0075_deleteMe\.mat$",
+        )
         if SSC:
-            c = subprocess.run([SSC, "compare", mat, "--out", os.path.join(out, "compare")],
-                               capture_output=True, text=True, timeout=600)
+            c = subprocess.run(
+                [SSC, "compare", mat, "--out", os.path.join(out, "compare")],
+                capture_output=True,
+                text=True,
+                timeout=600,
+            )
             self.assertEqual(c.returncode, 0, c.stdout[-3000:] + c.stderr[-3000:])
 
     def test_a_missing_interface_is_named(self):
@@ -429,16 +500,23 @@ class SilLoop(unittest.TestCase):
         self.addCleanup(shutil.rmtree, out, True)
         script = os.path.join(out, "plots.py")
         with open(script, "w") as f:
-            f.write("import rospy\nimport matplotlib.pyplot as plt\n"
-                    "fig, ax = plt.subplots(figsize=(8, 4))\nt0 = rospy.get_time()\n"
-                    "ax.annotate('', xytext=(0, 0), xy=(0.5, 0.5), arrowprops={})\n"
-                    "plt.pause(0.01)\nprint('paused %.4f' % (rospy.get_time() - t0))\n")
+            f.write(
+                "import rospy\nimport matplotlib.pyplot as plt\n"
+                "fig, ax = plt.subplots(figsize=(8, 4))\nt0 = rospy.get_time()\n"
+                "ax.annotate('', xytext=(0, 0), xy=(0.5, 0.5), arrowprops={})\n"
+                "plt.pause(0.01)\nprint('paused %.4f' % (rospy.get_time() - t0))\n"
+            )
         report = os.path.join(out, "r.json")
         cmd = [SSC, "sil"] if SSC else [sys.executable, "-m", "ssc_twin.sil"]
         env = dict(os.environ, SSC_PYTHON=sys.executable, MPLBACKEND="Agg")
-        p = subprocess.run(cmd + ["--plots", "--pause-cost", "0.2", "--report", report,
-                                  "--out", out, script], cwd=out, env=env, capture_output=True,
-                           text=True, timeout=300)
+        p = subprocess.run(
+            cmd + ["--plots", "--pause-cost", "0.2", "--report", report, "--out", out, script],
+            cwd=out,
+            env=env,
+            capture_output=True,
+            text=True,
+            timeout=300,
+        )
         # It draws and pauses, never touching anything: the trial's verdict is exit 5.
         self.assertEqual(p.returncode, 5, p.stdout + p.stderr)
         self.assertIn("the trial: never touched the object", p.stdout)
@@ -463,35 +541,49 @@ class SilLoop(unittest.TestCase):
             f.write("class robotHelp:\n    def setTCPoffset(self, o):\n        pass\n")
         script = os.path.join(out, "lab", "follow.py")
         with open(script, "w") as f:
-            f.write("import rospy\nfrom helperFunction.robot_helper import robotHelp\n"
-                    "h = robotHelp()\nh.setTCPoffset([0, 0, 0.146])\nh.setCalibrationMatrix()\n")
+            f.write(
+                "import rospy\nfrom helperFunction.robot_helper import robotHelp\n"
+                "h = robotHelp()\nh.setTCPoffset([0, 0, 0.146])\nh.setCalibrationMatrix()\n"
+            )
         p = run_sil(["--out", out, script], out)
         self.assertEqual(p.returncode, 1, p.stdout + p.stderr)
-        self.assertIn("the lab's own code, not the twin: follow.py:5 uses "
-                      "robotHelp.setCalibrationMatrix, which class robotHelp "
-                      "(helperFunction/robot_helper.py) does not define", p.stdout)
+        self.assertIn(
+            "the lab's own code, not the twin: follow.py:5 uses "
+            "robotHelp.setCalibrationMatrix, which class robotHelp "
+            "(helperFunction/robot_helper.py) does not define",
+            p.stdout,
+        )
         self.assertNotIn("missing interface", p.stdout)
 
 
 class SilViewer(unittest.TestCase):
     def test_viewer_follows_a_script_under_xvfb(self):
         import shutil
+
         if not shutil.which("xvfb-run"):
             self.skipTest("xvfb-run is not installed")
         out = tempfile.mkdtemp(prefix="ssc_sil_viewer_")
         self.addCleanup(shutil.rmtree, out, True)
         script = os.path.join(out, "moves.py")
         with open(script, "w") as f:
-            f.write("import rospy, rtde_control, rtde_receive\n"
-                    "rospy.init_node('v')\n"
-                    "c = rtde_control.RTDEControlInterface('10.0.0.1', 125)\n"
-                    "r = rtde_receive.RTDEReceiveInterface('10.0.0.1', 125)\n"
-                    "p = r.getActualTCPPose(); p[2] += 0.01\n"
-                    "print('moved', c.moveL(p, 0.05, 0.5))\n")
+            f.write(
+                "import rospy, rtde_control, rtde_receive\n"
+                "rospy.init_node('v')\n"
+                "c = rtde_control.RTDEControlInterface('10.0.0.1', 125)\n"
+                "r = rtde_receive.RTDEReceiveInterface('10.0.0.1', 125)\n"
+                "p = r.getActualTCPPose(); p[2] += 0.01\n"
+                "print('moved', c.moveL(p, 0.05, 0.5))\n"
+            )
         cmd = [SSC, "sil"] if SSC else [sys.executable, "-m", "ssc_twin.sil"]
         env = dict(os.environ, SSC_PYTHON=sys.executable)
-        p = subprocess.run(["xvfb-run", "-a"] + cmd + ["--viewer", "--out", out, script], cwd=out,
-                           env=env, capture_output=True, text=True, timeout=300)
+        p = subprocess.run(
+            ["xvfb-run", "-a"] + cmd + ["--viewer", "--out", out, script],
+            cwd=out,
+            env=env,
+            capture_output=True,
+            text=True,
+            timeout=300,
+        )
         self.assertEqual(p.returncode, 5, p.stdout[-2000:] + p.stderr[-2000:])  # never touched
         self.assertIn("moved True", p.stdout)
 
@@ -502,8 +594,14 @@ class SilViewer(unittest.TestCase):
         with open(script, "w") as f:
             f.write("import rospy\n")
         env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
-        p = subprocess.run([sys.executable, "-m", "ssc_twin.sil", "--viewer", "--out", out, script],
-                           cwd=out, env=env, capture_output=True, text=True, timeout=300)
+        p = subprocess.run(
+            [sys.executable, "-m", "ssc_twin.sil", "--viewer", "--out", out, script],
+            cwd=out,
+            env=env,
+            capture_output=True,
+            text=True,
+            timeout=300,
+        )
         self.assertEqual(p.returncode, 1, p.stdout + p.stderr)
         self.assertIn("no display", p.stderr)
 
@@ -513,7 +611,9 @@ class LabCheckout(unittest.TestCase):
         repo = os.environ.get("SSC_LAB_REPO")
         if not repo:
             self.skipTest("SSC_LAB_REPO is not set (a checkout of the lab's edg_suction_cup)")
-        script = os.path.join(repo, "src", "SDL_ur_control_edgeFollowing_livePlot_oneDiskRevolution.py")
+        script = os.path.join(
+            repo, "src", "SDL_ur_control_edgeFollowing_livePlot_oneDiskRevolution.py"
+        )
         out = tempfile.mkdtemp(prefix="ssc_sil_lab_")
         self.addCleanup(shutil.rmtree, out, True)
         p = run_sil(["--out", out, "--max-sim", "5", script], out)

@@ -5,6 +5,7 @@ was installed into (tests/install/python_package_test.sh).
 
 With Hypothesis installed (optional), property tests draw arguments from wide ranges and assert
 that every call either returns finite numbers or raises ValueError."""
+
 import math
 import os
 import shutil
@@ -40,11 +41,19 @@ class StrictArgumentsTest(unittest.TestCase):
         csv = os.path.join(self.tmp, "s", "sweep.csv")
         grid = dict(pref=[100], beta=[2], step_mm=[7.5], repeats=1)
         self.refused("threads", ssc_twin.sweep, threads=0, out_csv=csv, **grid)
-        self.refused("listed twice", ssc_twin.sweep, pref=[100, 100], beta=[2], step_mm=[7.5],
-                     repeats=1, out_csv=csv)
+        self.refused(
+            "listed twice",
+            ssc_twin.sweep,
+            pref=[100, 100],
+            beta=[2],
+            step_mm=[7.5],
+            repeats=1,
+            out_csv=csv,
+        )
         self.refused("out_csv", ssc_twin.sweep, out_csv="", **grid)
-        self.refused("repeat", ssc_twin.sweep, pref=[100], beta=[2], step_mm=[7.5], repeats=0,
-                     out_csv=csv)
+        self.refused(
+            "repeat", ssc_twin.sweep, pref=[100], beta=[2], step_mm=[7.5], repeats=0, out_csv=csv
+        )
         self.assertFalse(os.path.exists(os.path.dirname(csv)))
 
     def test_trial_arguments(self):
@@ -89,8 +98,9 @@ class StrictArgumentsTest(unittest.TestCase):
         calls = {
             "check_seed": ssc_twin.check_seed,
             "run_trial": lambda s: ssc_twin.run_trial(seed=s, keep_log=False),
-            "sweep": lambda s: ssc_twin.sweep(pref=[100], beta=[2], step_mm=[7.5], repeats=1,
-                                              seed=s, out_csv=csv),
+            "sweep": lambda s: ssc_twin.sweep(
+                pref=[100], beta=[2], step_mm=[7.5], repeats=1, seed=s, out_csv=csv
+            ),
             "validate": lambda s: ssc_twin.validate(out_dir=out, seed=s),
             "objects": lambda s: ssc_twin.objects("disk_d14", out_dir=out, seed=s),
             "write_robot_log": lambda s: ssc_twin.write_robot_log(out, seed=s),
@@ -101,6 +111,7 @@ class StrictArgumentsTest(unittest.TestCase):
         }
         try:
             import gymnasium as gym
+
             env = gym.make("ssc_twin/EdgeFollowing-v0")
             calls["env.reset"] = lambda s: env.reset(seed=s)
         except ImportError:  # gymnasium is optional
@@ -113,29 +124,37 @@ class StrictArgumentsTest(unittest.TestCase):
         self.assertFalse(os.path.exists(os.path.dirname(csv)))
         self.assertFalse(os.path.exists(out))
         # Whole numbers in range pass as ints, whatever their Python type.
-        for good, want in ((0, 0), (2**53 - 1, 2**53 - 1), (2.0, 2), (np.int64(7), 7),
-                           (np.uint64(2**53 - 1), 2**53 - 1)):
+        for good, want in (
+            (0, 0),
+            (2**53 - 1, 2**53 - 1),
+            (2.0, 2),
+            (np.int64(7), 7),
+            (np.uint64(2**53 - 1), 2**53 - 1),
+        ):
             self.assertEqual(ssc_twin.check_seed(good), want)
         if env is not None:
             self.assertIn("object", env.reset(seed=2**53 - 1)[1])
             env.close()
 
     def test_files_named_in_errors(self):
-        self.refused("/dev/zero", ssc_twin.validate, map="/dev/zero",
-                     out_dir=os.path.join(self.tmp, "v"))
+        self.refused(
+            "/dev/zero", ssc_twin.validate, map="/dev/zero", out_dir=os.path.join(self.tmp, "v")
+        )
         self.assertFalse(os.path.exists(os.path.join(self.tmp, "v")))
         self.refused("/etc/passwd", ssc_twin.read_sweep, "/etc/passwd")
         binary = os.path.join(self.tmp, "binary.csv")
         with open(binary, "wb") as f:
             f.write(bytes(range(256)) * 10)
-        message = self.refused("binary", ssc_twin.validate, map=binary,
-                               out_dir=os.path.join(self.tmp, "v"))
+        message = self.refused(
+            "binary", ssc_twin.validate, map=binary, out_dir=os.path.join(self.tmp, "v")
+        )
         self.assertTrue(message.isprintable(), message)
 
     def test_an_interrupted_sweep_raises_keyboard_interrupt_and_resumes(self):
         # SIGINT while the study runs (Ctrl-C, a notebook's interrupt) is taken by the job
         # runner, which keeps the finished rows; the call must not return as if complete.
         import signal
+
         csv = os.path.join(self.tmp, "interrupted.csv")
         grid = dict(pref=[100], beta=[2], step_mm=[7.5], repeats=4, threads=1, out_csv=csv)
 
@@ -160,21 +179,38 @@ class StrictArgumentsTest(unittest.TestCase):
     def test_read_sweep_gives_back_every_fault_the_sweep_wrote(self):
         # A writer and its reader: details holding commas, quotes, line breaks and UTF-8, as a
         # Python controller's exception writes them, come back as text (no CSV quotes left).
-        messages = ["plain", "a, b, c", 'said "no", twice', "two\nlines", "caf\u00e9; \\x",
-                    '"', ",", "'quoted', \"both\""]
+        messages = [
+            "plain",
+            "a, b, c",
+            'said "no", twice',
+            "two\nlines",
+            "caf\u00e9; \\x",
+            '"',
+            ",",
+            "'quoted', \"both\"",
+        ]
 
         for n, message in enumerate(messages):
+
             def faulty(reading, message=message):
                 raise ValueError(message)
 
             csv = os.path.join(self.tmp, "faults_%d.csv" % n)
-            ssc_twin.sweep(pref=[100], beta=[2], step_mm=[7.5], repeats=1, threads=1,
-                           out_csv=csv, controller=faulty)
+            ssc_twin.sweep(
+                pref=[100],
+                beta=[2],
+                step_mm=[7.5],
+                repeats=1,
+                threads=1,
+                out_csv=csv,
+                controller=faulty,
+            )
             table = ssc_twin.read_sweep(csv)
             self.assertEqual(list(table["outcome"]), ["controller_fault"])
             detail = str(table["detail"][0])
-            self.assertTrue(detail.endswith("(Python ValueError: %s)"
-                                            % message.replace("\n", " ")), detail)
+            self.assertTrue(
+                detail.endswith("(Python ValueError: %s)" % message.replace("\n", " ")), detail
+            )
             self.assertFalse(detail.startswith('"'), detail)
 
     def test_ctrl_c_inside_a_python_controller_raises(self):
@@ -182,8 +218,7 @@ class StrictArgumentsTest(unittest.TestCase):
             raise KeyboardInterrupt
 
         with self.assertRaises(KeyboardInterrupt):
-            ssc_twin.run_trial(scene="disk_benchmark_fast", controller=interrupted,
-                               keep_log=False)
+            ssc_twin.run_trial(scene="disk_benchmark_fast", controller=interrupted, keep_log=False)
 
     def test_compare_tcp_offset_in_mm(self):
         rec = os.path.join(self.tmp, "rec")
@@ -200,11 +235,13 @@ class EnvironmentActionsTest(unittest.TestCase):
         except ImportError:
             self.skipTest("gymnasium not installed")
         env_id = "ssc_twin/EdgeFollowing-v0"
-        for kw, text in ((dict(pref=5), "pref_pa (P_ref) = 5"),
-                         (dict(effects="foo=1"), "unknown key 'foo'"),
-                         (dict(timeout_s=-5), "timeout_s = -5"),
-                         (dict(failure_penalty=float("nan")), "finite"),
-                         (dict(render_mode="rgb_array", camera="nope"), "camera 'nope'")):
+        for kw, text in (
+            (dict(pref=5), "pref_pa (P_ref) = 5"),
+            (dict(effects="foo=1"), "unknown key 'foo'"),
+            (dict(timeout_s=-5), "timeout_s = -5"),
+            (dict(failure_penalty=float("nan")), "finite"),
+            (dict(render_mode="rgb_array", camera="nope"), "camera 'nope'"),
+        ):
             with self.subTest(**kw), self.assertRaises(ValueError) as cm:
                 gym.make(env_id, **kw)
             self.assertIn(text, str(cm.exception))
@@ -212,7 +249,6 @@ class EnvironmentActionsTest(unittest.TestCase):
         env = gym.make(env_id, objects="volute")
         self.assertEqual(env.reset(seed=1)[1]["object"], "volute")
         env.close()
-
 
     def test_non_finite_actions_are_refused_finite_ones_clipped(self):
         try:
@@ -229,12 +265,17 @@ class EnvironmentActionsTest(unittest.TestCase):
 
 
 if given is not None:
+
     class PropertyTest(unittest.TestCase):
         """Every call returns finite numbers or raises ValueError, whatever the numbers."""
 
         @settings(max_examples=60, deadline=None)
-        @given(st.lists(st.floats(allow_nan=True, allow_infinity=True), min_size=4, max_size=4),
-               st.floats(), st.floats(), st.floats())
+        @given(
+            st.lists(st.floats(allow_nan=True, allow_infinity=True), min_size=4, max_size=4),
+            st.floats(),
+            st.floats(),
+            st.floats(),
+        )
         def test_contour_step(self, p, pref, beta, step):
             try:
                 s = ssc_twin.contour_step(p, pref, beta, step)
@@ -263,8 +304,10 @@ if given is not None:
             if not hasattr(self, "trial"):
                 PropertyTest.trial = ssc_twin.SteppedTrial(timeout_s=30)
                 PropertyTest.trial.set_external_policy(True)
-                while (PropertyTest.trial.phase != "follow" and
-                       PropertyTest.trial.run_to_next_iteration()):
+                while (
+                    PropertyTest.trial.phase != "follow"
+                    and PropertyTest.trial.run_to_next_iteration()
+                ):
                     pass
             try:
                 self.trial.apply_step(step)

@@ -1,8 +1,8 @@
 """Bad input as a careless user types it: every case must end quickly with a clear one-line error
 (exit 2 for usage, 1 for unreadable files/scenes) naming the input, never a crash, a hang or a
 silent run. Run directly with --report for the full round (timings and peak memory)."""
+
 import os
-import resource
 import shutil
 import signal
 import subprocess
@@ -11,8 +11,12 @@ import tempfile
 import time
 import unittest
 
-BIN = os.environ.get("SSC_BIN_DIR", os.path.join(os.path.dirname(__file__), "..", "..", "build", "bin"))
-SRC = os.path.abspath(os.environ.get("SSC_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", "..")))
+BIN = os.environ.get(
+    "SSC_BIN_DIR", os.path.join(os.path.dirname(__file__), "..", "..", "build", "bin")
+)
+SRC = os.path.abspath(
+    os.environ.get("SSC_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+)
 SSC = os.path.abspath(os.path.join(BIN, "ssc"))
 TMP = tempfile.mkdtemp(prefix="ssc_bad_input_")
 A_FILE = os.path.join(TMP, "a_file")
@@ -75,8 +79,12 @@ with open(TINY_SCRIPT, "w") as f:
 def lab_recording():
     """A twin trial written as the lab records it (ssc trial --robot-log), in TMP/rec."""
     rec = os.path.join(TMP, "rec")
-    r = subprocess.run([SSC, "trial", "--no-plot", "--out", os.path.join(TMP, "rec_trial"),
-                        "--robot-log", rec], capture_output=True, text=True, timeout=120)
+    r = subprocess.run(
+        [SSC, "trial", "--no-plot", "--out", os.path.join(TMP, "rec_trial"), "--robot-log", rec],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert r.returncode == 0, r.stderr
     return rec
 
@@ -112,12 +120,14 @@ def cut_mat():
 
 def flat_pressure(text):
     lines = text.split("\n")
-    return "\n".join(lines[:1] + [",".join(l.split(",")[:2] + ["101325.0"] * 4) if l else l
-                                   for l in lines[1:]])
+    return "\n".join(
+        lines[:1] + [",".join(l.split(",")[:2] + ["101325.0"] * 4) if l else l for l in lines[1:]]
+    )
 
 
-SHORT_POSE = rec_variant("rec_short_pose", "endEffectorPose",
-                         lambda t: "\n".join(t.split("\n")[:21]) + "\n")
+SHORT_POSE = rec_variant(
+    "rec_short_pose", "endEffectorPose", lambda t: "\n".join(t.split("\n")[:21]) + "\n"
+)
 FLAT = rec_variant("rec_flat", "SensorPacket", flat_pressure)
 CUT_MAT = cut_mat()
 
@@ -165,8 +175,11 @@ CASES = [
     (["trial", "--scene", STEPNEG, "--no-plot", "--out", TMP], 4, "time step"),
     (["trial", "--scene", EMPTY_CFG, "--no-plot", "--out", TMP], 4, "empty value"),
     (["trial", "--scene", HEX_CFG, "--no-plot", "--out", TMP], 4, "0x10"),
-    (["trial", "--scene", MALFORMED_XML, "--no-plot", "--out", TMP], 4,
-     "malformed.xml: line 3: malformed XML: a closing tag does not match the open element <body>"),
+    (
+        ["trial", "--scene", MALFORMED_XML, "--no-plot", "--out", TMP],
+        4,
+        "malformed.xml: line 3: malformed XML: a closing tag does not match the open element <body>",
+    ),
     (["sweep", "--pref", "40,70,"], 2, "stray comma"),
     (["sweep", "--pref", ",40"], 2, "empty"),
     (["sweep", "--pref", "40,,70"], 2, "empty"),
@@ -184,9 +197,16 @@ CASES = [
     (["sil", "--seed", "-1", TINY_SCRIPT], 2, "--seed: '-1' is outside [0, 9007199254740991]"),
     (["sil", "--max-sim", "nan", TINY_SCRIPT], 2, "--max-sim: 'nan'"),
     (["sil", "--max-sim", "0", TINY_SCRIPT], 2, "(0, 86400]"),
-    (["sil", "--scene", "no_such_scene", TINY_SCRIPT], 3,
-     "--scene: no_such_scene: no such file here or in"),
-    (["sil", "--out", A_FILE, TINY_SCRIPT], 2, "--out: '%s' exists and is not a directory" % A_FILE),
+    (
+        ["sil", "--scene", "no_such_scene", TINY_SCRIPT],
+        3,
+        "--scene: no_such_scene: no such file here or in",
+    ),
+    (
+        ["sil", "--out", A_FILE, TINY_SCRIPT],
+        2,
+        "--out: '%s' exists and is not a directory" % A_FILE,
+    ),
     (["sil", "--out", A_FILE + "/sub", TINY_SCRIPT], 2, "Not a directory"),
     (["bench", "--block", "0"], 2, "--block"),
     (["bench", "--rounds", "0"], 2, "--rounds"),
@@ -223,8 +243,11 @@ CASES = [
     (["sweep", "--scene", "no_such_scene", "--out", "new_out"], 3, "no_such_scene"),
     (["probe", "--scene", "no_such_scene", "--out", "new_out"], 1, "no_such_scene"),
     # A probe scene without the plate and disk where the study probes: not a table of noise.
-    (["probe", "--scene", "disk_replay", "--out", "new_out"], 1,
-     "disk_replay: the probe's layout is not in this scene"),
+    (
+        ["probe", "--scene", "disk_replay", "--out", "new_out"],
+        1,
+        "disk_replay: the probe's layout is not in this scene",
+    ),
     (["stability", "--scene", "no_such_scene", "--out", "new_out"], 3, "no_such_scene"),
     (["validate", "--map", "missing.csv", "--out", "new_out"], 3, "missing.csv"),
     (["calibrate", "--dynamic", "--map", "missing.csv", "--out", "new_out"], 1, "missing.csv"),
@@ -250,27 +273,74 @@ CASES = [
     (["calibrate", "--depth-pa", "100,40,200", "--out", "new_out"], 2, "rise with depth"),
     (["calibrate", "--depth-pa", "40,100", "--out", "new_out"], 2, "three values"),
     (["calibrate", "--closed-loop", "51", "--out", "new_out"], 2, "--closed-loop"),
-    (["calibrate", "--closed-loop", "2", "--depth-pa", "40,100,200", "--out", "new_out"], 2,
-     "give one"),
+    (
+        ["calibrate", "--closed-loop", "2", "--depth-pa", "40,100,200", "--out", "new_out"],
+        2,
+        "give one",
+    ),
     (["calibrate", "--dynamic", "--holdout-seed", "-1", "--out", "new_out"], 2, "--holdout-seed"),
     (["trial", "--effects", "step_error_corr=0.99", "--out", "new_out"], 2, "step_error_corr"),
     (["trial", "--controller", "fastest", "--out", "new_out"], 2, "unknown controller 'fastest'"),
-    (["sweep", "--controller", "fast", "--controller-param", "step_max_mm=300", "--out",
-      "new_out"], 2, "step_max_mm"),
-    (["sweep", "--controller", "fast", "--controller-param", "step_min_mm=9", "--out",
-      "new_out"], 2, "exceeds step_max_mm"),
-    (["objects", "--controller", "fast", "--controller-param", "stepmax=3", "--out", "new_out"],
-     2, "unknown key 'stepmax'"),
+    (
+        [
+            "sweep",
+            "--controller",
+            "fast",
+            "--controller-param",
+            "step_max_mm=300",
+            "--out",
+            "new_out",
+        ],
+        2,
+        "step_max_mm",
+    ),
+    (
+        [
+            "sweep",
+            "--controller",
+            "fast",
+            "--controller-param",
+            "step_min_mm=9",
+            "--out",
+            "new_out",
+        ],
+        2,
+        "exceeds step_max_mm",
+    ),
+    (
+        ["objects", "--controller", "fast", "--controller-param", "stepmax=3", "--out", "new_out"],
+        2,
+        "unknown key 'stepmax'",
+    ),
     (["validate", "--controller-param", "beta=2", "--out", "new_out"], 2, "takes no parameters"),
-    (["tune", "--controller", "fast", "--search", "step_max_mm=9:8", "--out", "new_out"], 2,
-     "lo < hi"),
-    (["tune", "--controller", "fast", "--search", "stepmax=3:9", "--out", "new_out"], 2,
-     "unknown key 'stepmax'"),
-    (["tune", "--controller", "fast", "--search", "step_max_mm=3:99", "--out", "new_out"], 2,
-     "[0.5, 30]"),
-    (["tune", "--controller", "fast", "--search", "step_min_mm=9:12,step_max_mm=5:8", "--out",
-      "new_out"], 2, "rule: step_min_mm <= step_max_mm with step_min_mm in [9, 12] and "
-     "step_max_mm in [5, 8]"),
+    (
+        ["tune", "--controller", "fast", "--search", "step_max_mm=9:8", "--out", "new_out"],
+        2,
+        "lo < hi",
+    ),
+    (
+        ["tune", "--controller", "fast", "--search", "stepmax=3:9", "--out", "new_out"],
+        2,
+        "unknown key 'stepmax'",
+    ),
+    (
+        ["tune", "--controller", "fast", "--search", "step_max_mm=3:99", "--out", "new_out"],
+        2,
+        "[0.5, 30]",
+    ),
+    (
+        [
+            "tune",
+            "--controller",
+            "fast",
+            "--search",
+            "step_min_mm=9:12,step_max_mm=5:8",
+            "--out",
+            "new_out",
+        ],
+        2,
+        "rule: step_min_mm <= step_max_mm with step_min_mm in [9, 12] and step_max_mm in [5, 8]",
+    ),
     (["tune", "--controller", "example", "--out", "new_out"], 2, "give the keys to search"),
     (["tune", "--reference", "fastest", "--out", "new_out"], 2, "unknown controller 'fastest'"),
     (["compare", FIFO, "--out", "new_out"], 4, "not a regular file"),
@@ -291,8 +361,14 @@ def run(args, timeout=60, prefix=()):
     env.pop("DISPLAY", None)
     t0 = time.time()
     try:
-        r = subprocess.run(list(prefix) + [SSC] + args, capture_output=True, text=True,
-                           timeout=timeout, env=env, cwd=TMP)
+        r = subprocess.run(
+            list(prefix) + [SSC] + args,
+            capture_output=True,
+            text=True,
+            timeout=timeout,
+            env=env,
+            cwd=TMP,
+        )
         return r, time.time() - t0, False
     except subprocess.TimeoutExpired:
         return None, time.time() - t0, True
@@ -329,12 +405,31 @@ class BadInputTest(unittest.TestCase):
         self.assertTrue(os.path.exists(os.path.join(out, "trajectory.png")), r.stderr)
 
     def test_interrupted_sweep_resumes_to_the_rows_of_an_uninterrupted_one(self):
-        args = ["sweep", "--pref", "100,200", "--beta", "2", "--step", "7.5", "--repeats", "2",
-                "--threads", "1", "--no-plot", "--no-progress"]
+        args = [
+            "sweep",
+            "--pref",
+            "100,200",
+            "--beta",
+            "2",
+            "--step",
+            "7.5",
+            "--repeats",
+            "2",
+            "--threads",
+            "1",
+            "--no-plot",
+            "--no-progress",
+        ]
         cut, whole = os.path.join(TMP, "sweep_cut"), os.path.join(TMP, "sweep_whole")
         env = dict(os.environ)
-        p = subprocess.Popen([SSC] + args + ["--out", cut], cwd=TMP, env=env,
-                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        p = subprocess.Popen(
+            [SSC] + args + ["--out", cut],
+            cwd=TMP,
+            env=env,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+        )
         csv = os.path.join(cut, "sweep.csv")
         deadline = time.time() + 120
         while time.time() < deadline:  # Ctrl-C once the first row is in
@@ -358,8 +453,9 @@ class BadInputTest(unittest.TestCase):
         self.assertEqual(r.returncode, 0, r.stderr)
 
         # Rows carry no wall time: the resumed file holds exactly the uninterrupted one's rows.
-        self.assertEqual(sorted(read_lines(csv)[1:]),
-                         sorted(read_lines(os.path.join(whole, "sweep.csv"))[1:]))
+        self.assertEqual(
+            sorted(read_lines(csv)[1:]), sorted(read_lines(os.path.join(whole, "sweep.csv"))[1:])
+        )
 
     def test_version(self):
         r, _, _ = run(["--version"])
@@ -396,11 +492,15 @@ def report():
         else:
             verdict = "ok"
         msg = (r.stderr.strip().splitlines() or [""])[0][:110] if r else ""
-        print(f"{verdict:12} rc={r.returncode if r else '-':>3} {dt:5.1f}s {rss_mb:6.0f} MB  "
-              f"{' '.join(args)[:60]:60}  {msg}")
-    print(f"\n{len(CASES)} cases: {crashes} crashes, {hangs} hangs, {silent} silent/wrong, "
-          f"{left} left a directory behind; peak RSS of the worst case {worst[0]:.0f} MB "
-          f"({' '.join(worst[1] or [])[:60]})")
+        print(
+            f"{verdict:12} rc={r.returncode if r else '-':>3} {dt:5.1f}s {rss_mb:6.0f} MB  "
+            f"{' '.join(args)[:60]:60}  {msg}"
+        )
+    print(
+        f"\n{len(CASES)} cases: {crashes} crashes, {hangs} hangs, {silent} silent/wrong, "
+        f"{left} left a directory behind; peak RSS of the worst case {worst[0]:.0f} MB "
+        f"({' '.join(worst[1] or [])[:60]})"
+    )
     BadInputTest.tearDownClass()
 
 

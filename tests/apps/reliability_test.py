@@ -3,6 +3,7 @@ that trust no row on resume and run one at a time per folder, writes that fail w
 limit, SIGTERM), scenes with non-finite numbers or a FIFO include, maps that are not text, and
 compare options checked against the log. Each case ends quickly with a clear message or the
 right result; nothing is left behind."""
+
 import csv
 import glob
 import io
@@ -13,18 +14,33 @@ import resource
 import shutil
 import signal
 import subprocess
-import sys
 import tempfile
 import time
 import unittest
 
-BIN = os.environ.get("SSC_BIN_DIR", os.path.join(os.path.dirname(__file__), "..", "..", "build", "bin"))
-SRC = os.path.abspath(os.environ.get("SSC_SOURCE_DIR",
-                                     os.path.join(os.path.dirname(__file__), "..", "..")))
+BIN = os.environ.get(
+    "SSC_BIN_DIR", os.path.join(os.path.dirname(__file__), "..", "..", "build", "bin")
+)
+SRC = os.path.abspath(
+    os.environ.get("SSC_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+)
 SSC = os.path.abspath(os.path.join(BIN, "ssc"))
 # Short trials: the follow phase is cut at 1 s simulated (rows still whole trials).
-SWEEP = ["sweep", "--pref", "100", "--beta", "2", "--step", "7.5", "--timeout", "1",
-         "--threads", "1", "--no-plot", "--no-progress"]
+SWEEP = [
+    "sweep",
+    "--pref",
+    "100",
+    "--beta",
+    "2",
+    "--step",
+    "7.5",
+    "--timeout",
+    "1",
+    "--threads",
+    "1",
+    "--no-plot",
+    "--no-progress",
+]
 
 
 def run(args, timeout=120, **kw):
@@ -37,8 +53,11 @@ def rows(csv_path):
 
 
 def leftovers(folder):
-    return [p for p in glob.glob(os.path.join(folder, "**", "*"), recursive=True)
-            if ".tmp" in os.path.basename(p) or p.endswith(".lock")]
+    return [
+        p
+        for p in glob.glob(os.path.join(folder, "**", "*"), recursive=True)
+        if ".tmp" in os.path.basename(p) or p.endswith(".lock")
+    ]
 
 
 class ReliabilityTest(unittest.TestCase):
@@ -82,14 +101,17 @@ class ReliabilityTest(unittest.TestCase):
             f.write("\n".join([header, edited_seed, nan_success, row2, row2]) + "\n")
         r = run(SWEEP + ["--repeats", "2", "--out", out])
         self.assertEqual(r.returncode, 0, r.stderr)
-        self.assertRegex(r.stderr, r"line 2 .*seed %d is not this grid point's seed %s"
-                         % (int(f1[5]) + 1, f1[5]))
+        self.assertRegex(
+            r.stderr, r"line 2 .*seed %d is not this grid point's seed %s" % (int(f1[5]) + 1, f1[5])
+        )
         self.assertRegex(r.stderr, r"line 3 .*success with s_mm = nan")
         self.assertRegex(r.stderr, r"line 5 .*second row for the trial of line 4")
         self.assertIn("1 already in", r.stdout)  # the one good row kept, the other rerun
         again = rows(path)
-        self.assertEqual(sorted((x["repeat"], x["seed"]) for x in again),
-                         sorted((x["repeat"], x["seed"]) for x in good))
+        self.assertEqual(
+            sorted((x["repeat"], x["seed"]) for x in again),
+            sorted((x["repeat"], x["seed"]) for x in good),
+        )
         self.assertEqual(leftovers(out), [])
 
     def test_two_sweeps_on_one_folder_and_sigterm_mid_sweep(self):
@@ -100,8 +122,9 @@ class ReliabilityTest(unittest.TestCase):
         first = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         csv_path = os.path.join(out, "sweep.csv")
         deadline = time.time() + 120
-        while time.time() < deadline and not (os.path.exists(csv_path + ".lock") and
-                                              os.path.exists(csv_path)):
+        while time.time() < deadline and not (
+            os.path.exists(csv_path + ".lock") and os.path.exists(csv_path)
+        ):
             time.sleep(0.05)
         second = run(SWEEP + ["--repeats", str(repeats), "--out", out])
         self.assertEqual(second.returncode, 1, second.stderr)
@@ -114,7 +137,9 @@ class ReliabilityTest(unittest.TestCase):
         self.assertEqual(first.returncode, 130, err)
         kept = rows(csv_path)
         self.assertGreaterEqual(len(kept), 1)
-        self.assertLess(len(kept), repeats, "the sweep ended before SIGTERM: no interruption tested")
+        self.assertLess(
+            len(kept), repeats, "the sweep ended before SIGTERM: no interruption tested"
+        )
         with open(csv_path) as f:
             self.assertTrue(f.read().endswith("\n"))
         self.assertEqual(leftovers(out), [])
@@ -122,19 +147,21 @@ class ReliabilityTest(unittest.TestCase):
         self.assertEqual(r.returncode, 0, r.stderr)
         final = rows(csv_path)
         self.assertEqual(sorted(int(x["repeat"]) for x in final), list(range(repeats)))
-        self.assertEqual([x["seed"] for x in final[:len(kept)]], [x["seed"] for x in kept])
+        self.assertEqual([x["seed"] for x in final[: len(kept)]], [x["seed"] for x in kept])
 
     # Writes fail whole.
 
     def limited(self, limit_bytes):
         def set_limit():
             resource.setrlimit(resource.RLIMIT_FSIZE, (limit_bytes, limit_bytes))
+
         return set_limit
 
     def test_a_file_size_limit_fails_the_trial_whole(self):
         out = os.path.join(self.tmp, "fsize_trial")
-        r = run(["trial", "--no-plot", "--timeout", "1", "--out", out],
-                preexec_fn=self.limited(4096))
+        r = run(
+            ["trial", "--no-plot", "--timeout", "1", "--out", out], preexec_fn=self.limited(4096)
+        )
         self.assertEqual(r.returncode, 1, r.stderr)  # not 153 (SIGXFSZ)
         self.assertIn("trial.csv: cannot write: File too large", r.stderr)
         self.assertFalse(os.path.exists(os.path.join(out, "trial.csv")))
@@ -148,8 +175,9 @@ class ReliabilityTest(unittest.TestCase):
         with open(csv_path) as f:
             before = f.read()
         # Room for less than one more row: the next append fails with EFBIG.
-        r = run(SWEEP + ["--repeats", "5", "--out", out],
-                preexec_fn=self.limited(len(before) + 100))
+        r = run(
+            SWEEP + ["--repeats", "5", "--out", out], preexec_fn=self.limited(len(before) + 100)
+        )
         self.assertEqual(r.returncode, 1, r.stderr)
         self.assertIn("sweep.csv: cannot append a row: File too large", r.stderr)
         with open(csv_path) as f:
@@ -169,8 +197,11 @@ class ReliabilityTest(unittest.TestCase):
 
     def test_sigterm_during_a_trial_leaves_no_empty_folder(self):
         out = os.path.join(self.tmp, "term_trial", "new")
-        p = subprocess.Popen([SSC, "trial", "--no-plot", "--timeout", "60", "--out", out],
-                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+        p = subprocess.Popen(
+            [SSC, "trial", "--no-plot", "--timeout", "60", "--out", out],
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.PIPE,
+        )
         deadline = time.time() + 60
         while time.time() < deadline and not os.path.isdir(out):
             time.sleep(0.02)
@@ -183,9 +214,22 @@ class ReliabilityTest(unittest.TestCase):
     def test_sigterm_mid_objects_keeps_the_finished_rows_and_says_so(self):
         out = os.path.join(self.tmp, "term_objects")
         names = ["disk_d14", "disk_d12", "hole_d14", "hole_d12", "corner_a090", "corner_a270"]
-        p = subprocess.Popen([SSC, "objects", "--objects", ",".join(names), "--threads", "1",
-                              "--no-plot", "--out", out], stdout=subprocess.PIPE,
-                             stderr=subprocess.PIPE, text=True)
+        p = subprocess.Popen(
+            [
+                SSC,
+                "objects",
+                "--objects",
+                ",".join(names),
+                "--threads",
+                "1",
+                "--no-plot",
+                "--out",
+                out,
+            ],
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+        )
         first = p.stdout.readline()  # a trial's line: one row finished
         self.assertIn("seed 1", first)
         p.send_signal(signal.SIGTERM)
@@ -203,9 +247,23 @@ class ReliabilityTest(unittest.TestCase):
 
     def test_sigterm_mid_stability_keeps_only_judged_rows(self):
         out = os.path.join(self.tmp, "term_stability")
-        p = subprocess.Popen([SSC, "stability", "--scene", "disk_benchmark_fast", "--steps-ms",
-                              "4,8", "--threads", "1", "--out", out], stdout=subprocess.PIPE,
-                             stderr=subprocess.PIPE, text=True)
+        p = subprocess.Popen(
+            [
+                SSC,
+                "stability",
+                "--scene",
+                "disk_benchmark_fast",
+                "--steps-ms",
+                "4,8",
+                "--threads",
+                "1",
+                "--out",
+                out,
+            ],
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+        )
         time.sleep(1)  # the 0.5 ms reference alone takes longer
         p.send_signal(signal.SIGTERM)
         printed, err = p.communicate(timeout=120)
@@ -221,14 +279,21 @@ class ReliabilityTest(unittest.TestCase):
     # ssc objects and ssc stability resume as ssc sweep does.
 
     def test_objects_killed_midway_resumes_to_the_uninterrupted_rows(self):
-        args = ["objects", "--objects", "disk_d14,hole_d14,corner_a090", "--threads", "1",
-                "--no-plot"]
+        args = [
+            "objects",
+            "--objects",
+            "disk_d14,hole_d14,corner_a090",
+            "--threads",
+            "1",
+            "--no-plot",
+        ]
         whole = os.path.join(self.tmp, "objects_whole")
         self.assertEqual(run(args + ["--out", whole]).returncode, 0)
         out = os.path.join(self.tmp, "objects_killed")
         table = os.path.join(out, "objects.csv")
-        p = subprocess.Popen([SSC] + args + ["--out", out], stdout=subprocess.PIPE,
-                             stderr=subprocess.PIPE, text=True)
+        p = subprocess.Popen(
+            [SSC] + args + ["--out", out], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+        )
         self.assertIn("seed 1", p.stdout.readline())  # a trial's line: its row is in
         p.kill()  # SIGKILL: no handler runs, only what was appended stays
         p.communicate(timeout=60)
@@ -240,7 +305,10 @@ class ReliabilityTest(unittest.TestCase):
         self.assertEqual(r.stdout.count(" seed 1 "), 3 - len(kept))  # only the others ran
         final = rows(table)
         timing = ("step_cost_us", "row_digest")  # the digest seals the timing too
-        same = lambda t: [{k: v for k, v in x.items() if k not in timing} for x in t]
+
+        def same(t):
+            return [{k: v for k, v in x.items() if k not in timing} for x in t]
+
         self.assertEqual(same(final), same(rows(os.path.join(whole, "objects.csv"))))
         for x in kept:  # the rows of the killed run, not recomputed
             self.assertIn(x, final)
@@ -309,8 +377,15 @@ class ReliabilityTest(unittest.TestCase):
         self.assertEqual(leftovers(out), [])
 
     def test_stability_resumes_from_its_trials_file(self):
-        args = ["stability", "--scene", "disk_benchmark_fast", "--steps-ms", "4,8", "--threads",
-                "1"]
+        args = [
+            "stability",
+            "--scene",
+            "disk_benchmark_fast",
+            "--steps-ms",
+            "4,8",
+            "--threads",
+            "1",
+        ]
         whole = os.path.join(self.tmp, "stability_whole")
         self.assertEqual(run(args + ["--out", whole]).returncode, 0)
         out = os.path.join(self.tmp, "stability_cut")
@@ -332,18 +407,42 @@ class ReliabilityTest(unittest.TestCase):
         self.assertEqual(now[:4], lines[:4])  # the finished trials kept as they were
         self.assertEqual(len(now), 10)
         timing = ("wall_s",)
-        same = lambda t: [{k: v for k, v in x.items() if k not in timing} for x in t]
-        self.assertEqual(same(rows(os.path.join(out, "stability.csv"))),
-                         same(rows(os.path.join(whole, "stability.csv"))))
+
+        def same(t):
+            return [{k: v for k, v in x.items() if k not in timing} for x in t]
+
+        self.assertEqual(
+            same(rows(os.path.join(out, "stability.csv"))),
+            same(rows(os.path.join(whole, "stability.csv"))),
+        )
 
     # A search point that breaks a rule between the controller's keys is refused, not run.
 
     def test_tune_refuses_points_that_break_a_rule_between_keys(self):
         out = os.path.join(self.tmp, "tune_rule")
         # Part of this box keeps step_min_mm <= step_max_mm; BOBYQA's first points straddle it.
-        r = run(["tune", "--controller", "fast", "--search", "step_min_mm=6:12,step_max_mm=5:8",
-                 "--seeds", "1", "--evals", "6", "--timeout", "4", "--threads", "1",
-                 "--reference", "none", "--no-plot", "--out", out])
+        r = run(
+            [
+                "tune",
+                "--controller",
+                "fast",
+                "--search",
+                "step_min_mm=6:12,step_max_mm=5:8",
+                "--seeds",
+                "1",
+                "--evals",
+                "6",
+                "--timeout",
+                "4",
+                "--threads",
+                "1",
+                "--reference",
+                "none",
+                "--no-plot",
+                "--out",
+                out,
+            ]
+        )
         self.assertEqual(r.returncode, 0, r.stderr)
         table = rows(os.path.join(out, "tune.csv"))
         self.assertEqual(len(table), 6)
@@ -355,25 +454,45 @@ class ReliabilityTest(unittest.TestCase):
             self.assertGreater(float(x["step_min_mm"]), float(x["step_max_mm"]), x)
             self.assertIn("step_min_mm <= step_max_mm", x["outcome"])
             self.assertEqual((x["trials"], x["speed_mm_s"], x["pareto"]), ("0", "", "0"))
-            self.assertFalse(os.path.exists(
-                os.path.join(out, "evals", x["label"].replace(" ", "_"))), "a refused point ran")
+            self.assertFalse(
+                os.path.exists(os.path.join(out, "evals", x["label"].replace(" ", "_"))),
+                "a refused point ran",
+            )
         for x in ran:
             self.assertLessEqual(float(x["step_min_mm"]), float(x["step_max_mm"]), x)
             self.assertEqual(x["trials"], "1")
         self.assertIn("refused: %d of the search's points" % len(refused), r.stdout)
         best = [line for line in r.stdout.splitlines() if line.startswith("best score: ")]
         if best:
-            self.assertIn(best[0].split(",")[0][len("best score: "):],
-                          [x["label"] for x in ran])
+            self.assertIn(best[0].split(",")[0][len("best score: ") :], [x["label"] for x in ran])
 
     # A command owns its folder before it touches anything in it.
 
     def test_tune_owns_its_folder_before_touching_an_evaluation(self):
         out = os.path.join(self.tmp, "tune_own")
+
         def tune(seeds, folder=out):
-            return ["tune", "--controller", "fast", "--search", "step_max_mm=8:12", "--seeds",
-                    str(seeds), "--evals", "2", "--timeout", "2", "--threads", "1",
-                    "--reference", "none", "--no-plot", "--out", folder]
+            return [
+                "tune",
+                "--controller",
+                "fast",
+                "--search",
+                "step_max_mm=8:12",
+                "--seeds",
+                str(seeds),
+                "--evals",
+                "2",
+                "--timeout",
+                "2",
+                "--threads",
+                "1",
+                "--reference",
+                "none",
+                "--no-plot",
+                "--out",
+                folder,
+            ]
+
         args = tune(1)
         first = run(args)
         self.assertEqual(first.returncode, 0, first.stderr)
@@ -390,8 +509,9 @@ class ReliabilityTest(unittest.TestCase):
         self.assertEqual(rows(os.path.join(out, "tune.csv")), table)
         # A second search on a folder while one runs there: refused, naming the first.
         busy = os.path.join(self.tmp, "tune_busy")
-        p = subprocess.Popen([SSC] + tune(1, busy), stdout=subprocess.PIPE,
-                             stderr=subprocess.PIPE, text=True)
+        p = subprocess.Popen(
+            [SSC] + tune(1, busy), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+        )
         try:
             deadline = time.time() + 30
             while not os.path.exists(os.path.join(busy, "tune.csv.lock")):
@@ -429,13 +549,25 @@ class ReliabilityTest(unittest.TestCase):
     def test_stability_with_no_step_unchanged_says_so(self):
         # Euler at 8 ms against the RK4 0.5 ms reference: nothing unchanged, or a real step.
         out = os.path.join(self.tmp, "stability_none")
-        r = run(["stability", "--scene", "disk_benchmark_fast", "--steps-ms", "8",
-                 "--threads", "1", "--out", out])
+        r = run(
+            [
+                "stability",
+                "--scene",
+                "disk_benchmark_fast",
+                "--steps-ms",
+                "8",
+                "--threads",
+                "1",
+                "--out",
+                out,
+            ]
+        )
         self.assertEqual(r.returncode, 0, r.stderr)
         judged = rows(os.path.join(out, "stability.csv"))
         for integrator in {x["integrator"] for x in judged}:
-            unchanged = [x for x in judged if x["integrator"] == integrator
-                         and x["unchanged"] == "1"]
+            unchanged = [
+                x for x in judged if x["integrator"] == integrator and x["unchanged"] == "1"
+            ]
             line = [ln for ln in r.stdout.splitlines() if ln.startswith(integrator + ": ")]
             self.assertEqual(len(line), 1, r.stdout)
             if unchanged:
@@ -448,8 +580,12 @@ class ReliabilityTest(unittest.TestCase):
         disk = os.path.join(self.tmp, "full")
         os.makedirs(disk)
         # A 64 KiB tmpfs where the machine allows mounting (root in a container often does).
-        if subprocess.run(["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", disk],
-                          capture_output=True).returncode != 0:
+        if (
+            subprocess.run(
+                ["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", disk], capture_output=True
+            ).returncode
+            != 0
+        ):
             self.skipTest("cannot mount a small tmpfs here (ulimit -f cases cover EFBIG)")
         try:
             out = os.path.join(disk, "c", "d")
@@ -468,8 +604,10 @@ class ReliabilityTest(unittest.TestCase):
             for i in range(rows):
                 a = 2 * math.pi * i / rows
                 p = [4000 + 300 * math.sin(a + k * math.pi / 2) for k in range(4)]
-                f.write("%.4f,%.6f,%.6f,0.009,0,0.70710678,-0.70710678,0,%.2f,%.2f,%.2f,%.2f\n"
-                        % (t0_s + i * 1e-3, 0.65 + 0.033 * math.cos(a), 0.033 * math.sin(a), *p))
+                f.write(
+                    "%.4f,%.6f,%.6f,0.009,0,0.70710678,-0.70710678,0,%.2f,%.2f,%.2f,%.2f\n"
+                    % (t0_s + i * 1e-3, 0.65 + 0.033 * math.cos(a), 0.033 * math.sin(a), *p)
+                )
         return path
 
     def test_compare_does_not_depend_on_where_the_clock_starts(self):
@@ -510,30 +648,51 @@ class ReliabilityTest(unittest.TestCase):
     @unittest.skipUnless(shutil.which("xvfb-run"), "xvfb-run not installed")
     def test_a_screenshot_has_the_size_asked_for(self):
         png = os.path.join(self.tmp, "shot.png")
-        r = subprocess.run(["xvfb-run", "-a", SSC, "view", "--screenshot", png, "--width", "1920",
-                            "--height", "1080", "--time", "0.1"], capture_output=True, text=True,
-                           timeout=120)
+        r = subprocess.run(
+            [
+                "xvfb-run",
+                "-a",
+                SSC,
+                "view",
+                "--screenshot",
+                png,
+                "--width",
+                "1920",
+                "--height",
+                "1080",
+                "--time",
+                "0.1",
+            ],
+            capture_output=True,
+            text=True,
+            timeout=120,
+        )
         self.assertEqual(r.returncode, 0, r.stderr)
         with open(png, "rb") as f:
             head = f.read(24)
-        self.assertEqual((int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")),
-                         (1920, 1080))
+        self.assertEqual(
+            (int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")), (1920, 1080)
+        )
 
     # Maps that are not text.
 
     def test_binary_and_utf16_maps_are_refused_saying_why(self):
         with open(os.path.join(SRC, "data", "published", "success_map_dl5.csv"), "rb") as f:
             text = f.read()
-        cases = {"utf16": (b"\xff\xfe" + text.decode().encode("utf-16-le"), "UTF-16"),
-                 "nul": (text[:40] + b"\0" + text[40:], "NUL"),
-                 "random": (os.urandom(200_000), "not text")}
+        cases = {
+            "utf16": (b"\xff\xfe" + text.decode().encode("utf-16-le"), "UTF-16"),
+            "nul": (text[:40] + b"\0" + text[40:], "NUL"),
+            "random": (os.urandom(200_000), "not text"),
+        }
         for name, (data, why) in cases.items():
             path = os.path.join(self.tmp, f"map_{name}.csv")
             with open(path, "wb") as f:
                 f.write(data)
-            r = subprocess.run([SSC, "validate", "--map", path, "--out",
-                                os.path.join(self.tmp, f"v_{name}")], capture_output=True,
-                               timeout=60)
+            r = subprocess.run(
+                [SSC, "validate", "--map", path, "--out", os.path.join(self.tmp, f"v_{name}")],
+                capture_output=True,
+                timeout=60,
+            )
             err = r.stderr.decode("utf-8", "replace")
             self.assertNotEqual(r.returncode, 0, name)
             self.assertIn(path, err, name)
@@ -550,8 +709,10 @@ class CompareOptionsTest(unittest.TestCase):
     def setUpClass(cls):
         cls.tmp = tempfile.mkdtemp(prefix="ssc_reliability_cmp_")
         cls.rec = os.path.join(cls.tmp, "rec")
-        r = run(["trial", "--no-plot", "--out", os.path.join(cls.tmp, "trial"), "--robot-log",
-                 cls.rec], timeout=300)
+        r = run(
+            ["trial", "--no-plot", "--out", os.path.join(cls.tmp, "trial"), "--robot-log", cls.rec],
+            timeout=300,
+        )
         assert r.returncode == 0, r.stderr
 
     @classmethod
@@ -559,8 +720,11 @@ class CompareOptionsTest(unittest.TestCase):
         shutil.rmtree(cls.tmp, ignore_errors=True)
 
     def compare(self, *extra):
-        return run(["compare", self.rec, "--no-plot", "--out", os.path.join(self.tmp, "cmp")]
-                   + list(extra), timeout=300)
+        return run(
+            ["compare", self.rec, "--no-plot", "--out", os.path.join(self.tmp, "cmp")]
+            + list(extra),
+            timeout=300,
+        )
 
     def test_the_closed_loop_names_the_controller_that_ran(self):
         r = self.compare("--closed-loop", "--controller", "fast")

@@ -219,7 +219,10 @@ class ShellTest(unittest.TestCase):
         t, nu = s["thickness_mm"] * 1e-3, s["poisson"]
         nx, ny, length, width, q = 12, 3, 0.010, 0.004, 50.0
         pts = [(length * i / nx, width * j / ny, 0) for i in range(nx + 1) for j in range(ny + 1)]
-        vid = lambda i, j: i * (ny + 1) + j
+
+        def vid(i, j):
+            return i * (ny + 1) + j
+
         tris = []
         for i in range(nx):
             for j in range(ny):
@@ -325,7 +328,10 @@ class SkirtSensorTest(unittest.TestCase):
         angle = np.degrees(np.arctan2(rings[..., 1] - c[1], rings[..., 0] - c[0]))
         inside = (angle > 1) & (angle < 89)
         sectors = rings.shape[1]
-        flat = lambda ring, which: [ring * sectors + j for j in np.flatnonzero(which[ring])]
+
+        def flat(ring, which):
+            return [ring * sectors + j for j in np.flatnonzero(which[ring])]
+
         lobe = [v for ring in range(1, len(rings)) for v in flat(ring, inside)]
         return lobe, flat(len(rings) - 1, ~inside)
 

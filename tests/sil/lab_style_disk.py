@@ -4,6 +4,7 @@
 through ur_rtde) so that it runs on the robot and, unchanged, under `ssc sil` (docs/sil.md).
 It saves DataLog_<stamp>_seb_testEdgeFollowing_..._deleteMe.mat as the lab's saver does
 (pandas reads the logger's CSVs in /tmp, SciPy's savemat writes them with the arguments)."""
+
 import argparse
 import os
 import re
@@ -89,6 +90,7 @@ def save_data_params(args, append_txt):
     """The lab's saver: every CSV in /tmp into one .mat with the arguments."""
     import pandas as pd
     from scipy.io import savemat
+
     files = sorted(os.path.join("/tmp", f) for f in os.listdir("/tmp") if f.endswith(".csv"))
     saving = {}
     parts = []
@@ -103,8 +105,9 @@ def save_data_params(args, append_txt):
         saving[topic + "_columnName"] = df.columns.tolist()
         saving[topic + "_data"] = df.values
     saving.update(vars(args))
-    folder = os.path.join(os.path.expanduser("~"), "SuctionExperiment",
-                          datetime.now().strftime("%y%m%d"))
+    folder = os.path.join(
+        os.path.expanduser("~"), "SuctionExperiment", datetime.now().strftime("%y%m%d")
+    )
     os.makedirs(folder, exist_ok=True)
     path = os.path.join(folder, "DataLog_" + "_".join(parts[1:4]) + "_" + append_txt + ".mat")
     savemat(path, saving)
@@ -176,10 +179,24 @@ def main(args):
         r_final = r_p + corr_p * scale
         r_final = r_final / np.linalg.norm(r_final)
         pose = rtde_r.getActualTCPPose()
-        history.append([time.time() - start_time, pose[0], pose[1], r_p, corr_p, r_final,
-                        FT_help.wrench()[2], *P])
-        swept = np.degrees(np.arctan2(pose[1] - y0, pose[0] - x0) -
-                           np.arctan2(start[1] - y0, start[0] - x0)) % 360
+        history.append(
+            [
+                time.time() - start_time,
+                pose[0],
+                pose[1],
+                r_p,
+                corr_p,
+                r_final,
+                FT_help.wrench()[2],
+                *P,
+            ]
+        )
+        swept = (
+            np.degrees(
+                np.arctan2(pose[1] - y0, pose[0] - x0) - np.arctan2(start[1] - y0, start[0] - x0)
+            )
+            % 360
+        )
         if i > 10 and swept > 355:
             args.success = 1
             break
@@ -194,12 +211,17 @@ def main(args):
     rospy.sleep(0.2)
     args.edgeFollowing_history = history
     args.swept_deg = swept
-    save_data_params(args, "seb_testEdgeFollowing_refP_%s_beta_%s_step_%s_deleteMe"
-                     % (args.Pref, args.beta, args.d_lat))
+    save_data_params(
+        args,
+        "seb_testEdgeFollowing_refP_%s_beta_%s_step_%s_deleteMe"
+        % (args.Pref, args.beta, args.d_lat),
+    )
     data_logger(False)
     P_help.stop_sampling()
-    print("lab_style_disk: success %d after %d iterations, swept %.1f deg, %d pressure packets"
-          % (args.success, len(history), swept, P_help.packets))
+    print(
+        "lab_style_disk: success %d after %d iterations, swept %.1f deg, %d pressure packets"
+        % (args.success, len(history), swept, P_help.packets)
+    )
 
 
 if __name__ == "__main__":

@@ -1,5 +1,6 @@
 """The viewer: no-display message, an off-screen screenshot under Xvfb that shows the scene, the
 viewer's trial equal to the headless one, and MuJoCo's own Python viewer with the plugin."""
+
 import csv
 import os
 import re
@@ -13,12 +14,16 @@ import unittest
 import matplotlib.image as mpimg
 import numpy as np
 
-BIN = os.environ.get("SSC_BIN_DIR", os.path.join(os.path.dirname(__file__), "..", "..", "build", "bin"))
+BIN = os.environ.get(
+    "SSC_BIN_DIR", os.path.join(os.path.dirname(__file__), "..", "..", "build", "bin")
+)
 SSC = os.path.join(BIN, "ssc")
 XVFB = shutil.which("xvfb-run")
 TOOL_RE = re.compile(r"tool at (\S+) (\S+) (\S+) m")
-OVERLAY_RE = re.compile(r"overlay t=(?P<t>\S+) phase=(?P<phase>\S+) p_pa=(?P<p>\S+) "
-                        r"mean_pa=(?P<mean>\S+) dpx_pa=\S+ dpy_pa=\S+ cf=(?P<cf>\S+)")
+OVERLAY_RE = re.compile(
+    r"overlay t=(?P<t>\S+) phase=(?P<phase>\S+) p_pa=(?P<p>\S+) "
+    r"mean_pa=(?P<mean>\S+) dpx_pa=\S+ dpy_pa=\S+ cf=(?P<cf>\S+)"
+)
 
 
 def run(cmd, env=None, timeout=300):
@@ -35,8 +40,24 @@ class ViewerTest(unittest.TestCase):
         cls.tmp = tempfile.mkdtemp(prefix="ssc_view_")
         cls.addClassCleanup(shutil.rmtree, cls.tmp, True)
         cls.png = os.path.join(cls.tmp, "shot.png")
-        cls.shot = run([XVFB, "-a", "-s", "-screen 0 1280x720x24", SSC, "view", "--scene",
-                        ARM_SCENE, "--screenshot", cls.png, "--time", "6", "--seed", "3"])
+        cls.shot = run(
+            [
+                XVFB,
+                "-a",
+                "-s",
+                "-screen 0 1280x720x24",
+                SSC,
+                "view",
+                "--scene",
+                ARM_SCENE,
+                "--screenshot",
+                cls.png,
+                "--time",
+                "6",
+                "--seed",
+                "3",
+            ]
+        )
 
     def test_without_display_says_so_and_fails(self):
         env = dict(os.environ)
@@ -77,8 +98,21 @@ class ViewerTest(unittest.TestCase):
     def test_viewer_trial_matches_the_headless_trial(self):
         self.assertEqual(self.shot.returncode, 0, self.shot.stderr)
         viewer = TOOL_RE.search(self.shot.stdout)
-        headless = run([SSC, "trial", "--scene", ARM_SCENE, "--stop-at", "6", "--seed", "3",
-                        "--no-plot", "--out", self.tmp])
+        headless = run(
+            [
+                SSC,
+                "trial",
+                "--scene",
+                ARM_SCENE,
+                "--stop-at",
+                "6",
+                "--seed",
+                "3",
+                "--no-plot",
+                "--out",
+                self.tmp,
+            ]
+        )
         self.assertEqual(headless.returncode, 0, headless.stderr)
         trial = TOOL_RE.search(headless.stdout)
         self.assertTrue(viewer and trial, (self.shot.stdout, headless.stdout))
@@ -98,44 +132,102 @@ class ViewerTest(unittest.TestCase):
             self.assertEqual(row["phase"], phase)
             # The viewer stops after the physics step whose control call logged the row.
             shot = os.path.join(self.tmp, f"at_{t_wanted:.0f}.png")
-            v = run([XVFB, "-a", "-s", "-screen 0 1280x720x24", SSC, "view", "--screenshot", shot,
-                     "--time", str(float(row["t_s"]) + 0.0005), "--seed", "3"])
+            v = run(
+                [
+                    XVFB,
+                    "-a",
+                    "-s",
+                    "-screen 0 1280x720x24",
+                    SSC,
+                    "view",
+                    "--screenshot",
+                    shot,
+                    "--time",
+                    str(float(row["t_s"]) + 0.0005),
+                    "--seed",
+                    "3",
+                ]
+            )
             self.assertEqual(v.returncode, 0, v.stderr)
             m = OVERLAY_RE.search(v.stdout)
             self.assertTrue(m, v.stdout)
             self.assertEqual(m["phase"], row["phase"])
             p = [float(x) for x in m["p"].split(",")]
             for k in range(4):
-                self.assertAlmostEqual(p[k], float(row[f"p{k + 1}_pa"]),
-                                       delta=1e-5 * abs(p[k]) + 1e-3, msg=f"P{k + 1} at {row['t_s']}")
+                self.assertAlmostEqual(
+                    p[k],
+                    float(row[f"p{k + 1}_pa"]),
+                    delta=1e-5 * abs(p[k]) + 1e-3,
+                    msg=f"P{k + 1} at {row['t_s']}",
+                )
             self.assertAlmostEqual(float(m["mean"]), sum(p) / 4, delta=1e-6 * abs(float(m["mean"])))
             # c_f: the overlay shows the last iteration's (0 before the first); trial.csv has it
             # on iteration rows only (NaN elsewhere).
-            past = [float(x["cf"]) for x in rows
-                    if x["iteration"] == "1" and float(x["t_s"]) <= float(row["t_s"])]
+            past = [
+                float(x["cf"])
+                for x in rows
+                if x["iteration"] == "1" and float(x["t_s"]) <= float(row["t_s"])
+            ]
             self.assertAlmostEqual(float(m["cf"]), past[-1] if past else 0.0, delta=1e-5)
         # Pressed on the disk at 3 s: the overlay reads the sealed cup, not 0.
         self.assertGreater(p[0], 0)  # (last row checked is the follow one)
 
     def test_cup_camera_is_a_close_up(self):
         shot = os.path.join(self.tmp, "cup.png")
-        r = run([XVFB, "-a", "-s", "-screen 0 1280x720x24", SSC, "view", "--scene", ARM_SCENE,
-                 "--camera", "cup", "--screenshot", shot, "--time", "6", "--seed", "3"])
+        r = run(
+            [
+                XVFB,
+                "-a",
+                "-s",
+                "-screen 0 1280x720x24",
+                SSC,
+                "view",
+                "--scene",
+                ARM_SCENE,
+                "--camera",
+                "cup",
+                "--screenshot",
+                shot,
+                "--time",
+                "6",
+                "--seed",
+                "3",
+            ]
+        )
         self.assertEqual(r.returncode, 0, r.stderr)
+
         def orange_share(path):
             img = mpimg.imread(path)[:, :, :3]
             r, g, b = img[..., 0], img[..., 1], img[..., 2]
             w = img.shape[1] * 5 // 8  # left of the plots
             return float(((r > 0.2) & (r > 1.3 * g) & (g > 1.5 * b))[:, :w].mean())
+
         # The cup fills many times the pixels of the overview's ~30-pixel cup.
         self.assertGreater(orange_share(shot), 10 * orange_share(self.png))
 
     def test_scene_option_as_in_ssc_trial(self):
         # ssc trial --scene X and ssc view --scene X: the same option.
         shot = os.path.join(self.tmp, "gantry.png")
-        r = run([XVFB, "-a", "-s", "-screen 0 640x480x24", SSC, "view", "--scene",
-                 "disk_benchmark_gantry", "--screenshot", shot, "--time", "0.2", "--width", "320",
-                 "--height", "240"])
+        r = run(
+            [
+                XVFB,
+                "-a",
+                "-s",
+                "-screen 0 640x480x24",
+                SSC,
+                "view",
+                "--scene",
+                "disk_benchmark_gantry",
+                "--screenshot",
+                shot,
+                "--time",
+                "0.2",
+                "--width",
+                "320",
+                "--height",
+                "240",
+            ]
+        )
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertTrue(os.path.getsize(shot) > 0)
         r = run([SSC, "view", "disk_benchmark", "--scene", "disk_benchmark_gantry"])
@@ -143,10 +235,10 @@ class ViewerTest(unittest.TestCase):
         self.assertIn("name different scenes", r.stderr)
 
     def test_plugin_in_mujocos_python_viewer(self):
-        scene = os.path.join(os.environ['SSC_SOURCE_DIR'], 'scenes', 'disk_benchmark.xml')
+        scene = os.path.join(os.environ["SSC_SOURCE_DIR"], "scenes", "disk_benchmark.xml")
         script = textwrap.dedent(f"""
             import mujoco, mujoco.viewer
-            mujoco.mj_loadPluginLibrary({os.environ['SSC_PLUGIN_LIB']!r})
+            mujoco.mj_loadPluginLibrary({os.environ["SSC_PLUGIN_LIB"]!r})
             m = mujoco.MjModel.from_xml_path({scene!r})
             d = mujoco.MjData(m)
             mujoco.mj_resetDataKeyframe(m, d, 0)
@@ -169,13 +261,14 @@ class ViewerTest(unittest.TestCase):
         # The same 200 steps without a viewer give the same readings: the cup hangs 5 mm above
         # the disk at the home keyframe, so every chamber reads ambient (noise only).
         import mujoco
-        mujoco.mj_loadPluginLibrary(os.environ['SSC_PLUGIN_LIB'])
+
+        mujoco.mj_loadPluginLibrary(os.environ["SSC_PLUGIN_LIB"])
         model = mujoco.MjModel.from_xml_path(scene)
         data = mujoco.MjData(model)
         mujoco.mj_resetDataKeyframe(model, data, 0)
         mujoco.mj_step(model, data, 200)
-        sid = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_SENSOR, 'ssc_chamber_pressure')
-        headless = data.sensordata[model.sensor_adr[sid]:model.sensor_adr[sid] + 4]
+        sid = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_SENSOR, "ssc_chamber_pressure")
+        headless = data.sensordata[model.sensor_adr[sid] : model.sensor_adr[sid] + 4]
         np.testing.assert_allclose(shown, headless, rtol=0, atol=1e-9)
         self.assertLess(max(abs(x) for x in shown), 50.0, shown)
 

@@ -6,6 +6,7 @@
 the lab's scripts import; ``world`` is the simulated cell behind them; ``noop`` serves plots,
 cameras and learned models as harmless no-ops; ``runner`` runs a script (docs/sil.md).
 """
+
 import os as _os
 
 STANDINS = _os.path.join(_os.path.dirname(_os.path.abspath(__file__)), "standins")
@@ -20,6 +21,7 @@ def save_data_params(args, append_txt="", mat_dir=None, recording=None):
     import numpy as np
     from .. import _core
     from .current import current
+
     w = current()
     if recording is None:
         if not w.logger.paths:
@@ -29,7 +31,8 @@ def save_data_params(args, append_txt="", mat_dir=None, recording=None):
     if "edgeFollowing_history" in d:
         d["edgeFollowing_history"] = [
             [float(v) for v in np.concatenate([np.ravel(np.asarray(x, dtype=float)) for x in row])]
-            for row in d["edgeFollowing_history"]]
+            for row in d["edgeFollowing_history"]
+        ]
     keep = {}
     for k, v in d.items():
         if k == "edgeFollowing_history":
@@ -43,7 +46,9 @@ def save_data_params(args, append_txt="", mat_dir=None, recording=None):
                 pass
     if mat_dir is None:
         from datetime import datetime
-        mat_dir = _os.path.join(_os.path.expanduser("~"), "SuctionExperiment",
-                                datetime.now().strftime("%y%m%d"))
+
+        mat_dir = _os.path.join(
+            _os.path.expanduser("~"), "SuctionExperiment", datetime.now().strftime("%y%m%d")
+        )
     _os.makedirs(mat_dir, exist_ok=True)
     return _core.write_lab_mat(recording, mat_dir, append_txt, keep)

@@ -7,6 +7,7 @@ script's `except Exception:` does not swallow it; one that swallows everything i
 every tick and, after a grace period, the runner writes its summary and leaves. Forked children of
 the script end with the run.
 """
+
 import ctypes
 import os
 import signal
@@ -27,8 +28,8 @@ class Limits:
         self.stuck_wall_s = stuck_wall_s
         self.max_idle_calls = max_idle_calls
         self.grace_s = grace_s
-        self.give_up = give_up          # called once the grace is over: writes, then leaves
-        self.reason = None              # the bound hit, once hit
+        self.give_up = give_up  # called once the grace is over: writes, then leaves
+        self.reason = None  # the bound hit, once hit
         self.waiting_for_operator = False
         self._start = time.monotonic()
         self._stopped_at = None
@@ -51,8 +52,10 @@ class Limits:
             self._idle_sim, self._idle_calls = self.world.sim_time, 0
         self._idle_calls += 1
         if self._idle_calls > self.max_idle_calls:
-            self.stop("%d calls to %s in a row with no simulated time passing: the script loops "
-                      "on them" % (self._idle_calls - 1, what))
+            self.stop(
+                "%d calls to %s in a row with no simulated time passing: the script loops "
+                "on them" % (self._idle_calls - 1, what)
+            )
 
     def _tick(self, signum, frame):
         now = time.monotonic()
@@ -66,8 +69,10 @@ class Limits:
         if now - self._start > self.max_wall_s:
             self.stop("the wall-clock limit (--max-wall %g s)" % self.max_wall_s)
         if now - self._last_progress > self.stuck_wall_s:
-            self.stop("no simulated time passed in %g s of wall clock (at %.2f s simulated): the "
-                      "script is stuck in a loop of its own" % (self.stuck_wall_s, sim))
+            self.stop(
+                "no simulated time passed in %g s of wall clock (at %.2f s simulated): the "
+                "script is stuck in a loop of its own" % (self.stuck_wall_s, sim)
+            )
 
     def install(self):
         self._saved_handler = signal.signal(signal.SIGALRM, self._tick)
@@ -108,7 +113,7 @@ def descendants(pid):
                 stat = f.read()
         except OSError:
             continue
-        ppid = int(stat[stat.rfind(")") + 2:].split()[1])
+        ppid = int(stat[stat.rfind(")") + 2 :].split()[1])
         children.setdefault(ppid, []).append(int(entry))
     found, todo = [], [pid]
     while todo:

@@ -9,6 +9,7 @@ robotlog/topic_csv.h reads): ``/tmp/dataLog_<YYYY>_<MMDD>_<HHMMSS>_<topic, '/' -
 elements separated by ", ". Each row is flushed, so the script's own saver can read the files
 while logging runs (the lab's saves before it stops the logger).
 """
+
 import numbers
 import os
 from datetime import datetime
@@ -32,6 +33,7 @@ def _get(msg, path):
         msg = getattr(msg, part)
     return msg
 
+
 # The topics the lab's logger records unless its topic file names others.
 DEFAULT_TOPICS = ("/netft_data", "/SensorPacket", "/pwm", "/endEffectorPose", "/sync")
 
@@ -41,8 +43,8 @@ class DataLogger:
         self.world = world
         self.topics = self._read_topics(topics_file)
         self.enabled = False
-        self.files = {}        # topic -> open file
-        self.fields = {}       # topic -> sorted [(path, length)]
+        self.files = {}  # topic -> open file
+        self.fields = {}  # topic -> sorted [(path, length)]
         self.paths = []
         self.started = 0
 
@@ -102,6 +104,7 @@ class DataLogger:
             stamp = header.stamp
         if stamp is None:
             from .rostime import Time
+
             stamp = Time.from_sec(self.world.ros_time_s())
         line = "{}".format(stamp)
         for path, n in self.fields[topic]:

@@ -3,6 +3,7 @@
 A message class lists its fields in ``__slots__`` (the lab's data logger walks them) with their
 defaults; positional or keyword arguments set them, as genpy's constructors do.
 """
+
 import copy
 
 
@@ -30,10 +31,14 @@ class Message:
 
     def __eq__(self, other):
         return type(self) is type(other) and all(
-            getattr(self, n) == getattr(other, n) for n in self.__slots__)
+            getattr(self, n) == getattr(other, n) for n in self.__slots__
+        )
 
     def __repr__(self):
-        return "%s(%s)" % (self._type, ", ".join("%s=%r" % (n, getattr(self, n)) for n in self.__slots__))
+        return "%s(%s)" % (
+            self._type,
+            ", ".join("%s=%r" % (n, getattr(self, n)) for n in self.__slots__),
+        )
 
     __str__ = __repr__
 
@@ -55,14 +60,18 @@ def _factory(v):
 def message(type_name, fields):
     """A message class: fields is [(name, default value, or a class made fresh per message)]."""
     names = tuple(f[0] for f in fields)
-    cls = type(type_name.split("/")[-1], (Message,), {
-        "__slots__": names, "_type": type_name, "_slot_types": names})
+    cls = type(
+        type_name.split("/")[-1],
+        (Message,),
+        {"__slots__": names, "_type": type_name, "_slot_types": names},
+    )
     cls._factories = tuple(_factory(f[1]) for f in fields)
     return cls
 
 
 class ServiceType:
     """A service type: _request_class and _response_class, as genpy's."""
+
     _request_class = None
     _response_class = None
 
@@ -72,6 +81,7 @@ def service(type_name, request_fields, response_fields):
     req = message(type_name + "Request", request_fields)
     res = message(type_name + "Response", response_fields)
     req.__name__, res.__name__ = base + "Request", base + "Response"
-    srv = type(base, (ServiceType,), {"_type": type_name, "_request_class": req,
-                                      "_response_class": res})
+    srv = type(
+        base, (ServiceType,), {"_type": type_name, "_request_class": req, "_response_class": res}
+    )
     return srv, req, res

@@ -2,6 +2,7 @@
 cameras, learned models, MoveIt, controller managers. Each is a module whose names are inert
 objects: calling one, or anything it returns, does nothing. ``plt.pause`` and ``cv2.waitKey``
 advance the simulation as the real calls take time."""
+
 import importlib.abc
 import importlib.machinery
 import sys
@@ -9,10 +10,26 @@ import types
 
 # Top-level modules served as no-ops (and every submodule under them).
 NOOP_MODULES = {
-    "cv2", "keras", "tensorflow", "icecream", "moveit_commander", "moveit_msgs",
-    "controller_manager_msgs", "dynamic_reconfigure", "autolab_core", "visualization",
-    "gqcnn_ros", "pyrealsense2", "perception", "catkin", "pykalman", "roslib", "rosgraph",
-    "actionlib", "sklearn", "torch",
+    "cv2",
+    "keras",
+    "tensorflow",
+    "icecream",
+    "moveit_commander",
+    "moveit_msgs",
+    "controller_manager_msgs",
+    "dynamic_reconfigure",
+    "autolab_core",
+    "visualization",
+    "gqcnn_ros",
+    "pyrealsense2",
+    "perception",
+    "catkin",
+    "pykalman",
+    "roslib",
+    "rosgraph",
+    "actionlib",
+    "sklearn",
+    "torch",
 }
 PLOT_MODULES = {"matplotlib", "mpl_toolkits"}
 
@@ -71,6 +88,7 @@ class NoOpModule(types.ModuleType):
 
 def _pause(interval=0.0):
     from .current import current
+
     current().pause(interval)
 
 
@@ -83,6 +101,7 @@ def real_pause(pyplot):
 
     def pause(interval=0.0):
         from .current import current
+
         t0 = time.process_time()
         manager = _pylab_helpers.Gcf.get_active()
         if manager is not None:
@@ -92,11 +111,13 @@ def real_pause(pyplot):
             pyplot.show(block=False)
             canvas.flush_events()
         current().pause(interval, time.process_time() - t0, t0)
+
     return pause
 
 
 def _subplots(nrows=1, ncols=1, **kwargs):
     import numpy as np
+
     if nrows * ncols == 1:
         return NoOp("figure"), NoOp("axes")
     axes = np.empty((nrows, ncols) if nrows > 1 and ncols > 1 else (nrows * ncols,), dtype=object)
@@ -113,20 +134,28 @@ def _ic(*args):
 
 def _wait_key(delay=0):
     from .current import current
+
     current().sleep(max(delay, 1) * 1e-3)
     return -1
 
 
 SPECIAL = {
     "matplotlib": {"use": lambda *a, **k: None, "rcParams": {}, "get_backend": lambda: "agg"},
-    "matplotlib.pyplot": {"pause": _pause, "subplots": _subplots, "ion": lambda: None,
-                          "ioff": lambda: None, "show": lambda *a, **k: None,
-                          "close": lambda *a, **k: None},
+    "matplotlib.pyplot": {
+        "pause": _pause,
+        "subplots": _subplots,
+        "ion": lambda: None,
+        "ioff": lambda: None,
+        "show": lambda *a, **k: None,
+        "close": lambda *a, **k: None,
+    },
     "icecream": {"ic": _ic},
     "cv2": {"waitKey": _wait_key},
-    "controller_manager_msgs.utils": {"ControllerLister": NoOp("ControllerLister"),
-                                      "ControllerManagerLister": NoOp("ControllerManagerLister"),
-                                      "get_rosparam_controller_names": lambda *a, **k: []},
+    "controller_manager_msgs.utils": {
+        "ControllerLister": NoOp("ControllerLister"),
+        "ControllerManagerLister": NoOp("ControllerManagerLister"),
+        "get_rosparam_controller_names": lambda *a, **k: [],
+    },
 }
 
 

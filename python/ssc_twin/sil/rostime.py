@@ -1,4 +1,5 @@
 """rospy's Time and Duration (genpy's semantics: secs/nsecs, str() = integer nanoseconds)."""
+
 import math
 
 
@@ -82,6 +83,7 @@ class Time(_TVal):
     @staticmethod
     def now():
         from .current import current
+
         return Time.from_sec(current().ros_time_s())
 
     def __add__(self, o):

@@ -11,6 +11,7 @@ modules), then everything installed. Around it:
   OUT, so nothing outside OUT is written or deleted;
 - input(): answered with Enter (the operator's key presses), unless --interactive.
 """
+
 import argparse
 import ast
 import builtins
@@ -44,43 +45,81 @@ class BadInput(Exception):
 def parse_args(argv):
     p = argparse.ArgumentParser(
         prog="ssc sil",
-        description="Run a lab script (ROS 1 + ur_rtde) against the twin, unchanged.")
-    p.add_argument("--scene", default=_core.default_scene(),
-                   help="scene name or MJCF path (default: %s)" % _core.default_scene())
-    p.add_argument("--seed", type=seed, default=1,
-                   help="sensor noise seed (default 1), a whole number in [0, %d]" % MAX_SEED)
-    p.add_argument("--realtime", action="store_true",
-                   help="pace the simulation to the wall clock (default: virtual time)")
+        description="Run a lab script (ROS 1 + ur_rtde) against the twin, unchanged.",
+    )
+    p.add_argument(
+        "--scene",
+        default=_core.default_scene(),
+        help="scene name or MJCF path (default: %s)" % _core.default_scene(),
+    )
+    p.add_argument(
+        "--seed",
+        type=seed,
+        default=1,
+        help="sensor noise seed (default 1), a whole number in [0, %d]" % MAX_SEED,
+    )
+    p.add_argument(
+        "--realtime",
+        action="store_true",
+        help="pace the simulation to the wall clock (default: virtual time)",
+    )
     p.add_argument("--viewer", action="store_true", help="show the scene in MuJoCo's viewer")
-    p.add_argument("--out", default="sil_out",
-                   help="folder for the script's /tmp and home (default ./sil_out)")
-    p.add_argument("--pause-cost", type=pause_cost, default=world_mod.DEFAULT_PAUSE_COST_S,
-                   metavar="S|measured",
-                   help="simulated seconds a plt.pause costs beyond its argument: the figure "
-                        "redraw the lab's loop paid (default %(default)s, measured: docs/sil.md), "
-                        "or 'measured': the script's own CPU time building and drawing its plot "
-                        "on this machine (with --plots: the real matplotlib draws)")
-    p.add_argument("--max-sim", type=max_sim, default=600.0, metavar="S",
-                   help="shut the node down after S simulated seconds (default 600)")
-    p.add_argument("--max-wall", type=max_wall, default=DEFAULT_MAX_WALL_S, metavar="S",
-                   help="end the script after S wall-clock seconds, whatever it does "
-                        "(default %(default)g)")
-    p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
-                   help="run as if the script's knob line read NAME = VALUE (the first plain "
-                        "assignment to NAME in main(), else at module level); the file is "
-                        "not edited")
-    p.add_argument("--plots", action="store_true",
-                   help="use the real matplotlib (default: plots are no-ops)")
-    p.add_argument("--interactive", action="store_true",
-                   help="read input() from the terminal (default: answer Enter)")
+    p.add_argument(
+        "--out", default="sil_out", help="folder for the script's /tmp and home (default ./sil_out)"
+    )
+    p.add_argument(
+        "--pause-cost",
+        type=pause_cost,
+        default=world_mod.DEFAULT_PAUSE_COST_S,
+        metavar="S|measured",
+        help="simulated seconds a plt.pause costs beyond its argument: the figure "
+        "redraw the lab's loop paid (default %(default)s, measured: docs/sil.md), "
+        "or 'measured': the script's own CPU time building and drawing its plot "
+        "on this machine (with --plots: the real matplotlib draws)",
+    )
+    p.add_argument(
+        "--max-sim",
+        type=max_sim,
+        default=600.0,
+        metavar="S",
+        help="shut the node down after S simulated seconds (default 600)",
+    )
+    p.add_argument(
+        "--max-wall",
+        type=max_wall,
+        default=DEFAULT_MAX_WALL_S,
+        metavar="S",
+        help="end the script after S wall-clock seconds, whatever it does (default %(default)g)",
+    )
+    p.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="run as if the script's knob line read NAME = VALUE (the first plain "
+        "assignment to NAME in main(), else at module level); the file is "
+        "not edited",
+    )
+    p.add_argument(
+        "--plots", action="store_true", help="use the real matplotlib (default: plots are no-ops)"
+    )
+    p.add_argument(
+        "--interactive",
+        action="store_true",
+        help="read input() from the terminal (default: answer Enter)",
+    )
     p.add_argument("--report", metavar="FILE", help="write a JSON summary of the run")
     p.add_argument("--verbose", action="store_true", help="print what the twin's nodes do")
-    p.add_argument("--no-progress", action="store_true",
-                   help="no progress lines (default: one every %g s of wall clock)"
-                        % PROGRESS_WALL_S)
-    p.add_argument("--version", action="version",
-                   version="ssc sil (ssc_twin %s, MuJoCo %s)" % (_package_version(),
-                                                                 _core.mujoco_version()))
+    p.add_argument(
+        "--no-progress",
+        action="store_true",
+        help="no progress lines (default: one every %g s of wall clock)" % PROGRESS_WALL_S,
+    )
+    p.add_argument(
+        "--version",
+        action="version",
+        version="ssc sil (ssc_twin %s, MuJoCo %s)" % (_package_version(), _core.mujoco_version()),
+    )
     p.add_argument("script", help="the lab script (.py)")
     p.add_argument("args", nargs=argparse.REMAINDER, help="the script's own arguments")
     return p.parse_args(argv)
@@ -92,6 +131,7 @@ PROGRESS_WALL_S = 30.0
 def _package_version():
     try:
         from importlib.metadata import version
+
         return version("ssc_twin")
     except Exception:  # a build tree's staged package has no metadata
         return "(build tree)"
@@ -172,16 +212,22 @@ def apply_knobs(tree, knobs, script):
         done = False
         for body in bodies:
             for stmt in body:
-                if (isinstance(stmt, ast.Assign) and len(stmt.targets) == 1
-                        and isinstance(stmt.targets[0], ast.Name) and stmt.targets[0].id == name):
+                if (
+                    isinstance(stmt, ast.Assign)
+                    and len(stmt.targets) == 1
+                    and isinstance(stmt.targets[0], ast.Name)
+                    and stmt.targets[0].id == name
+                ):
                     stmt.value = ast.copy_location(new_value, stmt.value)
                     done = True
                     break
             if done:
                 break
         if not done:
-            raise BadInput("--set %s: %s has no plain assignment '%s = ...' in main() or at "
-                           "module level" % (name, script, name))
+            raise BadInput(
+                "--set %s: %s has no plain assignment '%s = ...' in main() or at "
+                "module level" % (name, script, name)
+            )
     ast.fix_missing_locations(tree)
     return tree
 
@@ -198,8 +244,11 @@ class TmpRedirect:
     def map(self, p):
         if isinstance(p, os.PathLike):
             p = os.fspath(p)
-        if (isinstance(p, str) and (p == "/tmp" or p.startswith("/tmp/"))
-                and not (p == self.out_dir or p.startswith(self.out_dir + "/"))):
+        if (
+            isinstance(p, str)
+            and (p == "/tmp" or p.startswith("/tmp/"))
+            and not (p == self.out_dir or p.startswith(self.out_dir + "/"))
+        ):
             return self.tmp_dir + p[4:]
         return p
 
@@ -212,10 +261,25 @@ class TmpRedirect:
         def wrap2(fn):
             return lambda src, dst, *a, **k: fn(m(src), m(dst), *a, **k)
 
-        for mod, names, wrap in ((os, ("listdir", "remove", "unlink", "makedirs", "mkdir",
-                                      "stat", "scandir", "rmdir", "lstat"), wrap1),
-                                 (os, ("rename", "replace"), wrap2),
-                                 (builtins, ("open",), wrap1)):
+        for mod, names, wrap in (
+            (
+                os,
+                (
+                    "listdir",
+                    "remove",
+                    "unlink",
+                    "makedirs",
+                    "mkdir",
+                    "stat",
+                    "scandir",
+                    "rmdir",
+                    "lstat",
+                ),
+                wrap1,
+            ),
+            (os, ("rename", "replace"), wrap2),
+            (builtins, ("open",), wrap1),
+        ):
             for name in names:
                 fn = getattr(mod, name)
                 self.saved[(mod, name)] = fn
@@ -249,10 +313,20 @@ def lab_code_inconsistency(e, script_dir):
         return None
     where = traceback.extract_tb(e.__traceback__)[-1]
     kind = "module" if isinstance(owner, types.ModuleType) else "class"
-    return ("the lab's own code, not the twin: %s:%d uses %s.%s, which %s %s (%s) does not "
-            "define; this checkout's script and helper disagree (docs/sil.md names a commit that "
-            "runs)" % (os.path.basename(where.filename), where.lineno, owner.__name__, name, kind,
-                       owner.__name__, os.path.relpath(path, root)))
+    return (
+        "the lab's own code, not the twin: %s:%d uses %s.%s, which %s %s (%s) does not "
+        "define; this checkout's script and helper disagree (docs/sil.md names a commit that "
+        "runs)"
+        % (
+            os.path.basename(where.filename),
+            where.lineno,
+            owner.__name__,
+            name,
+            kind,
+            owner.__name__,
+            os.path.relpath(path, root),
+        )
+    )
 
 
 def _virtual_time(w):
@@ -274,11 +348,13 @@ def check_inputs(opts):
     if not os.path.lexists(script):
         return _fail("%s: no such file (the lab script to run)" % script, EXIT_MISSING_INPUT)
     if os.path.isdir(script):
-        return _fail("%s: is a directory, not a script (give the .py file)" % script,
-                     EXIT_BAD_DATA)
+        return _fail("%s: is a directory, not a script (give the .py file)" % script, EXIT_BAD_DATA)
     if not os.path.isfile(script):
-        return _fail("%s: not a regular file (a FIFO, device, socket or dangling link): give "
-                     "the .py file" % script, EXIT_BAD_DATA)
+        return _fail(
+            "%s: not a regular file (a FIFO, device, socket or dangling link): give "
+            "the .py file" % script,
+            EXIT_BAD_DATA,
+        )
     out = os.path.abspath(opts.out)
     if os.path.exists(out) and not os.path.isdir(out):
         return _fail("--out: %r exists and is not a directory" % opts.out, EXIT_USAGE)
@@ -286,15 +362,19 @@ def check_inputs(opts):
         report = os.path.abspath(opts.report)
         parent = os.path.dirname(report)
         if os.path.isdir(report):
-            return _fail("--report: %r is a directory (give a file to write)" % opts.report,
-                         EXIT_USAGE)
+            return _fail(
+                "--report: %r is a directory (give a file to write)" % opts.report, EXIT_USAGE
+            )
         if not os.path.isdir(parent):
-            return _fail("--report: %r: its folder %s does not exist" % (opts.report, parent),
-                         EXIT_USAGE)
-        if not os.access(parent, os.W_OK) or (os.path.exists(report)
-                                              and not os.access(report, os.W_OK)):
-            return _fail("--report: %r cannot be written (permission denied)" % opts.report,
-                         EXIT_USAGE)
+            return _fail(
+                "--report: %r: its folder %s does not exist" % (opts.report, parent), EXIT_USAGE
+            )
+        if not os.access(parent, os.W_OK) or (
+            os.path.exists(report) and not os.access(report, os.W_OK)
+        ):
+            return _fail(
+                "--report: %r cannot be written (permission denied)" % opts.report, EXIT_USAGE
+            )
     return None
 
 
@@ -311,14 +391,17 @@ def compile_script(opts):
     try:
         source = raw.decode("utf-8")
     except UnicodeDecodeError as e:
-        return None, _fail("%s: not Python source (not UTF-8 text at byte %d)" % (
-            opts.script, e.start), EXIT_BAD_DATA)
+        return None, _fail(
+            "%s: not Python source (not UTF-8 text at byte %d)" % (opts.script, e.start),
+            EXIT_BAD_DATA,
+        )
     try:
         tree = apply_knobs(ast.parse(source, filename=script), opts.set, opts.script)
         return compile(tree, script, "exec"), None
     except SyntaxError as e:
-        return None, _fail("%s:%s: not valid Python: %s" % (opts.script, e.lineno, e.msg),
-                           EXIT_BAD_DATA)
+        return None, _fail(
+            "%s:%s: not valid Python: %s" % (opts.script, e.lineno, e.msg), EXIT_BAD_DATA
+        )
     except (BadInput, ValueError) as e:
         return None, _fail(str(e), EXIT_USAGE)
 
@@ -326,17 +409,26 @@ def compile_script(opts):
 def make_world(opts, tmp_dir):
     """The twin's world, or (None, status) after a 'ssc sil:' line."""
     try:  # the scene, checked before anything is written (the C++ loader's message)
-        w = world_mod.install(world_mod.World(scene=opts.scene, seed=opts.seed,
-                                              realtime=opts.realtime, tmp_dir=tmp_dir,
-                                              pause_cost_s=opts.pause_cost, verbose=opts.verbose))
+        w = world_mod.install(
+            world_mod.World(
+                scene=opts.scene,
+                seed=opts.seed,
+                realtime=opts.realtime,
+                tmp_dir=tmp_dir,
+                pause_cost_s=opts.pause_cost,
+                verbose=opts.verbose,
+            )
+        )
     except (RuntimeError, ValueError) as e:
         missing = "no such file" in str(e)
         return None, _fail("--scene: %s" % e, EXIT_MISSING_INPUT if missing else EXIT_BAD_DATA)
     except OSError as e:  # the World makes OUT/tmp
-        return None, _fail("--out: cannot create %s: %s" % (e.filename or tmp_dir, e.strerror),
-                           EXIT_USAGE)
+        return None, _fail(
+            "--out: cannot create %s: %s" % (e.filename or tmp_dir, e.strerror), EXIT_USAGE
+        )
     if opts.viewer:
         from .viewer import Viewer
+
         try:
             w.viewer = Viewer(w)
         except Exception as e:  # no display, no OpenGL
@@ -344,8 +436,18 @@ def make_world(opts, tmp_dir):
     return w, None
 
 
-STANDIN_MODULES = ("rospy", "tf", "rtde_control", "rtde_receive", "std_msgs", "geometry_msgs",
-                   "sensor_msgs", "suction_cup", "tae_psoc", "netft_utils")
+STANDIN_MODULES = (
+    "rospy",
+    "tf",
+    "rtde_control",
+    "rtde_receive",
+    "std_msgs",
+    "geometry_msgs",
+    "sensor_msgs",
+    "suction_cup",
+    "tae_psoc",
+    "netft_utils",
+)
 
 
 def classify_failure(e, script):
@@ -361,7 +463,9 @@ def classify_failure(e, script):
         return EXIT_MISSING, "%s (the twin's stand-in lacks it)" % e
     if isinstance(e, OSError) and e.errno in (errno.ENOSPC, errno.EDQUOT, errno.EFBIG):
         return EXIT_ERROR, "cannot write %s: %s (the disk is full or a size limit was hit)" % (
-            e.filename or "a file", e.strerror)
+            e.filename or "a file",
+            e.strerror,
+        )
     if isinstance(e, (AttributeError, NotImplementedError)):
         traceback.print_exc()
         lab = lab_code_inconsistency(e, os.path.dirname(script))
@@ -369,7 +473,11 @@ def classify_failure(e, script):
             return EXIT_ERROR, lab
         where = traceback.extract_tb(e.__traceback__)[-1]
         return EXIT_MISSING, "%s at %s:%d: %s" % (
-            type(e).__name__, os.path.basename(where.filename), where.lineno, e)
+            type(e).__name__,
+            os.path.basename(where.filename),
+            where.lineno,
+            e,
+        )
     traceback.print_exc()  # the script's own failure: report it, as python would
     return EXIT_ERROR, "%s: %s" % (type(e).__name__, e)
 
@@ -392,6 +500,7 @@ class ScriptSandbox:
         noop.install(plots=opts.plots)
         if opts.plots:
             import matplotlib.pyplot as pyplot
+
             pyplot.pause = noop.real_pause(pyplot)
         self.redirect = TmpRedirect(self.tmp_dir, self.out)
         self.saved["env"] = {k: os.environ.get(k) for k in ("HOME", "TMPDIR")}
@@ -467,11 +576,25 @@ class Progress:
             return
         self.last = now
         v = self.w.verdict.summary()
-        state = verdict_mod.WORDS[v["outcome"]] if self.w.verdict.outcome else (
-            "not touched yet" if v["touched_at_s"] is None else "following")
-        print("ssc sil: %.0f of %.0f s simulated in %.0f s wall: %s, peak vacuum %.1f Pa, swept "
-              "%.0f deg" % (self.w.sim_time, self.max_sim_s, now - self.start, state,
-                            v["peak_vacuum_pa"], v["swept_deg"]), file=sys.stderr, flush=True)
+        state = (
+            verdict_mod.WORDS[v["outcome"]]
+            if self.w.verdict.outcome
+            else ("not touched yet" if v["touched_at_s"] is None else "following")
+        )
+        print(
+            "ssc sil: %.0f of %.0f s simulated in %.0f s wall: %s, peak vacuum %.1f Pa, swept "
+            "%.0f deg"
+            % (
+                self.w.sim_time,
+                self.max_sim_s,
+                now - self.start,
+                state,
+                v["peak_vacuum_pa"],
+                v["swept_deg"],
+            ),
+            file=sys.stderr,
+            flush=True,
+        )
 
 
 def write_report(opts, summary):
@@ -490,33 +613,61 @@ def write_report(opts, summary):
 
 
 def summarize(opts, script, out, w, status, problem, wall, limits, children):
-    mats = sorted(os.path.join(dp, f) for dp, _, fs in os.walk(out) for f in fs
-                  if f.endswith(".mat"))
+    mats = sorted(
+        os.path.join(dp, f) for dp, _, fs in os.walk(out) for f in fs if f.endswith(".mat")
+    )
     verdict = w.verdict.summary()
     if status == EXIT_OK and verdict["outcome"] != "success":
         status = EXIT_TRIAL_FAILED
-    summary = {"script": script, "status": status, "problem": problem, "verdict": verdict,
-               "sim_time_s": round(w.sim_time, 4), "wall_time_s": round(wall, 3),
-               "logger_recordings": w.logger.started, "mat_files": mats,
-               "hit_time_limit": w.shutdown and w.sim_time >= opts.max_sim - 1e-9,
-               "stopped_by": limits.reason, "children_ended": children,
-               "plt_pause": w.pause_summary()}
-    ran = ("finished" if status in (EXIT_OK, EXIT_TRIAL_FAILED) else
-           ("missing interface: " + problem if status == EXIT_MISSING else "failed: " + problem))
-    print("ssc sil: %s: %s; the trial: %s (peak vacuum %.1f Pa, swept %.0f deg); %.2f s "
-          "simulated in %.2f s wall%s" % (
-              os.path.basename(script), ran, verdict_mod.WORDS[verdict["outcome"]],
-              verdict["peak_vacuum_pa"], verdict["swept_deg"], w.sim_time, wall,
-              " (stopped at --max-sim)" if summary["hit_time_limit"] else ""))
+    summary = {
+        "script": script,
+        "status": status,
+        "problem": problem,
+        "verdict": verdict,
+        "sim_time_s": round(w.sim_time, 4),
+        "wall_time_s": round(wall, 3),
+        "logger_recordings": w.logger.started,
+        "mat_files": mats,
+        "hit_time_limit": w.shutdown and w.sim_time >= opts.max_sim - 1e-9,
+        "stopped_by": limits.reason,
+        "children_ended": children,
+        "plt_pause": w.pause_summary(),
+    }
+    ran = (
+        "finished"
+        if status in (EXIT_OK, EXIT_TRIAL_FAILED)
+        else ("missing interface: " + problem if status == EXIT_MISSING else "failed: " + problem)
+    )
+    print(
+        "ssc sil: %s: %s; the trial: %s (peak vacuum %.1f Pa, swept %.0f deg); %.2f s "
+        "simulated in %.2f s wall%s"
+        % (
+            os.path.basename(script),
+            ran,
+            verdict_mod.WORDS[verdict["outcome"]],
+            verdict["peak_vacuum_pa"],
+            verdict["swept_deg"],
+            w.sim_time,
+            wall,
+            " (stopped at --max-sim)" if summary["hit_time_limit"] else "",
+        )
+    )
     if children:
         print("ssc sil: ended %d process(es) the script left running" % children)
     ps = summary["plt_pause"]
     if ps:
-        print("ssc sil: plt.pause: %d calls; the script's CPU per call (median, this machine): "
-              "%.1f ms building the plot, %.1f ms drawing it; charged: %s" % (
-                  ps["pauses"], 1e3 * ps["build_cpu_s_median"], 1e3 * ps["draw_cpu_s_median"],
-                  "that CPU time" if ps["cost"] == world_mod.MEASURED
-                  else "the argument + %g s" % ps["cost"]))
+        print(
+            "ssc sil: plt.pause: %d calls; the script's CPU per call (median, this machine): "
+            "%.1f ms building the plot, %.1f ms drawing it; charged: %s"
+            % (
+                ps["pauses"],
+                1e3 * ps["build_cpu_s_median"],
+                1e3 * ps["draw_cpu_s_median"],
+                "that CPU time"
+                if ps["cost"] == world_mod.MEASURED
+                else "the argument + %g s" % ps["cost"],
+            )
+        )
     for m in mats:
         print("ssc sil: saved %s" % m)
     return summary, status
@@ -547,8 +698,9 @@ def run(opts):
 
     def leave(wall, hard=False):
         children = limits_mod.end_children(os.getpid())
-        summary, status = summarize(opts, script, out, w, finish["status"], finish["problem"],
-                                    wall, limits, children)
+        summary, status = summarize(
+            opts, script, out, w, finish["status"], finish["problem"], wall, limits, children
+        )
         ok = write_report(opts, summary) if opts.report else True
         status = status if ok else EXIT_ERROR
         if hard or w.viewer is not None:
@@ -559,8 +711,9 @@ def run(opts):
             os._exit(status)
         return status
 
-    limits = limits_mod.Limits(w, opts.max_wall, STUCK_WALL_S, MAX_IDLE_CALLS,
-                               STOP_GRACE_WALL_S, give_up)
+    limits = limits_mod.Limits(
+        w, opts.max_wall, STUCK_WALL_S, MAX_IDLE_CALLS, STOP_GRACE_WALL_S, give_up
+    )
     limits_mod.watch_forks()
     if not opts.no_progress:
         w.progress = Progress(w, opts.max_sim)

@@ -11,6 +11,7 @@ lab tares it in air, stayed under TOUCH_N);
 timeout: touched, but none of the above by the end. Without a disk in the scene there is no loop
 to sweep: a touched run ends as timeout unless a failure decides it.
 """
+
 import math
 
 from .. import _core
@@ -24,17 +25,21 @@ FILTER_SAMPLES = 7  # the lab's moving average (PressureHelp)
 MIN_SWEEP_RADIUS_M = 0.005
 
 # Outcome names as trials write them, with the words the summary uses.
-WORDS = {"success": "success", "failure_I": "off the edge (failure I)",
-         "failure_II": "grasp (failure II)", "never_touched": "never touched the object",
-         "timeout": "timed out (touched, no outcome)"}
+WORDS = {
+    "success": "success",
+    "failure_I": "off the edge (failure I)",
+    "failure_II": "grasp (failure II)",
+    "never_touched": "never touched the object",
+    "timeout": "timed out (touched, no outcome)",
+}
 
 
 class Verdict:
     def __init__(self, centre_xy=None):
         self.centre = centre_xy
-        self.outcome = None           # decided: the first event after the touch
+        self.outcome = None  # decided: the first event after the touch
         self.touched_at_s = None
-        self.peak_vacuum_pa = 0.0     # the mean of the four chambers, filtered
+        self.peak_vacuum_pa = 0.0  # the mean of the four chambers, filtered
         self.peak_force_n = 0.0
         self.swept_deg = 0.0
         self._recent = []
@@ -85,7 +90,10 @@ class Verdict:
         return "never_touched" if self.touched_at_s is None else "timeout"
 
     def summary(self):
-        return {"outcome": self.final(), "touched_at_s": self.touched_at_s,
-                "peak_vacuum_pa": round(self.peak_vacuum_pa, 1),
-                "peak_force_n": round(self.peak_force_n, 3),
-                "swept_deg": round(self.swept_deg, 1)}
+        return {
+            "outcome": self.final(),
+            "touched_at_s": self.touched_at_s,
+            "peak_vacuum_pa": round(self.peak_vacuum_pa, 1),
+            "peak_force_n": round(self.peak_force_n, 3),
+            "swept_deg": round(self.swept_deg, 1),
+        }

@@ -1,17 +1,20 @@
 """MuJoCo's passive viewer on the SIL world: the scene loaded by the mujoco package (the plugin
 comes with ssc_twin's entry point) mirrors the plant's joint positions at up to 30 frames per
 wall-clock second."""
+
 import time
 
 
 class Viewer:
     def __init__(self, world):
         import os
+
         if not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")):
             raise RuntimeError("no display (DISPLAY is not set; run under xvfb-run for none)")
         import mujoco
         import mujoco.viewer
         from .. import _core
+
         self.mujoco = mujoco
         self.model = mujoco.MjModel.from_xml_path(_core.scene_path(world.plant.scene))
         self.data = mujoco.MjData(self.model)

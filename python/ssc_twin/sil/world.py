@@ -11,6 +11,7 @@ Frames (docs/sil.md): the scene's world is the UR Base frame (RTDE) moved so tha
 lands on the scene's disk; base_link (tf, /endEffectorPose) is the Base frame turned 180 deg about
 z, as on the lab's robot. The TCP is tool0 plus the offset set with setTcp.
 """
+
 import heapq
 import math
 import os
@@ -27,16 +28,16 @@ AMBIENT_PA = 101325.0
 # Each chamber's sensor reads the ambient with its own offset (what the lab's host tares in air);
 # the values are the spread of the example row in lab-logs.md.
 CHAMBER_OFFSET_PA = (-22.75, 14.67, -12.49, 73.59)
-FT_RATE_HZ = 100.0      # netft_data publish rate (the lab's is not recorded)
-POSE_RATE_HZ = 120.0    # /endEffectorPose (lab-logs.md: about 120 Hz)
+FT_RATE_HZ = 100.0  # netft_data publish rate (the lab's is not recorded)
+POSE_RATE_HZ = 120.0  # /endEffectorPose (lab-logs.md: about 120 Hz)
 # The UR servoL look-ahead the lab used (0.2 s) is the twin's servo smoothing of 0.15 s
 # (docs/trials.md); other look-ahead times scale with it.
 LAB_LOOKAHEAD_S = 0.2
 TWIN_SMOOTHING_S = 0.15
 SERVO_MAX_SPEED_M_S = 0.25
 MOVEL_SMOOTHING_S = 0.02
-REACHED_M = 0.1e-3       # moveL returns once the tool is this close and slow
-MEASURED = "measured"     # pause_cost_s: charge the script's measured CPU time instead
+REACHED_M = 0.1e-3  # moveL returns once the tool is this close and slow
+MEASURED = "measured"  # pause_cost_s: charge the script's measured CPU time instead
 # What one plt.pause of the lab's disk loop costs beyond its argument: building and drawing its
 # 8x4 in arrow plot with the real matplotlib, measured (`ssc sil --plots --pause-cost measured`,
 # TkAgg under Xvfb: median 12.7 ms building + 51.8 ms drawing CPU per iteration, the 10 ms
@@ -53,16 +54,36 @@ def _quat_from_matrix(R):
     t = R[0, 0] + R[1, 1] + R[2, 2]
     if t > 0:
         s = math.sqrt(t + 1.0) * 2
-        w, x, y, z = 0.25 * s, (R[2, 1] - R[1, 2]) / s, (R[0, 2] - R[2, 0]) / s, (R[1, 0] - R[0, 1]) / s
+        w, x, y, z = (
+            0.25 * s,
+            (R[2, 1] - R[1, 2]) / s,
+            (R[0, 2] - R[2, 0]) / s,
+            (R[1, 0] - R[0, 1]) / s,
+        )
     elif R[0, 0] > R[1, 1] and R[0, 0] > R[2, 2]:
         s = math.sqrt(1.0 + R[0, 0] - R[1, 1] - R[2, 2]) * 2
-        w, x, y, z = (R[2, 1] - R[1, 2]) / s, 0.25 * s, (R[0, 1] + R[1, 0]) / s, (R[0, 2] + R[2, 0]) / s
+        w, x, y, z = (
+            (R[2, 1] - R[1, 2]) / s,
+            0.25 * s,
+            (R[0, 1] + R[1, 0]) / s,
+            (R[0, 2] + R[2, 0]) / s,
+        )
     elif R[1, 1] > R[2, 2]:
         s = math.sqrt(1.0 + R[1, 1] - R[0, 0] - R[2, 2]) * 2
-        w, x, y, z = (R[0, 2] - R[2, 0]) / s, (R[0, 1] + R[1, 0]) / s, 0.25 * s, (R[1, 2] + R[2, 1]) / s
+        w, x, y, z = (
+            (R[0, 2] - R[2, 0]) / s,
+            (R[0, 1] + R[1, 0]) / s,
+            0.25 * s,
+            (R[1, 2] + R[2, 1]) / s,
+        )
     else:
         s = math.sqrt(1.0 + R[2, 2] - R[0, 0] - R[1, 1]) * 2
-        w, x, y, z = (R[1, 0] - R[0, 1]) / s, (R[0, 2] + R[2, 0]) / s, (R[1, 2] + R[2, 1]) / s, 0.25 * s
+        w, x, y, z = (
+            (R[1, 0] - R[0, 1]) / s,
+            (R[0, 2] + R[2, 0]) / s,
+            (R[1, 2] + R[2, 1]) / s,
+            0.25 * s,
+        )
     q = np.array([x, y, z, w])
     return q / np.linalg.norm(q)
 
@@ -86,7 +107,6 @@ def matrix_from_rotvec(v):
     return np.eye(3) + math.sin(a) * K + (1 - math.cos(a)) * K @ K
 
 
-
 class _Event:
     __slots__ = ("t", "seq", "fn", "period")
 
@@ -94,10 +114,19 @@ class _Event:
 class World:
     """One simulated robot cell: the scene, its clock and the ROS graph around it."""
 
-    def __init__(self, scene=None, seed=1, realtime=False, tmp_dir=None,
-                 pause_cost_s=DEFAULT_PAUSE_COST_S, verbose=False, disk_geom="disk"):
+    def __init__(
+        self,
+        scene=None,
+        seed=1,
+        realtime=False,
+        tmp_dir=None,
+        pause_cost_s=DEFAULT_PAUSE_COST_S,
+        verbose=False,
+        disk_geom="disk",
+    ):
         import sys
         from .. import _core
+
         standins = os.path.join(os.path.dirname(os.path.abspath(__file__)), "standins")
         if standins not in sys.path:
             sys.path.insert(0, standins)
@@ -107,14 +136,14 @@ class World:
         # Seconds a plt.pause costs beyond its argument, or MEASURED: the script's own CPU time
         # since its last call into the twin (the plot built and drawn) on this machine.
         self.pause_cost_s = pause_cost_s
-        self.pause_log = []                  # per plt.pause: (build CPU s, draw CPU s)
-        self._depth = 0                      # advance_to nesting (callbacks run inside it)
+        self.pause_log = []  # per plt.pause: (build CPU s, draw CPU s)
+        self._depth = 0  # advance_to nesting (callbacks run inside it)
         # When the script last returned from the twin, in process CPU seconds (the stand-ins run
         # in the script's thread; thread_time costs ~0.1 ms a call in some sandboxes).
         self._cpu_mark = _time.process_time()
         self.tmp_dir = tmp_dir or os.path.join(os.getcwd(), "sil_tmp")
         os.makedirs(self.tmp_dir, exist_ok=True)
-        self.epoch_s = _time.time()          # ROS time at simulation time 0
+        self.epoch_s = _time.time()  # ROS time at simulation time 0
         self.wall_start = _time.perf_counter()
         self.tool_centre_offset_m = float(_core.TOOL_CENTRE_OFFSET_M)
         # Placement: the lab's disk (base_link) onto the scene's disk; at the lab's engage
@@ -124,23 +153,32 @@ class World:
             dx, dy, dtop = self.plant.geom_top(disk_geom)
             disk_centre = (dx, dy)
         except Exception:  # a scene without the disk: the robot base at the scene origin
-            dx, dy, dtop = -lab_x, -lab_y, float(_core.LAB_DISK_ENGAGE_Z_M) - self.tool_centre_offset_m
+            dx, dy, dtop = (
+                -lab_x,
+                -lab_y,
+                float(_core.LAB_DISK_ENGAGE_Z_M) - self.tool_centre_offset_m,
+            )
             disk_centre = None
         self.verdict = Verdict(disk_centre)
-        self.progress = None                 # called as the simulation goes (runner's lines)
-        self.base_in_scene = np.array([dx + lab_x, dy + lab_y,
-                                       dtop - (float(_core.LAB_DISK_ENGAGE_Z_M) - self.tool_centre_offset_m)])
-        self.tcp_offset = np.zeros(6)        # RTDE setTcp: [x, y, z, rx, ry, rz] in tool0
+        self.progress = None  # called as the simulation goes (runner's lines)
+        self.base_in_scene = np.array(
+            [
+                dx + lab_x,
+                dy + lab_y,
+                dtop - (float(_core.LAB_DISK_ENGAGE_Z_M) - self.tool_centre_offset_m),
+            ]
+        )
+        self.tcp_offset = np.zeros(6)  # RTDE setTcp: [x, y, z, rx, ry, rz] in tool0
         self.pump_duty = 0
-        self.sampling = False                # the pressure board streams after its START command
+        self.sampling = False  # the pressure board streams after its START command
         self.shutdown = False
-        self.on_idle = None                  # called by a sleep after shutdown (runner's limits)
-        self.subscribers = {}                # topic -> [(callback, args)]
-        self.published_types = {}            # topic -> message class (the master's topic list)
+        self.on_idle = None  # called by a sleep after shutdown (runner's limits)
+        self.subscribers = {}  # topic -> [(callback, args)]
+        self.published_types = {}  # topic -> message class (the master's topic list)
         self.services = {}
         self._events = []
         self._seq = 0
-        self.velocity = None                 # speedL: (v[3], until_s)
+        self.velocity = None  # speedL: (v[3], until_s)
         self.plant.set_servo(TWIN_SMOOTHING_S, SERVO_MAX_SPEED_M_S)
         self._schedule(self._pressure_packet, 1.0 / self.plant.sample_rate_hz)
         self._schedule(self._ft_packet, 1.0 / FT_RATE_HZ)
@@ -149,8 +187,14 @@ class World:
         # topics (the logger finds their types); /pwm exists once the script advertises it.
         from geometry_msgs.msg import PoseStamped, WrenchStamped
         from suction_cup.msg import SensorPacket
-        self.published_types.update({"/SensorPacket": SensorPacket, "/netft_data": WrenchStamped,
-                                     "/endEffectorPose": PoseStamped})
+
+        self.published_types.update(
+            {
+                "/SensorPacket": SensorPacket,
+                "/netft_data": WrenchStamped,
+                "/endEffectorPose": PoseStamped,
+            }
+        )
         self.logger = DataLogger(self)
         self.viewer = None
 
@@ -211,9 +255,12 @@ class World:
         if not self.pause_log:
             return None
         a = np.asarray(self.pause_log)
-        return {"pauses": int(len(a)), "build_cpu_s_median": float(np.median(a[:, 0])),
-                "draw_cpu_s_median": float(np.median(a[:, 1])),
-                "cost": "measured" if self.pause_cost_s == MEASURED else self.pause_cost_s}
+        return {
+            "pauses": int(len(a)),
+            "build_cpu_s_median": float(np.median(a[:, 0])),
+            "draw_cpu_s_median": float(np.median(a[:, 1])),
+            "cost": "measured" if self.pause_cost_s == MEASURED else self.pause_cost_s,
+        }
 
     def _step_plant(self, t_s):
         if self.velocity is not None:
@@ -240,8 +287,9 @@ class World:
     def _observe(self):
         """The trial's verdict (verdict.py) from the plant as it is now."""
         vac = self.plant.vacuum() if self.pump_duty > 0 else (0.0, 0.0, 0.0, 0.0)
-        self.verdict.add(self.plant.time, vac, self.plant.tool_position(),
-                         self.plant.force_torque()[2])
+        self.verdict.add(
+            self.plant.time, vac, self.plant.tool_position(), self.plant.force_torque()[2]
+        )
 
     def _push(self, t, fn, period):
         self._seq += 1
@@ -286,18 +334,21 @@ class World:
         if not self.sampling:
             return
         from suction_cup.msg import SensorPacket
+
         vac = self.plant.vacuum() if self.pump_duty > 0 else (0.0, 0.0, 0.0, 0.0)
         msg = SensorPacket()
         self._stamp(msg)
         msg.ch = 4
         # The board sends float32 absolute pressures; ROS hands them to Python widened.
-        msg.data = tuple(float(np.float32(AMBIENT_PA + CHAMBER_OFFSET_PA[i] - vac[i]))
-                         for i in range(4))
+        msg.data = tuple(
+            float(np.float32(AMBIENT_PA + CHAMBER_OFFSET_PA[i] - vac[i])) for i in range(4)
+        )
         self.published_types.setdefault("/SensorPacket", SensorPacket)
         self.publish("/SensorPacket", msg)
 
     def _ft_packet(self):
         from geometry_msgs.msg import WrenchStamped
+
         ft = self.plant.force_torque()
         msg = WrenchStamped()
         self._stamp(msg)
@@ -309,13 +360,18 @@ class World:
 
     def _pose_packet(self):
         from geometry_msgs.msg import PoseStamped
+
         p, q = self.tool0_in_base_link()
         msg = PoseStamped()
         self._stamp(msg)
         msg.header.frame_id = "base_link"
         msg.pose.position.x, msg.pose.position.y, msg.pose.position.z = (float(v) for v in p)
-        (msg.pose.orientation.x, msg.pose.orientation.y, msg.pose.orientation.z,
-         msg.pose.orientation.w) = (float(v) for v in q)
+        (
+            msg.pose.orientation.x,
+            msg.pose.orientation.y,
+            msg.pose.orientation.z,
+            msg.pose.orientation.w,
+        ) = (float(v) for v in q)
         self.published_types.setdefault("/endEffectorPose", PoseStamped)
         self.publish("/endEffectorPose", msg)
 

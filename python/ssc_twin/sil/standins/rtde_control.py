@@ -1,6 +1,7 @@
 """ur_rtde's rtde_control stand-in (ssc_twin.sil): the calls the lab's rtde_helper makes, served by
 the twin's arm. Poses are the TCP in the UR Base frame, [x, y, z, rx, ry, rz] (m, rotation
 vector). The twin holds the tool's orientation: commanded rotations are not realised."""
+
 import warnings
 
 from ssc_twin.sil.world import current as _world
@@ -20,8 +21,10 @@ class RTDEControlInterface:
         err = w.orientation_error_deg(pose)
         if err > 1.0 and not self._warned:
             self._warned = True
-            warnings.warn("ssc sil: the commanded tool orientation differs from the twin's by "
-                          "%.1f deg; the twin holds its orientation (positions are followed)" % err)
+            warnings.warn(
+                "ssc sil: the commanded tool orientation differs from the twin's by "
+                "%.1f deg; the twin holds its orientation (positions are followed)" % err
+            )
 
     # --- motion ---
     def moveL(self, pose, speed=0.25, acceleration=1.2, asynchronous=False):
@@ -104,8 +107,11 @@ class RTDEControlInterface:
         w = _world()
         p, R = w.tool0_in_base()
         from ssc_twin.sil.world import rotvec_from_matrix
+
         return [float(v) for v in p] + [float(v) for v in rotvec_from_matrix(R)]
 
     def __getattr__(self, name):
-        raise AttributeError("rtde_control.RTDEControlInterface.%s: not emulated by ssc_twin.sil "
-                             "(the twin's arm takes Cartesian moves: moveL, servoL, speedL)" % name)
+        raise AttributeError(
+            "rtde_control.RTDEControlInterface.%s: not emulated by ssc_twin.sil "
+            "(the twin's arm takes Cartesian moves: moveL, servoL, speedL)" % name
+        )

@@ -1,9 +1,17 @@
 """ur_rtde's rtde_receive stand-in (ssc_twin.sil): the twin arm's state."""
+
 from ssc_twin.sil.world import current as _world
 
 
 class RTDEReceiveInterface:
-    def __init__(self, hostname="", frequency=-1.0, variables=None, verbose=False, use_upper_range_registers=False):
+    def __init__(
+        self,
+        hostname="",
+        frequency=-1.0,
+        variables=None,
+        verbose=False,
+        use_upper_range_registers=False,
+    ):
         pass
 
     def getActualTCPPose(self):
@@ -15,6 +23,7 @@ class RTDEReceiveInterface:
     def getActualTCPForce(self):
         """The force at the TCP in Base (the twin's F/T reading turned into the base frame)."""
         import numpy as np
+
         w = _world()
         ft = np.asarray(w.plant.force_torque())
         R = w.tool0_rotation()
@@ -34,5 +43,7 @@ class RTDEReceiveInterface:
         pass
 
     def __getattr__(self, name):
-        raise AttributeError("rtde_receive.RTDEReceiveInterface.%s: not emulated by ssc_twin.sil "
-                             "(the twin's arm reports its TCP pose and force)" % name)
+        raise AttributeError(
+            "rtde_receive.RTDEReceiveInterface.%s: not emulated by ssc_twin.sil "
+            "(the twin's arm reports its TCP pose and force)" % name
+        )

@@ -4,6 +4,7 @@ Topics, services and time are the world's (ssc_twin.sil.world): callbacks run in
 thread while time advances (inside sleep, Rate.sleep and the robot's blocking calls), in time
 order, never concurrently. Names resolve as rospy's do for a node in the root namespace.
 """
+
 import sys as _sys
 
 from ssc_twin.sil.rostime import Duration, Time  # noqa: F401
@@ -182,8 +183,16 @@ def _make(msg_class, args, kwargs):
 
 
 class Publisher:
-    def __init__(self, name, data_class, subscriber_listener=None, tcp_nodelay=False, latch=False,
-                 headers=None, queue_size=None):
+    def __init__(
+        self,
+        name,
+        data_class,
+        subscriber_listener=None,
+        tcp_nodelay=False,
+        latch=False,
+        headers=None,
+        queue_size=None,
+    ):
         self.name = _resolve(name)
         self.resolved_name = self.name
         self.data_class = data_class
@@ -200,8 +209,16 @@ class Publisher:
 
 
 class Subscriber:
-    def __init__(self, name, data_class, callback=None, callback_args=None, queue_size=None,
-                 buff_size=65536, tcp_nodelay=False):
+    def __init__(
+        self,
+        name,
+        data_class,
+        callback=None,
+        callback_args=None,
+        queue_size=None,
+        buff_size=65536,
+        tcp_nodelay=False,
+    ):
         self.name = _resolve(name)
         self.resolved_name = self.name
         self.data_class = data_class
@@ -238,8 +255,10 @@ def _service_handler(name):
 
 def wait_for_service(service, timeout=None):
     if _service_handler(service) is None:
-        raise ROSException("timeout exceeded while waiting for service %s: the twin serves "
-                           "data_logging and the services this node advertises" % _resolve(service))
+        raise ROSException(
+            "timeout exceeded while waiting for service %s: the twin serves "
+            "data_logging and the services this node advertises" % _resolve(service)
+        )
 
 
 class ServiceProxy:
@@ -253,7 +272,9 @@ class ServiceProxy:
     def call(self, *args, **kwargs):
         handler = _service_handler(self.resolved_name)
         if handler is None:
-            raise ServiceException("service [%s] unavailable (not served by the twin)" % self.resolved_name)
+            raise ServiceException(
+                "service [%s] unavailable (not served by the twin)" % self.resolved_name
+            )
         req = _make(self.service_class._request_class, args, kwargs)
         res = handler(req)
         if isinstance(res, self.service_class._response_class):

@@ -1,4 +1,5 @@
 """std_msgs stand-ins (ssc_twin.sil)."""
+
 from ssc_twin.sil.messages import message as _m
 
 

@@ -1,4 +1,5 @@
 """The lab's suction_cup messages (msg/SensorPacket.msg, msg/cmdPacket.msg)."""
+
 from ssc_twin.sil.messages import message as _m
 from std_msgs.msg import Header
 

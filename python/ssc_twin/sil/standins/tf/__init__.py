@@ -1,4 +1,5 @@
 """tf stand-in (ssc_twin.sil): lookups of tool0 in base_link from the twin's robot."""
+
 from . import transformations  # noqa: F401
 from ssc_twin.sil.world import current as _world
 
@@ -38,6 +39,7 @@ class TransformListener:
 
     def getLatestCommonTime(self, source, dest):
         from rospy import Time
+
         return Time.from_sec(_world().ros_time_s())
 
     def lookupTransform(self, target, source, time):
@@ -47,14 +49,16 @@ class TransformListener:
             p, q = _world().tool0_in_base_link()
             return [float(v) for v in p], [float(v) for v in q]
         if (t, s) == ("tool0", "base_link"):
-            import numpy as np
             p, q = _world().tool0_in_base_link()
             T = transformations.inverse_matrix(
-                transformations.concatenate_matrices(transformations.translation_matrix(p),
-                                                     transformations.quaternion_matrix(q)))
+                transformations.concatenate_matrices(
+                    transformations.translation_matrix(p), transformations.quaternion_matrix(q)
+                )
+            )
             return list(T[:3, 3]), list(transformations.quaternion_from_matrix(T))
-        raise LookupException("the twin knows the frames base_link and tool0, not %s -> %s"
-                              % (target, source))
+        raise LookupException(
+            "the twin knows the frames base_link and tool0, not %s -> %s" % (target, source)
+        )
 
 
 class TransformBroadcaster:

@@ -1,5 +1,6 @@
 """tf.transformations stand-in: the functions of Gohlke's transformations.py the lab uses, with
 its conventions (quaternions x, y, z, w; 4x4 homogeneous matrices; axes strings such as 'sxyz')."""
+
 import math
 
 import numpy
@@ -7,12 +8,31 @@ import numpy
 _EPS = numpy.finfo(float).eps * 4.0
 _NEXT_AXIS = [1, 2, 0, 1]
 _AXES2TUPLE = {
-    'sxyz': (0, 0, 0, 0), 'sxyx': (0, 0, 1, 0), 'sxzy': (0, 1, 0, 0), 'sxzx': (0, 1, 1, 0),
-    'syzx': (1, 0, 0, 0), 'syzy': (1, 0, 1, 0), 'syxz': (1, 1, 0, 0), 'syxy': (1, 1, 1, 0),
-    'szxy': (2, 0, 0, 0), 'szxz': (2, 0, 1, 0), 'szyx': (2, 1, 0, 0), 'szyz': (2, 1, 1, 0),
-    'rzyx': (0, 0, 0, 1), 'rxyx': (0, 0, 1, 1), 'ryzx': (0, 1, 0, 1), 'rxzx': (0, 1, 1, 1),
-    'rxzy': (1, 0, 0, 1), 'ryzy': (1, 0, 1, 1), 'rzxy': (1, 1, 0, 1), 'ryxy': (1, 1, 1, 1),
-    'ryxz': (2, 0, 0, 1), 'rzxz': (2, 0, 1, 1), 'rxyz': (2, 1, 0, 1), 'rzyz': (2, 1, 1, 1)}
+    "sxyz": (0, 0, 0, 0),
+    "sxyx": (0, 0, 1, 0),
+    "sxzy": (0, 1, 0, 0),
+    "sxzx": (0, 1, 1, 0),
+    "syzx": (1, 0, 0, 0),
+    "syzy": (1, 0, 1, 0),
+    "syxz": (1, 1, 0, 0),
+    "syxy": (1, 1, 1, 0),
+    "szxy": (2, 0, 0, 0),
+    "szxz": (2, 0, 1, 0),
+    "szyx": (2, 1, 0, 0),
+    "szyz": (2, 1, 1, 0),
+    "rzyx": (0, 0, 0, 1),
+    "rxyx": (0, 0, 1, 1),
+    "ryzx": (0, 1, 0, 1),
+    "rxzx": (0, 1, 1, 1),
+    "rxzy": (1, 0, 0, 1),
+    "ryzy": (1, 0, 1, 1),
+    "rzxy": (1, 1, 0, 1),
+    "ryxy": (1, 1, 1, 1),
+    "ryxz": (2, 0, 0, 1),
+    "rzxz": (2, 0, 1, 1),
+    "rxyz": (2, 1, 0, 1),
+    "rzyz": (2, 1, 1, 1),
+}
 
 
 def _axes(axes):
@@ -54,16 +74,20 @@ def quaternion_matrix(quaternion):
         return numpy.identity(4)
     q *= math.sqrt(2.0 / nq)
     q = numpy.outer(q, q)
-    return numpy.array((
-        (1.0 - q[1, 1] - q[2, 2], q[0, 1] - q[2, 3], q[0, 2] + q[1, 3], 0.0),
-        (q[0, 1] + q[2, 3], 1.0 - q[0, 0] - q[2, 2], q[1, 2] - q[0, 3], 0.0),
-        (q[0, 2] - q[1, 3], q[1, 2] + q[0, 3], 1.0 - q[0, 0] - q[1, 1], 0.0),
-        (0.0, 0.0, 0.0, 1.0)), dtype=numpy.float64)
+    return numpy.array(
+        (
+            (1.0 - q[1, 1] - q[2, 2], q[0, 1] - q[2, 3], q[0, 2] + q[1, 3], 0.0),
+            (q[0, 1] + q[2, 3], 1.0 - q[0, 0] - q[2, 2], q[1, 2] - q[0, 3], 0.0),
+            (q[0, 2] - q[1, 3], q[1, 2] + q[0, 3], 1.0 - q[0, 0] - q[1, 1], 0.0),
+            (0.0, 0.0, 0.0, 1.0),
+        ),
+        dtype=numpy.float64,
+    )
 
 
 def quaternion_from_matrix(matrix):
     M = numpy.asarray(matrix, dtype=numpy.float64)[:4, :4]
-    q = numpy.empty((4, ), dtype=numpy.float64)
+    q = numpy.empty((4,), dtype=numpy.float64)
     t = numpy.trace(M[:3, :3]) + 1.0
     if t > 1.0 - _EPS or t > M[0, 0] + 1.0 and t > M[1, 1] + 1.0 and t > M[2, 2] + 1.0:
         q[3] = t
@@ -85,7 +109,7 @@ def quaternion_from_matrix(matrix):
     return q
 
 
-def euler_matrix(ai, aj, ak, axes='sxyz'):
+def euler_matrix(ai, aj, ak, axes="sxyz"):
     firstaxis, parity, repetition, frame = _axes(axes)
     i = firstaxis
     j = _NEXT_AXIS[i + parity]
@@ -122,7 +146,7 @@ def euler_matrix(ai, aj, ak, axes='sxyz'):
     return M
 
 
-def euler_from_matrix(matrix, axes='sxyz'):
+def euler_from_matrix(matrix, axes="sxyz"):
     firstaxis, parity, repetition, frame = _axes(axes)
     i = firstaxis
     j = _NEXT_AXIS[i + parity]
@@ -155,16 +179,16 @@ def euler_from_matrix(matrix, axes='sxyz'):
     return ax, ay, az
 
 
-def quaternion_from_euler(ai, aj, ak, axes='sxyz'):
+def quaternion_from_euler(ai, aj, ak, axes="sxyz"):
     return quaternion_from_matrix(euler_matrix(ai, aj, ak, axes))
 
 
-def euler_from_quaternion(quaternion, axes='sxyz'):
+def euler_from_quaternion(quaternion, axes="sxyz"):
     return euler_from_matrix(quaternion_matrix(quaternion), axes)
 
 
 def quaternion_about_axis(angle, axis):
-    q = numpy.zeros((4, ))
+    q = numpy.zeros((4,))
     q[:3] = axis[:3]
     qlen = numpy.linalg.norm(q)
     if qlen > _EPS:
@@ -176,16 +200,21 @@ def quaternion_about_axis(angle, axis):
 def quaternion_multiply(quaternion1, quaternion0):
     x0, y0, z0, w0 = quaternion0
     x1, y1, z1, w1 = quaternion1
-    return numpy.array((
-        x1 * w0 + y1 * z0 - z1 * y0 + w1 * x0,
-        -x1 * z0 + y1 * w0 + z1 * x0 + w1 * y0,
-        x1 * y0 - y1 * x0 + z1 * w0 + w1 * z0,
-        -x1 * x0 - y1 * y0 - z1 * z0 + w1 * w0), dtype=numpy.float64)
+    return numpy.array(
+        (
+            x1 * w0 + y1 * z0 - z1 * y0 + w1 * x0,
+            -x1 * z0 + y1 * w0 + z1 * x0 + w1 * y0,
+            x1 * y0 - y1 * x0 + z1 * w0 + w1 * z0,
+            -x1 * x0 - y1 * y0 - z1 * z0 + w1 * w0,
+        ),
+        dtype=numpy.float64,
+    )
 
 
 def quaternion_conjugate(quaternion):
-    return numpy.array((-quaternion[0], -quaternion[1], -quaternion[2], quaternion[3]),
-                       dtype=numpy.float64)
+    return numpy.array(
+        (-quaternion[0], -quaternion[1], -quaternion[2], quaternion[3]), dtype=numpy.float64
+    )
 
 
 def quaternion_inverse(quaternion):
@@ -199,8 +228,14 @@ def rotation_matrix(angle, direction, point=None):
     R = numpy.array(((cosa, 0.0, 0.0), (0.0, cosa, 0.0), (0.0, 0.0, cosa)), dtype=numpy.float64)
     R += numpy.outer(direction, direction) * (1.0 - cosa)
     direction *= sina
-    R += numpy.array(((0.0, -direction[2], direction[1]), (direction[2], 0.0, -direction[0]),
-                      (-direction[1], direction[0], 0.0)), dtype=numpy.float64)
+    R += numpy.array(
+        (
+            (0.0, -direction[2], direction[1]),
+            (direction[2], 0.0, -direction[0]),
+            (-direction[1], direction[0], 0.0),
+        ),
+        dtype=numpy.float64,
+    )
     M = numpy.identity(4)
     M[:3, :3] = R
     if point is not None:
@@ -231,8 +266,10 @@ def random_quaternion(rand=None):
     rand = numpy.random.rand(3) if rand is None else rand
     r1, r2 = numpy.sqrt(1.0 - rand[0]), numpy.sqrt(rand[0])
     t1, t2 = 2 * math.pi * rand[1], 2 * math.pi * rand[2]
-    return numpy.array((numpy.sin(t1) * r1, numpy.cos(t1) * r1, numpy.sin(t2) * r2,
-                        numpy.cos(t2) * r2), dtype=numpy.float64)
+    return numpy.array(
+        (numpy.sin(t1) * r1, numpy.cos(t1) * r1, numpy.sin(t2) * r2, numpy.cos(t2) * r2),
+        dtype=numpy.float64,
+    )
 
 
 def quaternion_slerp(quat0, quat1, fraction, spin=0, shortestpath=True):
