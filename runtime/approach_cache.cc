@@ -83,6 +83,13 @@ void ApproachCache::Offer(const ApproachKey& key, const mjData* d, const FollowS
   entries_.emplace(key, std::move(entry));  // a concurrent first publisher keeps its entry
 }
 
+bool TrialMayShareApproach(const ContourTrial& trial) {
+  // Callbacks that could read the pressures into the physics (mjcb_control is the trials').
+  const bool callbacks = mjcb_passive || mjcb_act_dyn || mjcb_act_gain || mjcb_act_bias ||
+                         mjcb_sensor || mjcb_contactfilter;
+  return !callbacks && !trial.ControllerObservesApproach();
+}
+
 TrialResult RunTrialShared(const mjModel* m, const TrialConfig& config, ApproachCache* cache,
                            std::string* error) {
   if (cache == nullptr || cache->model() != m) return RunTrial(m, config, false, error);
@@ -91,11 +98,7 @@ TrialResult RunTrialShared(const mjModel* m, const TrialConfig& config, Approach
   auto trial = CreateTrialWithData(m, config, false, &data, &failed, error);
   if (!trial) return failed;
   trial->SetResultOnly(true);  // the data dies here (the cache copies it before Run)
-  // Callbacks that could read the pressures into the physics (mjcb_control is the trials').
-  const bool callbacks = mjcb_passive || mjcb_act_dyn || mjcb_act_gain || mjcb_act_bias ||
-                         mjcb_sensor || mjcb_contactfilter;
-  // A controller that reads the approach needs it simulated with its own seed's readings.
-  if (!cache->unshareable_reason().empty() || callbacks || trial->ControllerObservesApproach()) {
+  if (!cache->unshareable_reason().empty() || !TrialMayShareApproach(*trial)) {
     cache->Count(&ApproachCache::Counts::unshared);
     return trial->Run();
   }

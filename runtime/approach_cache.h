@@ -43,6 +43,12 @@ ApproachKey ApproachKeyOf(const TrialConfig& c);
 // Why trials on `m` cannot share their approach ("" when they can).
 std::string ApproachUnshareableReason(const mjModel* m);
 
+// Whether `trial` may start from (or publish) a shared approach now, given that its model's
+// reason above is empty: no MuJoCo callback besides mjcb_control that could read the pressures
+// into the physics, and a controller that does not read the approach (it needs its own seed's
+// readings).
+bool TrialMayShareApproach(const ContourTrial& trial);
+
 // The follow starts of one model, shared by the threads of a study; built once per approach.
 class ApproachCache {
  public:

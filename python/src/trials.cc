@@ -77,13 +77,9 @@ class SteppedTrial {
     trial_->SetExternalPolicy(on, controller_in_loop);
   }
   std::array<double, 2> ControllerStep() const { return trial_->controller_command().step_m; }
-  // As RunTrialShared decides: the one pressure plugin, no callbacks that could feed the
-  // pressures into the physics, and a controller that does not read the approach.
+  // As RunTrialShared decides (runtime/approach_cache.h).
   bool CanShareApproach() const {
-    const bool callbacks = mjcb_passive || mjcb_act_dyn || mjcb_act_gain || mjcb_act_bias ||
-                           mjcb_sensor || mjcb_contactfilter;
-    return ApproachUnshareableReason(model_).empty() && !callbacks &&
-           !trial_->ControllerObservesApproach();
+    return ApproachUnshareableReason(model_).empty() && TrialMayShareApproach(*trial_);
   }
   bool RunToNextIteration() {
     bool more = false;
