@@ -54,6 +54,13 @@ def parse(p):
         metavar="KEY=VALUE",
         help="a skirt parameter of tools/make_flex_tool.py (repeatable)",
     )
+    p.add_argument(
+        "--option",
+        action="append",
+        default=[],
+        metavar="KEY=VALUE",
+        help="a MuJoCo <option> field for both cups, e.g. iterations=10 (the flex scenes' cap)",
+    )
     p.add_argument("--frames", help="write PNG frames to this directory")
     p.add_argument("--frame-mm", type=float, default=2.0, help="set-point travel between frames")
     p.add_argument("--size", default="640x400", help="frame WIDTHxHEIGHT, px")
@@ -72,6 +79,13 @@ def parse(p):
         p.error("--elevation: in [-89, 89] deg")
     if not 0.2 <= a.frame_mm <= 10:
         p.error("--frame-mm: in [0.2, 10] mm")
+    a.options = {}
+    for item in a.option:
+        key, _, text = item.partition("=")
+        try:
+            a.options[key] = float(text)
+        except ValueError:
+            p.error(f"--option {item!r}: expected KEY=NUMBER")
     try:
         a.width, a.height = (int(v) for v in a.size.split("x"))
     except ValueError:
@@ -137,6 +151,15 @@ def main():
     import flex_rig
 
     mujoco, rig_module = flex_rig.load(argparse.ArgumentParser())
+    for key in a.options:
+        if not hasattr(mujoco.MjOption(), key):
+            sys.exit(f"corner_push.py: --option {key}: not a MuJoCo option field")
+
+    def with_options(rig):
+        for key, number in a.options.items():
+            setattr(rig.m.opt, key, type(getattr(rig.m.opt, key))(number))
+        return rig
+
     tool, variant = "ssc_tool_flex.xml", None
     params = rig_module.skirt_parameters()
     if a.set:
@@ -153,7 +176,7 @@ def main():
         rig_module.skirt_parameters = lambda: params
     throat_m = params["throat_radius_mm"] * 1e-3
     try:
-        rig = rig_module.Rig(rig_module.concave_corner(), tool=tool)
+        rig = with_options(rig_module.Rig(rig_module.concave_corner(), tool=tool))
         rig.press_to_preload(a.from_mm * 1e-3, y_m=INSET_M)
         frames = Frames(mujoco, rig, a) if a.frames else None
         inside, lowest = state(np, rig, throat_m)
@@ -187,7 +210,7 @@ def main():
         inside, lowest = state(np, rig, throat_m)
         if frames:
             print(frames.save("held"))
-        lowered = rig_module.Rig(rig_module.concave_corner(), tool=tool)
+        lowered = with_options(rig_module.Rig(rig_module.concave_corner(), tool=tool))
         lowered.press_to_preload(rig.d.qpos[0], y_m=INSET_M)
         print(
             f"held at x {1e3 * rig.d.qpos[0]:+.2f} mm: chambers pushed "

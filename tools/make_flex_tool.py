@@ -98,9 +98,15 @@ SKIRT = {
         5,
         "",
         "vertex rings from the pinned throat to the rim: 4 rows of elements across "
-        "the 6 mm span, so a lobe can fold (cost grows with rings x sectors)",
+        "the 6 mm span, so a lobe can fold; at 4 rings (3 rows) the corner push no longer "
+        "blocks the facing chamber (docs/flex_skirt.md; cost grows with rings x sectors)",
     ),
-    "sectors": (24, "", "vertices per ring: 3 mm apart on the rim, 1.4 mm at the throat"),
+    "sectors": (
+        24,
+        "",
+        "vertices per ring: 3 mm apart on the rim, 1.4 mm at the throat; at 16 the corner "
+        "push's lobe is too coarse to cover the facing chamber (docs/flex_skirt.md)",
+    ),
 }
 
 
