@@ -1,14 +1,18 @@
 #!/usr/bin/env python3
 """Markdown table of object trials, one row per object over its seeds (docs/objects.md).
 
-usage: objects_table.py OBJECTS_CSV [OBJECTS_CSV ...] [--against OBJECTS_CSV] [--label TEXT]
+usage: objects_table.py OBJECTS_CSV [OBJECTS_CSV ...] [--against OBJECTS_CSV ...] [--label TEXT]
+                        [--interval] [--disagree]
        objects_table.py --fillet-profile FILLET_PROFILE_CSV [FILLET_PROFILE_CSV ...]
 
 Reads the objects.csv files of `ssc objects` (rows of one object may be spread over several
 files, e.g. runs of one seed each) and prints per object: the outcomes over its seeds, where
 each trial ended (mm along the edge for open edges, degrees swept for closed ones; the fillet
 also its radius there) as mean +- sd with the per-seed values, and, with --against (another
-tier's objects.csv), that tier's outcomes and ends beside them.
+tier's objects.csv files, repeatable), that tier's outcomes and ends beside them. --interval adds
+the 95 % Student-t interval of the mean end (3 or more seeds). --disagree prints instead, per
+object, whether the two tiers disagree (DISAGREE_RULE below), the evidence `--scene-kind auto`
+is decided from (studies/object_trials.cc).
 
 With --fillet-profile, the fillet's along-edge profiles instead (fillet_profile.csv of `ssc
 objects`, one per seed): per stretch along the edge, the mean fillet radius, mean P and |dP| of
@@ -49,14 +53,12 @@ def end_value(r):
 
 
 def outcomes(trials):
-    counts = {}
-    for r in trials:
-        counts[r["outcome"]] = counts.get(r["outcome"], 0) + 1
+    counts = outcomes_count(trials)
     n = len(trials)
     return ", ".join(f"`{o}` {c}/{n}" if n > 1 else f"`{o}`" for o, c in counts.items())
 
 
-def ends(trials):
+def ends(trials, interval=False):
     values = [end_value(r) for r in trials]
     unit = values[0][1]
     v = [x for x, _ in values]
@@ -67,6 +69,9 @@ def ends(trials):
             + ", ".join(f"{x:.1f}" for x in v)
             + ")"
         )
+    if interval and len(v) >= 3:
+        lo, hi = t_interval(v)
+        text += f", 95 % t interval {lo:.1f}–{hi:.1f}"
     radii = [float(r.get("end_fillet_radius_mm", -1)) for r in trials]
     if all(x >= 0 for x in radii):
         text += (
@@ -75,6 +80,55 @@ def ends(trials):
             else f"; radius {radii[0]:.2f} mm"
         )
     return text
+
+
+def t_interval(v):
+    """The 95 % Student-t interval of the mean of v (len >= 2)."""
+    from scipy import stats  # a project requirement (requirements.txt)
+
+    half = stats.t.ppf(0.975, len(v) - 1) * statistics.stdev(v) / len(v) ** 0.5
+    return statistics.mean(v) - half, statistics.mean(v) + half
+
+
+# Two tiers disagree on an object when their outcomes over the seeds differ (counts of each
+# outcome), or, when they are not all `success`, their ends differ by more than END_TOLERANCE of
+# the unit and the 95 % Welch interval of the difference of the mean ends excludes 0.
+END_TOLERANCE = {"mm": 2.0, "deg": 5.0}
+DISAGREE_RULE = (
+    "outcomes differ over the seeds, or (not all success) the mean ends differ by more than "
+    "2 mm / 5 deg with the 95 % Welch interval of the difference excluding 0"
+)
+
+
+def disagreement(trials, other):
+    """'' when the tiers agree on the object, else why they do not."""
+    mine, theirs = outcomes_count(trials), outcomes_count(other)
+    if mine != theirs:
+        return "outcome"
+    if set(mine) == {"success"}:
+        return ""
+    a, b = [end_value(r)[0] for r in trials], [end_value(r)[0] for r in other]
+    unit = end_value(trials[0])[1]
+    diff = statistics.mean(a) - statistics.mean(b)
+    if abs(diff) <= END_TOLERANCE[unit]:
+        return ""
+    if len(a) < 2 or len(b) < 2:
+        return f"end ({diff:+.1f} {unit})"
+    from scipy import stats
+
+    va, vb = statistics.variance(a) / len(a), statistics.variance(b) / len(b)
+    if va + vb == 0:
+        return f"end ({diff:+.1f} {unit})"
+    df = (va + vb) ** 2 / (va**2 / (len(a) - 1) + vb**2 / (len(b) - 1))
+    half = stats.t.ppf(0.975, df) * (va + vb) ** 0.5
+    return f"end ({diff:+.1f} ± {half:.1f} {unit})" if abs(diff) > half else ""
+
+
+def outcomes_count(trials):
+    counts = {}
+    for r in trials:
+        counts[r["outcome"]] = counts.get(r["outcome"], 0) + 1
+    return counts
 
 
 FILLET_STRETCHES_MM = [(10, 40), (40, 70), (70, 100), (100, 130), (130, 160)]
@@ -129,6 +183,22 @@ def fillet_profile_table(paths):
     return 0
 
 
+def disagreement_table(rows, against, args):
+    print(f"| object | seeds ({args.label} / {args.against_label}) | the tiers |")
+    print("| --- | --- | --- |")
+    for name, trials in rows.items():
+        other = against.get(name)
+        if not other:
+            verdict = "not run in both"
+            counts = f"{len(trials)} / 0"
+        else:
+            why = disagreement(trials, other)
+            verdict = f"**disagree**: {why}" if why else "agree"
+            counts = f"{len(trials)} / {len(other)}"
+        print(f"| {name} | {counts} | {verdict} |")
+    return 0
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument(
@@ -141,7 +211,20 @@ def main(argv):
         action="store_true",
         help="the fillet's along-edge profile over seeds instead",
     )
-    parser.add_argument("--against", help="another tier's objects.csv, shown beside")
+    parser.add_argument(
+        "--against",
+        action="append",
+        default=[],
+        help="another tier's objects.csv, shown beside (repeatable: its seeds' files)",
+    )
+    parser.add_argument(
+        "--interval", action="store_true", help="the 95 %% t interval of the mean end too"
+    )
+    parser.add_argument(
+        "--disagree",
+        action="store_true",
+        help="per object, whether the tiers disagree (needs --against)",
+    )
     parser.add_argument("--label", default="flex", help="name of the first tier's columns")
     parser.add_argument(
         "--against-label", default="segment (gantry)", help="name of the --against tier's columns"
@@ -150,17 +233,21 @@ def main(argv):
     if args.fillet_profile:
         return fillet_profile_table(args.csv)
     rows = read_rows(args.csv)
-    against = read_rows([args.against]) if args.against else {}
+    against = read_rows(args.against) if args.against else {}
+    if args.disagree:
+        if not args.against:
+            parser.error("--disagree needs --against")
+        return disagreement_table(rows, against, args)
     head = ["object", "seeds", f"{args.label}: outcome", f"{args.label}: end"]
     if args.against:
         head += [f"{args.against_label}: outcome", f"{args.against_label}: end"]
     print("| " + " | ".join(head) + " |")
     print("| " + " | ".join("---" for _ in head) + " |")
     for name, trials in rows.items():
-        cells = [name, str(len(trials)), outcomes(trials), ends(trials)]
+        cells = [name, str(len(trials)), outcomes(trials), ends(trials, args.interval)]
         if args.against:
             other = against.get(name)
-            cells += [outcomes(other), ends(other)] if other else ["not run", ""]
+            cells += [outcomes(other), ends(other, args.interval)] if other else ["not run", ""]
         print("| " + " | ".join(cells) + " |")
     return 0
 

@@ -89,6 +89,54 @@ class ObjectsTableTest(unittest.TestCase):
         hole = next(line for line in lines if line.startswith("| hole_d02"))
         self.assertIn("not run", hole)
 
+    def test_the_t_interval_of_the_mean_end(self):
+        d = self.dir.name
+        path = write(
+            os.path.join(d, "f.csv"),
+            [
+                ["fillet", "fillet", k, "lost_edge", end, 0, 14.0, ""]
+                for k, end in [(1, 130.0), (2, 140.0), (3, 150.0)]
+            ],
+        )
+        fillet = run([path, "--interval"])[2]
+        # mean 140, sd 10, t(0.975, 2) 4.303: 140 +- 24.8
+        self.assertIn("140.0 ± 10.0 mm (130.0, 140.0, 150.0), 95 % t interval 115.2–164.8", fillet)
+        self.assertNotIn("t interval", run([self.seed2, self.seed1, "--interval"])[2])
+
+    def test_where_the_tiers_disagree(self):
+        d = self.dir.name
+        flex = write(
+            os.path.join(d, "flex.csv"),
+            [["fillet", "fillet", k, "lost_edge", 140.0 + k, 0, 14.0, ""] for k in (1, 2, 3)]
+            + [
+                ["corner_a030", "corner", k, "lost_edge", 34.0 + 0.1 * k, 0, -1, ""]
+                for k in (1, 2, 3)
+            ]
+            + [["corner_a015", "corner", k, "lost_edge", 5.0 + k, 0, -1, ""] for k in (1, 2, 3)]
+            + [["hole_d02", "hole", k, "success", -1, -400.0, -1, ""] for k in (1, 2, 3)],
+        )
+        gantry = [
+            write(
+                os.path.join(d, f"g{k}.csv"),
+                [
+                    ["fillet", "fillet", k, "success", 170.0, 0, 15.7, ""],
+                    ["corner_a030", "corner", k, "lost_edge", 34.5 + 0.1 * k, 0, -1, ""],
+                    ["corner_a015", "corner", k, "lost_edge", 1.0 + 0.1 * k, 0, -1, ""],
+                    ["hole_d02", "hole", k, "success", -1, -380.0, -1, ""],
+                ],
+            )
+            for k in (1, 2, 3)
+        ]
+        argv = [flex, "--disagree"] + sum((["--against", g] for g in gantry), [])
+        rows = {line.split(" | ")[0].lstrip("| "): line for line in run(argv)[2:]}
+        self.assertIn("**disagree**: outcome", rows["fillet"])
+        self.assertTrue(rows["corner_a030"].endswith("| agree |"))  # 0.4 mm apart
+        self.assertIn("**disagree**: end (+5.8", rows["corner_a015"])
+        self.assertTrue(rows["hole_d02"].endswith("| agree |"))  # all success
+        self.assertIn("| 3 / 3 |", rows["hole_d02"])
+        with self.assertRaises(SystemExit):
+            run([flex, "--disagree"])
+
     def test_fillet_profile_per_stretch_over_seeds(self):
         d = self.dir.name
         paths = []
