@@ -72,11 +72,20 @@ std::string EdgeProbe3d::CheckStudyLayout() {
   mpos[2] += 10;
   mj_kinematics(m, d);
   constexpr double kRayStartZ = 0.2, kTolM = 5e-4;
-  auto top_z = [&](double x, double y) {  // -inf where nothing static is below
-    const mjtNum from[3] = {x, y, kRayStartZ}, down[3] = {0, 0, -1};
-    int geom = -1;
-    const mjtNum dist = mj_ray(m, d, from, down, nullptr, 1, -1, &geom, nullptr);
-    return dist < 0 ? -std::numeric_limits<double>::infinity() : kRayStartZ - dist;
+  // The highest geom welded to the world below (x, y); -inf where there is none. A tool held to
+  // the mocap body by a constraint (the flex scene's chamber body) stays where it is, so the rays
+  // pass through whatever moves.
+  auto top_z = [&](double x, double y) {
+    mjtNum from[3] = {x, y, kRayStartZ};
+    const mjtNum down[3] = {0, 0, -1};
+    for (int hop = 0; hop < 64; ++hop) {
+      int geom = -1;
+      const mjtNum dist = mj_ray(m, d, from, down, nullptr, 1, -1, &geom, nullptr);
+      if (dist < 0 || geom < 0) break;
+      if (m->body_weldid[m->geom_bodyid[geom]] == 0) return from[2] - dist;
+      from[2] -= dist + 1e-6;
+    }
+    return -std::numeric_limits<double>::infinity();
   };
   const double r = kBenchmarkDiskRadiusM, cx = kProbeDiskCentreXM, in = 0.005;
   struct Point {

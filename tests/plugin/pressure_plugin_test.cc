@@ -13,6 +13,7 @@
 
 #include "geometry/dimensions.h"
 #include "runtime/mujoco_model.h"
+#include "runtime/rig.h"
 #include "studies/edge_probe.h"
 #include "studies/tool_variants.h"
 
@@ -57,6 +58,22 @@ TEST(PressurePluginTest, CupInAirReadsTheOpenCupValue) {
     EXPECT_NEAR(r.static_pa[c], 0.2527, 0.0005) << "chamber " << c + 1;
   }
   EXPECT_NEAR(r.pbar_pa, r.static_pbar_pa, kMeanNoiseBandPa);
+}
+
+// Every probe tier's scene has the study's layout: the check looks through the tool, including
+// a flex tool held to its mocap body by a constraint (it stays over the plate when lifted).
+TEST(PressurePluginTest, EveryProbeTiersSceneHasTheStudysLayout) {
+  int probes = 0;
+  for (const RigTier& tier : RigTiers()) {
+    if (tier.kind != RigKind::kProbe) continue;
+    ++probes;
+    std::string error;
+    auto probe =
+        EdgeProbe3d::Create(SourceDir() + "/scenes/" + std::string(tier.scene) + ".xml", &error);
+    ASSERT_TRUE(probe) << tier.scene << ": " << error;
+    EXPECT_EQ(probe->CheckStudyLayout(), "") << tier.scene;
+  }
+  EXPECT_GE(probes, 2);  // the segment lip's and the flex skirt's
 }
 
 TEST(PressurePluginTest, CupOnPlateReadsTheSealedValueInEveryChamber) {
