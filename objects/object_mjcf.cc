@@ -121,7 +121,34 @@ void BuildObjectDocument(const ObjectSpec& spec, XMLDocument* doc) {
   }
 }
 
-// A scene from a repository scene: its comment replaced, the disk removed, the object file
+// Where a scene's file `holder` (the template itself or a file it includes) holds the geom
+// named "disk": "" when it does not; "alone" when the disk is all the file holds (an include of
+// the disk, removed whole); "shared" when the file holds other elements too.
+std::string DiskIn(const fs::path& holder) {
+  XMLDocument doc;
+  if (doc.LoadFile(holder.c_str()) != tinyxml2::XML_SUCCESS) return "";
+  bool disk = false;
+  int others = 0;
+  std::vector<const XMLElement*> stack = {doc.FirstChildElement("mujoco")};
+  while (!stack.empty() && stack.back() != nullptr) {
+    const XMLElement* e = stack.back();
+    stack.pop_back();
+    const char* name = e->Attribute("name");
+    const std::string tag = e->Name();
+    if (tag == "geom" && name && std::string(name) == "disk") {
+      disk = true;
+    } else if (tag != "mujoco" && tag != "worldbody") {
+      ++others;
+    }
+    for (const XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+      stack.push_back(c);
+    }
+  }
+  return !disk ? "" : others == 0 ? "alone" : "shared";
+}
+
+// A scene from a repository scene: its comment replaced, the disk removed (the geom, or the
+// <include> of a file that holds the disk alone: scenes/parts/disk.xml), the object file
 // included, model paths made relative to the output directory.
 bool WriteSceneFromTemplate(const ObjectSpec& spec, const fs::path& template_path,
                             const fs::path& out_dir, const std::string& object_file,
@@ -151,6 +178,16 @@ bool WriteSceneFromTemplate(const ObjectSpec& spec, const fs::path& template_pat
     stack.pop_back();
     const std::string tag = e->Name();
     const char* file = e->Attribute("file");
+    if (file && tag == "include") {
+      const std::string disk = DiskIn(template_dir / file);
+      if (disk == "alone") remove.push_back(e);
+      if (disk == "shared") {
+        *error = (template_dir / file).string() +
+                 ": holds the geom named 'disk' among other elements; a test object replaces a "
+                 "disk geom in the scene or an <include> of a file that holds the disk alone";
+        return false;
+      }
+    }
     if (file && (tag == "include" || tag == "model")) {
       e->SetAttribute("file", RelativePath(template_dir / file, out_dir).c_str());
     }
@@ -159,7 +196,7 @@ bool WriteSceneFromTemplate(const ObjectSpec& spec, const fs::path& template_pat
     for (XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) stack.push_back(c);
   }
   if (remove.empty()) {
-    *error = template_path.string() + ": no geom named 'disk' to replace";
+    *error = template_path.string() + ": no geom named 'disk' (nor an <include> of it) to replace";
     return false;
   }
   for (XMLElement* e : remove) e->Parent()->DeleteChild(e);

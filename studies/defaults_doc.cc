@@ -1,10 +1,14 @@
 #include "studies/defaults_doc.h"
 
+#include <filesystem>
 #include <sstream>
 
+#include "common/scene_files.h"
 #include "controller/pure/contour_law.h"
 #include "controller/trial/robot_effects.h"
 #include "geometry/dimensions.h"
+#include "runtime/mujoco_model.h"
+#include "runtime/rig.h"
 #include "runtime/trial.h"
 #include "studies/success_map_fit.h"
 
@@ -23,6 +27,54 @@ std::string FitRange(const std::string& key) {
     }
   }
   return "-";
+}
+
+const char* UseText(RigUse use) {
+  switch (use) {
+    case RigUse::kTrial:
+      return "**every trial entry point**";
+    case RigUse::kReference:
+      return "the reference (`ssc equivalence`, the charts' arm rows)";
+    case RigUse::kReplay:
+      return "`ssc compare`'s replay";
+    case RigUse::kProbe:
+      return "`ssc probe`";
+    case RigUse::kNone:
+      break;
+  }
+  return "-";
+}
+
+// The files a tier's scene file itself names (<include>, <model>), as paths in the repository.
+std::string BuiltFrom(const RigTier& t) {
+  namespace fs = std::filesystem;
+  const fs::path scenes = fs::path(ResourceDir()) / "scenes";
+  const fs::path scene = scenes / (std::string(t.scene) + ".xml");
+  std::string files;
+  WalkSceneFiles(scene, [&](const SceneFileRef& ref) {
+    if (ref.from == scene && (ref.tag == "include" || ref.tag == "model")) {
+      const fs::path in_repo = (fs::path("scenes") / ref.name).lexically_normal();
+      files += (files.empty() ? "`" : ", `") + in_repo.string() + "`";
+    }
+    return std::string();
+  });
+  return files;
+}
+
+std::string TiersMarkdown() {
+  std::ostringstream os;
+  os << "## Scene tiers (`RigTiers()`, runtime/rig.cc)\n\n"
+        "Each tier's file under scenes/ says what differs; what tiers share lives in\n"
+        "scenes/parts/ (MuJoCo's `<include>`). Why and when to run each: "
+        "[scenes.md](scenes.md).\n\n"
+        "| tier | scene | kind | step | default of | what | built from |\n"
+        "| --- | --- | --- | --- | --- | --- | --- |\n";
+  for (const RigTier& t : RigTiers()) {
+    os << "| `" << t.name << "` | `" << t.scene << "` | " << RigKindName(t.kind) << " | "
+       << t.timestep_s * 1e3 << " ms | " << UseText(t.default_for) << " | " << t.what << " | "
+       << BuiltFrom(t) << " |\n";
+  }
+  return os.str();
 }
 
 }  // namespace
@@ -80,6 +132,7 @@ std::string DefaultsMarkdown() {
     }
     os << " | " << k.what << " |\n";
   }
+  os << "\n" << TiersMarkdown();
   return os.str();
 }
 

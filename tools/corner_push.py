@@ -163,16 +163,16 @@ def main():
     tool, variant = "ssc_tool_flex.xml", None
     params = rig_module.skirt_parameters()
     if a.set:
-        # The rig names the tool inside models/ (and picks the flex integrator by its name).
-        fd, variant = tempfile.mkstemp(prefix="flex_push_", suffix=".xml", dir=ROOT / "models")
-        os.close(fd)
-        cmd = [sys.executable, str(ROOT / "tools" / "make_flex_tool.py"), "--out", variant]
+        # In a folder of its own: the repository's models/ holds the scenes' models only (the
+        # rig takes a path, and picks the flex integrator by the name).
+        variant = tempfile.TemporaryDirectory(prefix="flex_push_")
+        tool = os.path.join(variant.name, "ssc_tool_flex_variant.xml")
+        cmd = [sys.executable, str(ROOT / "tools" / "make_flex_tool.py"), "--out", tool]
         for item in a.set:
             cmd += ["--set", item]
             key, _, text = item.partition("=")
             params[key] = float(text) if key in params else params.get(key)
         subprocess.run(cmd, check=True)
-        tool = os.path.basename(variant)
         rig_module.skirt_parameters = lambda: params
     throat_m = params["throat_radius_mm"] * 1e-3
     try:
@@ -221,7 +221,7 @@ def main():
         )
     finally:
         if variant:
-            os.remove(variant)
+            variant.cleanup()
 
 
 if __name__ == "__main__":

@@ -74,13 +74,13 @@ def main():
             p.error(f"--option {key}: not a MuJoCo option field")
     tool, variant = "ssc_tool_flex.xml", None
     if a.set:
-        fd, variant = tempfile.mkstemp(prefix="flex_edge_", suffix=".xml", dir=ROOT / "models")
-        os.close(fd)
-        cmd = [sys.executable, str(ROOT / "tools" / "make_flex_tool.py"), "--out", variant]
+        # In a folder of its own: the repository's models/ holds the scenes' models only.
+        variant = tempfile.TemporaryDirectory(prefix="flex_edge_")
+        tool = os.path.join(variant.name, "ssc_tool_flex_variant.xml")
+        cmd = [sys.executable, str(ROOT / "tools" / "make_flex_tool.py"), "--out", tool]
         for item in a.set:
             cmd += ["--set", item]
         subprocess.run(cmd, check=True)
-        tool = os.path.basename(variant)
     edge = rig_module.box((0.05, 0.025, 0.005), (0, -0.025, -0.005))  # the plate covers y < 0
     try:
         for inside in insets:
@@ -117,7 +117,7 @@ def main():
             print(line, flush=True)
     finally:
         if variant:
-            os.remove(variant)
+            variant.cleanup()
 
 
 if __name__ == "__main__":

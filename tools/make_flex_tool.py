@@ -325,6 +325,8 @@ def tool_xml(walls=True, vacuum_load=True):
 def main():
     check, overrides, variant_out = parse_args(sys.argv[1:])
     if variant_out:
+        if pathlib.Path(variant_out).resolve().parent == (ROOT / "models").resolve():
+            sys.exit(f"--out {variant_out}: write variants outside models/ (e.g. under out/)")
         for key, number in overrides.items():
             SKIRT[key] = (number,) + SKIRT[key][1:]
         text = tool_xml()

@@ -714,12 +714,13 @@ def owned_rerun(tune, option, value):
 def two_cups(folder):
     with open(os.path.join(SRC, "scenes", "disk_benchmark_gantry.xml")) as f:
         xml = f.read()
-    attach = '<attach model="ssc_tool" body="tool" prefix="ssc_"/>'
-    xml = xml.replace(attach, attach + '<attach model="ssc_tool" body="tool" prefix="two_"/>')
+    # The gantry scene written elsewhere: its parts and models by absolute paths.
     xml = xml.replace('file="../models/', 'file="%s/models/' % SRC)
-    start, end = xml.index("<keyframe>"), xml.index("</keyframe>") + len("</keyframe>")
+    xml = xml.replace('file="parts/', 'file="%s/scenes/parts/' % SRC)
+    second = '<body name="two" pos="0.3 0 0.3"><attach model="ssc_tool" body="tool" prefix="two_"/>'
+    xml = xml.replace("</mujoco>", f"<worldbody>{second}</body></worldbody></mujoco>")
     with open(os.path.join(folder, "two.xml"), "w") as f:
-        f.write(xml[:start] + xml[end:])
+        f.write(xml)
     return "two.xml"
 
 

@@ -531,16 +531,12 @@ class ReliabilityTest(unittest.TestCase):
     # Results that cannot be right are refused.
 
     def test_a_scene_with_two_cups_is_refused(self):
-        with open(os.path.join(SRC, "scenes", "disk_benchmark_gantry.xml")) as f:
-            xml = f.read()
-        attach = '<attach model="ssc_tool" body="tool" prefix="ssc_"/>'
-        self.assertIn(attach, xml)
-        xml = xml.replace(attach, attach + '<attach model="ssc_tool" body="tool" prefix="two_"/>')
-        start, end = xml.index("<keyframe>"), xml.index("</keyframe>") + len("</keyframe>")
-        path = os.path.join(SRC, "scenes", ".reliability_%d_two_cups.xml" % os.getpid())
-        with open(path, "w") as f:
-            f.write(xml[:start] + xml[end:])
-        self.scenes.append(path)
+        second = (
+            '<body name="two" pos="0.3 0 0.3"><attach model="ssc_tool" body="tool" prefix="two_"/>'
+        )
+        path = self.scene_with(
+            "</mujoco>", f"<worldbody>{second}</body></worldbody></mujoco>", "two"
+        )
         r = run(["trial", "--scene", path, "--out", os.path.join(self.tmp, "two_cups")])
         self.assertEqual(r.returncode, 4, r.stdout)
         self.assertIn("2 ssc.chamber_pressure sensors", r.stderr)
@@ -635,7 +631,10 @@ class ReliabilityTest(unittest.TestCase):
         self.assertIn("not a regular file", r.stderr)
 
     def test_a_nan_in_the_scene_is_refused_naming_the_element(self):
-        scene = self.scene_with('pos="0.65 0 0.005"', 'pos="nan 0 0.005"', "nan_disk")
+        disk = '<geom name="disk" type="cylinder" size="0.035 0.005" pos="nan 0 0.005"/>'
+        scene = self.scene_with(
+            '<include file="parts/disk.xml"/>', f"<worldbody>{disk}</worldbody>", "nan_disk"
+        )
         r = run(["trial", "--no-plot", "--scene", scene, "--out", self.tmp], timeout=60)
         self.assertEqual(r.returncode, 4, r.stderr)
         self.assertIn("geom 'disk': geom_pos holds nan", r.stderr)

@@ -332,6 +332,25 @@ TEST(ObjectFilesTest, EveryFileLoadsAndOutputIsDeterministic) {
   fs::remove_all(again);
 }
 
+// A template's disk is a geom in it or an <include> of a file that holds the disk alone
+// (scenes/parts/disk.xml); an included file that holds the disk among other elements cannot
+// lose the disk alone and is refused, naming the file.
+TEST(ObjectFilesTest, AnIncludeThatHoldsTheDiskAmongOtherElementsIsRefused) {
+  const fs::path repo = fs::temp_directory_path() / ("ssc_templates_" + std::to_string(::getpid()));
+  fs::create_directories(repo / "scenes" / "parts");
+  std::ofstream(repo / "scenes" / "bench.xml")
+      << "<mujoco><include file=\"parts/world.xml\"/></mujoco>";
+  std::ofstream(repo / "scenes" / "parts" / "world.xml")
+      << "<mujoco><worldbody><geom name=\"table\" type=\"plane\" size=\"1 1 0.01\"/>"
+         "<geom name=\"disk\" type=\"cylinder\" size=\"0.035 0.005\"/></worldbody></mujoco>";
+  std::string error;
+  EXPECT_FALSE(WriteObjectFiles(ObjectByName("disk_d06"), (repo / "out").string(), repo.string(),
+                                {"bench", "bench", "bench"}, &error));
+  EXPECT_NE(error.find("parts/world.xml"), std::string::npos) << error;
+  EXPECT_NE(error.find("'disk' among other elements"), std::string::npos) << error;
+  fs::remove_all(repo);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Written geometry against the analytic shapes.
 

@@ -42,9 +42,9 @@ TEST(ToolVariantsTest, LipSegmentCountChangesKeepTheTotalStiffnessAndTheRing) {
 TEST(ToolVariantsTest, VariantsCompileInMemoryWithTheirConfig) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("ssc_variants_" + std::to_string(::getpid()));
-  fs::create_directories(dir / "scenes");
   fs::create_directories(dir / "models");
-  fs::copy_file(SourceDir() + "/scenes/disk_benchmark.xml", dir / "scenes" / "disk_benchmark.xml");
+  // The scene with the parts it includes (scenes/parts/).
+  fs::copy(SourceDir() + "/scenes", dir / "scenes", fs::copy_options::recursive);
   fs::copy_file(SourceDir() + "/models/ur10.xml", dir / "models" / "ur10.xml");
   fs::copy_file(SourceDir() + "/models/ssc_tool.xml", dir / "models" / "ssc_tool.xml");
   std::string error;
