@@ -2,8 +2,9 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
+#include <string_view>
 
+#include "common/strict_number.h"
 #include "objects/spec_helpers.h"
 
 namespace ssc {
@@ -124,10 +125,8 @@ ObjectSpec ObjectByName(const std::string& name) {
   auto value = [&name](const char* prefix, double* v) {
     const std::string p = prefix;
     if (name.size() <= p.size() || name.compare(0, p.size(), p) != 0) return false;
-    const char* begin = name.c_str() + p.size();
-    char* end = nullptr;
-    *v = std::strtod(begin, &end);
-    return end != begin && *end == '\0';
+    std::string error;
+    return ParseNumber(std::string_view(name).substr(p.size()), NumberRange(), v, &error);
   };
   double v = 0;
   if (value("corner_a", &v) && v > 0 && v < 360) return MakeCorner(v);

@@ -12,6 +12,7 @@
 
 #include "common/csv_cell.h"
 #include "common/output_file.h"
+#include "common/strict_number.h"
 #include "controller/trial/trial_outcome.h"
 #include "studies/equivalence.h"
 #include "studies/scores/map_scores.h"
@@ -46,17 +47,6 @@ std::string Num(double v) {
 }
 
 std::string Range(double lo, double hi) { return "[" + Num(lo) + ", " + Num(hi) + "]"; }
-
-bool ParseStrictNumber(const std::string& text, double* v) {
-  if (text.empty()) return false;
-  std::size_t used = 0;
-  try {
-    *v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    return false;
-  }
-  return used == text.size() && std::isfinite(*v);
-}
 
 ControllerValues FullValues(const ControllerChoice& choice) {
   ControllerValues v = choice.values;
@@ -115,9 +105,10 @@ bool ParseTuneSearch(const ControllerType& type, const std::string& text,
         return false;
       }
     }
-    if (!ParseStrictNumber(item.substr(eq + 1, colon - eq - 1), &k.lo) ||
-        !ParseStrictNumber(item.substr(colon + 1), &k.hi) || !(k.lo < k.hi) || k.lo < range[0] ||
-        k.hi > range[1]) {
+    const NumberRange within = NumberRange::Closed(range[0], range[1]);
+    std::string number_error;
+    if (!ParseNumber(item.substr(eq + 1, colon - eq - 1), within, &k.lo, &number_error) ||
+        !ParseNumber(item.substr(colon + 1), within, &k.hi, &number_error) || !(k.lo < k.hi)) {
       *error = "key '" + k.key + "': '" + item.substr(eq + 1) +
                "' is not lo:hi with lo < hi, both numbers within " + Range(range[0], range[1]);
       return false;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <sstream>
 #include <string_view>
@@ -41,11 +40,15 @@ std::string JobKey(bool reference, const std::string& integrator, double ms) {
   return std::string(reference ? "reference " : "step ") + integrator + " " + Full(ms);
 }
 
-bool FullNumber(std::string_view text, double* v) {
-  const std::string t(text);
-  char* end = nullptr;
-  *v = std::strtod(t.c_str(), &end);
-  return !t.empty() && end == t.c_str() + t.size();
+// A metric cell as the study writes it (%.17g): a number, or a non-finite value for a trial
+// that has no such metric (a failed trial's r_mean is nan), which the strict reader refuses.
+bool MetricCell(std::string_view text) {
+  for (const char* non_finite : {"nan", "-nan", "inf", "-inf"}) {
+    if (text == non_finite) return true;
+  }
+  double v = 0;
+  std::string error;
+  return ParseNumber(text, NumberRange(), &v, &error);
 }
 
 // A row of an earlier run: its key when it can be a finished trial of this study.
@@ -58,17 +61,17 @@ std::string CheckTrialRow(const std::vector<std::string_view>& f, std::string* w
        o <= static_cast<int>(Outcome::kControllerFault); ++o) {
     finished = finished || outcome == OutcomeName(static_cast<Outcome>(o));
   }
-  double ms = 0, number = 0;
+  double ms = 0;
+  std::string number_error;
   if (trial != "reference" && trial != "step") {
     *why = "trial '" + trial + "' is neither reference nor step";
   } else if (!known) {
     *why = "integrator '" + integrator + "' is not one of the study's";
-  } else if (!FullNumber(f[2], &ms) || !(ms > 0)) {
+  } else if (!ParseNumber(f[2], NumberRange::Positive(), &ms, &number_error)) {
     *why = "timestep_ms '" + std::string(f[2]) + "' is not a positive number";
   } else if (!finished) {
     *why = "outcome '" + outcome + "' is not a finished trial's";
-  } else if (!FullNumber(f[4], &number) || !FullNumber(f[5], &number) ||
-             !FullNumber(f[6], &number)) {
+  } else if (!MetricCell(f[4]) || !MetricCell(f[5]) || !MetricCell(f[6])) {
     *why = "a metric cell is not a number";
   } else {
     return JobKey(trial == "reference", integrator, ms);

@@ -239,6 +239,10 @@ TEST(ObjectRegistryTest, PublishedSetWithStartsOnTheEdge) {
   EXPECT_EQ(ObjectByName("disk_d5").param, 5);
   EXPECT_TRUE(ObjectByName("corner_a400").name.empty());
   EXPECT_TRUE(ObjectByName("teapot").name.empty());
+  // The number after the prefix is read strictly: no hex, nan, trailing text.
+  EXPECT_TRUE(ObjectByName("corner_a0x5a").name.empty());
+  EXPECT_TRUE(ObjectByName("disk_dnan").name.empty());
+  EXPECT_TRUE(ObjectByName("disk_d6mm").name.empty());
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -50,6 +50,11 @@ TEST(ParseTuneSearch, ControllerAndLawKeysWithinTheirRanges) {
   EXPECT_FALSE(ParseTuneSearch(*fast, "step_max_mm=6:8,step_max_mm=6:9", &keys, &error));
   EXPECT_FALSE(ParseTuneSearch(*fast, "step_max_mm=6", &keys, &error));
   EXPECT_FALSE(ParseTuneSearch(*fast, "step_max_mm=6:8x", &keys, &error));
+  // The strict number reader's grammar: no hex, nan or inf, whatever strtod would take.
+  EXPECT_FALSE(ParseTuneSearch(*fast, "step_max_mm=0x6:8", &keys, &error));
+  EXPECT_NE(error.find("lo:hi"), std::string::npos) << error;
+  EXPECT_FALSE(ParseTuneSearch(*fast, "step_max_mm=nan:8", &keys, &error));
+  EXPECT_FALSE(ParseTuneSearch(*fast, "step_max_mm=6:inf", &keys, &error));
   EXPECT_FALSE(ParseTuneSearch(*fast, "", &keys, &error));
 }
 
