@@ -14,8 +14,8 @@ set(SSC_INSTALL_DATADIR "${CMAKE_INSTALL_DATADIR}/ssc")
 
 # The libraries a downstream program links: every library target of the library folders (the
 # viewer stays with `ssc`: it needs GLFW), so a new library is exported without a list to edit.
-set(SSC_LIBRARY_FOLDERS common plugin geometry controller calibration objects runtime studies
-    robotlog compare)
+set(SSC_LIBRARY_FOLDERS common plugin geometry controller trial calibration objects runtime
+    studies robotlog compare)
 set(SSC_EXPORTED_LIBRARIES ssc_warnings)
 foreach(dir ${SSC_LIBRARY_FOLDERS})
   if(IS_DIRECTORY "${PROJECT_SOURCE_DIR}/${dir}")

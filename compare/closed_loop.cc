@@ -5,7 +5,7 @@
 #include <limits>
 #include <numeric>
 
-#include "controller/pure/contour_law.h"
+#include "controller/contour_law.h"
 #include "geometry/contour_path.h"
 #include "runtime/mujoco_model.h"
 

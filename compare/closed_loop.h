@@ -13,8 +13,8 @@
 #include "compare/frames.h"
 #include "compare/replay.h"
 #include "compare/twin_log.h"
-#include "controller/trial/trial_metrics.h"
 #include "runtime/trial.h"
+#include "trial/trial_metrics.h"
 
 namespace ssc {
 

@@ -8,7 +8,7 @@
 #include <numeric>
 
 #include "common/tool_names.h"
-#include "controller/pure/contour_law.h"
+#include "controller/contour_law.h"
 #include "plugin/chamber_pressure_sensor.h"
 #include "robotlog/align.h"
 #include "runtime/rig.h"

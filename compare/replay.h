@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "controller/trial/robot_effects.h"
 #include "robotlog/log_types.h"
+#include "trial/robot_effects.h"
 
 namespace ssc {
 
@@ -33,7 +33,7 @@ struct ReplayComparison {
 // Drives the replay scene's mocap body (named "probe", holding tool0) along the logged tool
 // centre point (scene frame) and orientation, stepping the simulation through the log's time
 // span, and samples the plugin output and the F/T force at the log's time stamps.
-// `lip` is the lip-drag reading effect the closed loop applies (controller/trial/robot_effects.h):
+// `lip` is the lip-drag reading effect the closed loop applies (trial/robot_effects.h):
 // the replay drags the lip along the logged path and applies it too, so its pressures are what
 // the host would read, as the log's are. LipShearParams{} (slip 0) compares the plugin alone.
 // `progress` (optional) sees the fraction of the log replayed, every 1 %.

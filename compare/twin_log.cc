@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "controller/pure/contour_law.h"
+#include "controller/contour_law.h"
 #include "robotlog/mat_log.h"
 #include "robotlog/topic_csv.h"
 

@@ -19,10 +19,10 @@
 #include <string>
 #include <vector>
 
-#include "controller/trial/trial_goal.h"
 #include "geometry/contour_path.h"
 #include "geometry/dimensions.h"
 #include "objects/fillet_profile.h"
+#include "trial/trial_goal.h"
 
 namespace ssc {
 

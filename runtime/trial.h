@@ -3,7 +3,7 @@
 // Phases (as on the robot): APPROACH from above the object's centre until the tared F/T reads
 // the start-up compression, then hold that height; MOVE to the start point (start_offset from the
 // centre toward start_direction); FOLLOW the edge with the controller (the published contour law
-// by default; controller/pure/controller.h), one control iteration per control_period; then DONE
+// by default; controller/controller.h), one control iteration per control_period; then DONE
 // with one outcome. Failure checks run only while following.
 #ifndef SSC_RUNTIME_TRIAL_H_
 #define SSC_RUNTIME_TRIAL_H_
@@ -17,14 +17,9 @@
 #include <string>
 #include <vector>
 
-#include "controller/pure/contour_law.h"
-#include "controller/pure/controller.h"
-#include "controller/pure/controller_registry.h"
-#include "controller/trial/robot_effects.h"
-#include "controller/trial/trial_effects.h"
-#include "controller/trial/trial_goal.h"
-#include "controller/trial/trial_metrics.h"
-#include "controller/trial/trial_outcome.h"
+#include "controller/contour_law.h"
+#include "controller/controller.h"
+#include "controller/controller_registry.h"
 #include "geometry/dimensions.h"
 #include "plugin/chamber_pressure_sensor.h"
 #include "runtime/control_dispatch.h"
@@ -32,6 +27,11 @@
 #include "runtime/rig.h"
 #include "runtime/tool_force.h"
 #include "runtime/tool_servo.h"
+#include "trial/robot_effects.h"
+#include "trial/trial_effects.h"
+#include "trial/trial_goal.h"
+#include "trial/trial_metrics.h"
+#include "trial/trial_outcome.h"
 
 namespace ssc {
 
@@ -61,7 +61,7 @@ struct TrialTarget {
 
 struct TrialConfig {
   ContourLawParams law;  // P_ref, beta, step, thresholds of the law
-  // What decides while following (controller/pure/controller_registry.h): the published law
+  // What decides while following (controller/controller_registry.h): the published law
   // by default; every controller also reads `law`.
   ControllerChoice controller;
   TrialThresholds thresholds;  // success sweep, failure I/II, safety force
@@ -76,7 +76,7 @@ struct TrialConfig {
   double timeout_s = 120;        // follow phase limit, simulated seconds
   std::uint64_t seed = 1;        // sensor noise seed for this trial
   double log_period_s = 0.02;    // path sampling for metrics and the log
-  // The real loop, lip and sensors (controller/trial/robot_effects.h): the fitted set by
+  // The real loop, lip and sensors (trial/robot_effects.h): the fitted set by
   // default (each step lands off target; each chamber keeps a tare offset); all zero
   // (`--effects off`) = the ideal loop.
   RobotEffectsParams effects = FittedRobotEffects();

@@ -13,7 +13,6 @@
 #include "common/csv_cell.h"
 #include "common/output_file.h"
 #include "common/strict_number.h"
-#include "controller/trial/trial_outcome.h"
 #include "studies/equivalence.h"
 #include "studies/scores/map_scores.h"
 #include "studies/statistics/intervals.h"
@@ -21,6 +20,7 @@
 #include "studies/trial_io.h"
 #include "studies/trial_manifest.h"
 #include "studies/unit_box_search.h"
+#include "trial/trial_outcome.h"
 
 namespace ssc {
 namespace {

@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "controller/pure/controller_registry.h"
+#include "controller/controller_registry.h"
 #include "studies/sweep.h"
 
 namespace ssc {

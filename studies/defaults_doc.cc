@@ -4,13 +4,13 @@
 #include <sstream>
 
 #include "common/scene_files.h"
-#include "controller/pure/contour_law.h"
-#include "controller/trial/robot_effects.h"
+#include "controller/contour_law.h"
 #include "geometry/dimensions.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/rig.h"
 #include "runtime/trial.h"
 #include "studies/success_map_fit.h"
+#include "trial/robot_effects.h"
 
 namespace ssc {
 namespace {
@@ -89,7 +89,7 @@ std::string DefaultsMarkdown() {
         "     Regenerate: build/bin/ssc_defaults_doc > docs/defaults.md (a test checks it). -->\n\n"
         "What every command that runs trials uses unless told otherwise. Why the effects exist\n"
         "and how they were fitted: [fidelity.md](fidelity.md).\n\n"
-        "## The contour law (`ContourLawParams`, controller/pure/contour_law.h)\n\n"
+        "## The contour law (`ContourLawParams`, controller/contour_law.h)\n\n"
         "| field | option | unit | default |\n| --- | --- | --- | --- |\n"
      << "| `p_ref_pa` | `--pref` | Pa | " << law.p_ref_pa << " |\n"
      << "| `beta` | `--beta` | - | " << law.beta << " |\n"
@@ -118,7 +118,7 @@ std::string DefaultsMarkdown() {
         "off) | - | s | "
      << kObjectStallWindowS << " (object trials), " << trial.thresholds.stall_window_s
      << " (off: disk trials) | - |\n\n"
-     << "## Robot effects (`--effects key=value,...`; controller/trial/robot_effects.h)\n\n"
+     << "## Robot effects (`--effects key=value,...`; trial/robot_effects.h)\n\n"
         "`--effects off` sets every key whose range starts at 0 to 0 (the ideal loop).\n\n"
         "| key | unit | valid | default | fit range | what it is |\n"
         "| --- | --- | --- | --- | --- | --- |\n";

@@ -9,7 +9,7 @@
 
 #include "common/output_file.h"
 #include "common/strict_number.h"
-#include "controller/pure/contour_law.h"
+#include "controller/contour_law.h"
 #include "geometry/dimensions.h"
 #include "runtime/rig.h"
 
@@ -152,7 +152,7 @@ ProbeReading EdgeProbe3d::Read(double x_m, double y_m, double yaw_rad, double su
     r.leak_area_mm2[c] = s.leak_area_m2[c] * 1e6;
   }
   for (const LipSegmentState& l : s.lip) r.lip_contacts += l.in_contact ? 1 : 0;
-  // The reference formulas are the controller's own (controller/pure/contour_law.h).
+  // The reference formulas are the controller's own (controller/contour_law.h).
   const ContourStep law = ComputeContourStep(r.filtered_pa, ContourLawParams{});
   r.pbar_pa = law.p_mean_pa;
   r.dpx_pa = law.dpx_pa;

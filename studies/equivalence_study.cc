@@ -4,9 +4,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "controller/trial/robot_effects.h"
 #include "studies/jobs/job_runner.h"
 #include "studies/success_map_fit.h"
+#include "trial/robot_effects.h"
 
 namespace ssc {
 namespace {

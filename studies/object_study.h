@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "controller/pure/contour_law.h"
-#include "controller/pure/controller_registry.h"
-#include "controller/trial/robot_effects.h"
+#include "controller/contour_law.h"
+#include "controller/controller_registry.h"
 #include "objects/object_spec.h"
 #include "studies/object_trials.h"
+#include "trial/robot_effects.h"
 
 namespace ssc {
 

@@ -1,4 +1,4 @@
-// `ssc calibrate --dynamic`: fits the robot effects (controller/trial/robot_effects.h) and the
+// `ssc calibrate --dynamic`: fits the robot effects (trial/robot_effects.h) and the
 // real loop's timing GLOBALLY to the published success map at dL 5 mm together with the Fig. 6
 // targets (dr against P_ref; sigma_r and s_c against beta). No per-cell parameters, no outcome
 // tables: each parameter is physical, with a unit and a range argued from the hardware

@@ -12,13 +12,13 @@
 
 #include "common/counter_rng.h"
 #include "common/strict_number.h"
-#include "controller/trial/robot_effects.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/rig.h"
 #include "studies/jobs/job_runner.h"
 #include "studies/sweep_io.h"
 #include "studies/trial_io.h"
 #include "studies/trial_manifest.h"
+#include "trial/robot_effects.h"
 
 namespace ssc {
 namespace {

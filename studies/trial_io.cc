@@ -7,7 +7,7 @@
 
 #include "common/csv_cell.h"
 #include "common/output_file.h"
-#include "controller/trial/robot_effects.h"
+#include "trial/robot_effects.h"
 
 namespace ssc {
 namespace {

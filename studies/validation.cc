@@ -14,10 +14,10 @@
 #include "common/input_file.h"
 #include "common/output_file.h"
 #include "common/strict_number.h"
-#include "controller/trial/robot_effects.h"
 #include "runtime/rig.h"
 #include "studies/jobs/job_runner.h"
 #include "studies/scores/metric_targets.h"
+#include "trial/robot_effects.h"
 
 namespace ssc {
 namespace {

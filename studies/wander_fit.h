@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "calibration/pneumatic_fit.h"
-#include "controller/trial/robot_effects.h"
 #include "studies/tool_variants.h"
+#include "trial/robot_effects.h"
 
 namespace ssc {
 

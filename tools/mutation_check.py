@@ -47,7 +47,7 @@ MUTATIONS = [
     M(
         "outcome-grasp-threshold+20",
         "outcomes",
-        "controller/trial/trial_outcome.h",
+        "trial/trial_outcome.h",
         "double grasp_pa = 10000.0;",
         "double grasp_pa = 12000.0;",
         "failure II threshold raised by 20 %",
@@ -75,7 +75,7 @@ MUTATIONS = [
     M(
         "goal-loop-354",
         "outcomes",
-        "controller/trial/trial_goal.h",
+        "trial/trial_goal.h",
         "inline constexpr double kLoopSweepDeg = 355;",
         "inline constexpr double kLoopSweepDeg = 354;",
         "success declared 1 deg early",
@@ -84,7 +84,7 @@ MUTATIONS = [
     M(
         "goal-loop-half",
         "outcomes",
-        "controller/trial/trial_goal.h",
+        "trial/trial_goal.h",
         "inline constexpr double kLoopSweepDeg = 355;",
         "inline constexpr double kLoopSweepDeg = 180;",
         "success declared after half a loop (disk trials only)",
@@ -93,7 +93,7 @@ MUTATIONS = [
     M(
         "goal-band+20",
         "outcomes",
-        "controller/trial/trial_goal.h",
+        "trial/trial_goal.h",
         "inline constexpr double kFollowBandM = 0.5e-3 * kCupBodyDiameterMm;",
         "inline constexpr double kFollowBandM = 0.6e-3 * kCupBodyDiameterMm;",
         "band of following 20 % wider",
@@ -102,7 +102,7 @@ MUTATIONS = [
     M(
         "goal-small-disk-rule",
         "outcomes",
-        "controller/trial/trial_goal.cc",
+        "trial/trial_goal.cc",
         "if (2 * radius_m < kCupOpeningDiameterMm * 1e-3) {",
         "if (2 * radius_m < 0.9 * kCupOpeningDiameterMm * 1e-3) {",
         "disks down to 9.9 mm count as followable",
@@ -111,7 +111,7 @@ MUTATIONS = [
     M(
         "outcome-off-edge-threshold+20",
         "outcomes",
-        "controller/trial/trial_outcome.h",
+        "trial/trial_outcome.h",
         "double off_edge_pa = 5.0;",
         "double off_edge_pa = 6.0;",
         "failure I threshold raised by 20 %",
@@ -120,7 +120,7 @@ MUTATIONS = [
     M(
         "outcome-grasp-any-chamber",
         "outcomes",
-        "controller/trial/trial_outcome.cc",
+        "trial/trial_outcome.cc",
         "all_grasped = all_grasped && v > t.grasp_pa;",
         "all_grasped = all_grasped || v > t.grasp_pa;",
         "failure II when any (not all) chamber is over the threshold",
@@ -129,7 +129,7 @@ MUTATIONS = [
     M(
         "outcome-sweep-sign",
         "outcomes",
-        "controller/trial/trial_outcome.cc",
+        "trial/trial_outcome.cc",
         "swept_rad_ += std::remainder(a - last_angle_, 2 * M_PI);",
         "swept_rad_ -= std::remainder(a - last_angle_, 2 * M_PI);",
         "swept angle counted clockwise positive",
@@ -312,7 +312,7 @@ MUTATIONS = [
     M(
         "law-correction-sign",
         "control law",
-        "controller/pure/contour_law.cc",
+        "controller/contour_law.cc",
         "const double fx = s.along_edge[0] + s.cf * s.correction[0];",
         "const double fx = s.along_edge[0] - s.cf * s.correction[0];",
         "correction term's x part flipped",
@@ -321,7 +321,7 @@ MUTATIONS = [
     M(
         "law-cf-above-ref-sign",
         "control law",
-        "controller/pure/contour_law.cc",
+        "controller/contour_law.cc",
         "return -params.beta * (x - xr) / (xg - xr);",
         "return params.beta * (x - xr) / (xg - xr);",
         "above P_ref the cup is steered further in",
@@ -330,7 +330,7 @@ MUTATIONS = [
     M(
         "law-dpy-sign",
         "control law",
-        "controller/pure/contour_law.cc",
+        "controller/contour_law.cc",
         "s.dpy_pa = s.p_west_pa - s.p_east_pa;",
         "s.dpy_pa = s.p_east_pa - s.p_west_pa;",
         "west-east differential flipped",
@@ -423,7 +423,7 @@ MUTATIONS = [
     M(
         "metrics-dr-sign",
         "metrics",
-        "controller/trial/trial_metrics.cc",
+        "trial/trial_metrics.cc",
         "m.dr_mm = (r_mean - radius) * 1e3;",
         "m.dr_mm = (radius - r_mean) * 1e3;",
         "radial offset sign flipped",
@@ -432,7 +432,7 @@ MUTATIONS = [
     M(
         "metrics-sc-offset",
         "metrics",
-        "controller/trial/trial_metrics.cc",
+        "trial/trial_metrics.cc",
         "m.s_c = s / (2 * M_PI * radius) - 1;",
         "m.s_c = s / (2 * M_PI * radius);",
         "path-length ratio not minus one",

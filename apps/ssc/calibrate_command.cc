@@ -13,7 +13,6 @@
 #include "apps/ssc/trial_options.h"
 #include "calibration/pneumatic_fit.h"
 #include "common/output_file.h"
-#include "controller/trial/robot_effects.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/rig.h"
 #include "studies/loop_calibration.h"
@@ -22,6 +21,7 @@
 #include "studies/tool_variants.h"
 #include "studies/validation.h"
 #include "studies/wander_fit.h"
+#include "trial/robot_effects.h"
 
 namespace ssc {
 namespace {

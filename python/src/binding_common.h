@@ -30,9 +30,8 @@
 #include "compare/comparison.h"
 #include "compare/frames.h"
 #include "compare/twin_log.h"
-#include "controller/pure/contour_law.h"
-#include "controller/pure/controller_registry.h"
-#include "controller/trial/robot_effects.h"
+#include "controller/contour_law.h"
+#include "controller/controller_registry.h"
 #include "geometry/dimensions.h"
 #include "objects/object_mjcf.h"
 #include "objects/object_spec.h"
@@ -52,6 +51,7 @@
 #include "studies/sweep.h"
 #include "studies/tool_variants.h"
 #include "studies/validation.h"
+#include "trial/robot_effects.h"
 
 namespace nb = nanobind;
 using namespace nb::literals;

@@ -29,9 +29,8 @@
 #include "compare/comparison.h"
 #include "compare/frames.h"
 #include "compare/twin_log.h"
-#include "controller/pure/contour_law.h"
-#include "controller/pure/controller_registry.h"
-#include "controller/trial/robot_effects.h"
+#include "controller/contour_law.h"
+#include "controller/controller_registry.h"
 #include "geometry/dimensions.h"
 #include "objects/object_mjcf.h"
 #include "objects/object_spec.h"
@@ -52,6 +51,7 @@
 #include "studies/sweep.h"
 #include "studies/tool_variants.h"
 #include "studies/validation.h"
+#include "trial/robot_effects.h"
 
 namespace nb = nanobind;
 using namespace nb::literals;
@@ -77,7 +77,7 @@ inline std::string PythonErrorText(const nb::python_error& e) {
          nb::cast<std::string>(nb::str(e.value()));
 }
 
-// A Python callable as a controller (controller/pure/controller.h): called with a dict of the
+// A Python callable as a controller (controller/controller.h): called with a dict of the
 // host's reading, it returns the planar step (dx, dy) in m, tool frame, or a dict with "step_m"
 // and optionally "height_offset_m" and "lifted". Each call takes the GIL, so trials on several
 // threads call it one at a time. An exception or a malformed answer ends the trial as

@@ -103,7 +103,7 @@ NB_MODULE(_core, m) {
   m.attr("LAB_DISK_CENTRE_BASE_LINK_M") = nb::make_tuple(kLabDiskCentreX, kLabDiskCentreY);
   m.attr("LAB_DISK_ENGAGE_Z_M") = kLabDiskEngageZ;
   m.attr("TOOL_CENTRE_OFFSET_M") = kToolCentreOffsetM;
-  // How a trial ends (controller/trial/trial_outcome.h, trial_goal.h), for the SIL's verdict.
+  // How a trial ends (trial/trial_outcome.h, trial_goal.h), for the SIL's verdict.
   nb::dict exit_codes;
   for (const ExitCodeRow& row : kExitCodeTable) exit_codes[row.name] = static_cast<int>(row.code);
   m.attr("EXIT_CODES") = exit_codes;  // common/exit_codes.h

@@ -5,8 +5,8 @@
 #include <random>
 #include <sstream>
 
-#include "controller/trial/trial_outcome.h"
 #include "studies/statistics/intervals.h"
+#include "trial/trial_outcome.h"
 
 namespace ssc {
 

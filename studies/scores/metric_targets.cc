@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "calibration/published_targets.h"
-#include "controller/trial/trial_outcome.h"
+#include "trial/trial_outcome.h"
 
 namespace ssc {
 

@@ -9,11 +9,11 @@
 #include <filesystem>
 
 #include "compare/comparison.h"
-#include "controller/trial/robot_effects.h"
 #include "lab_log_generator.h"
 #include "runtime/mujoco_model.h"
 #include "studies/tool_variants.h"
 #include "tests/scratch_dir.h"
+#include "trial/robot_effects.h"
 
 namespace ssc {
 namespace {

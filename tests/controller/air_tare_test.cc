@@ -1,5 +1,5 @@
 // The air re-tare: which readings it averages, and what it does without any.
-#include "controller/pure/air_tare.h"
+#include "controller/air_tare.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "controller/pure/contour_law.h"
+#include "controller/contour_law.h"
 
 #include <gtest/gtest.h>
 

@@ -1,13 +1,13 @@
 // The controller interface as pure logic: the command's range check, the registry's strict
 // parameter parsing, and the published law through the interface.
-#include "controller/pure/controller_registry.h"
+#include "controller/controller_registry.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "controller/pure/published_controller.h"
+#include "controller/published_controller.h"
 
 namespace ssc {
 namespace {

@@ -1,6 +1,6 @@
 // Crimp recovery as pure logic: the detector on synthetic signatures (a crimped lip, a straight
 // edge, a grasp, a moving cup) and the hop's sequence.
-#include "controller/pure/crimp_hop.h"
+#include "controller/crimp_hop.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Edge tracking's pure logic: the edge fit on noisy circles and lines, the inset map, the
 // absolute targets (bounded, on the fitted edge, misses not added up) and non-finite input.
-#include "controller/pure/edge_track.h"
+#include "controller/edge_track.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "controller/pure/controller_registry.h"
+#include "controller/controller_registry.h"
 
 namespace ssc {
 namespace {

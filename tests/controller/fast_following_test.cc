@@ -1,13 +1,13 @@
 // Fast following's pure logic: the adaptive step's bounds and trends, the turn measurement, and
 // steps taken from the arm's target.
-#include "controller/pure/fast_following.h"
+#include "controller/fast_following.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
-#include "controller/pure/controller_registry.h"
+#include "controller/controller_registry.h"
 
 namespace ssc {
 namespace {

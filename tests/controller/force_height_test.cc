@@ -1,6 +1,6 @@
 // Force-regulated height as pure logic: the force loop's step response against a spring
 // contact, its bounds, and the controller's planar step (the law's).
-#include "controller/pure/force_height.h"
+#include "controller/force_height.h"
 
 #include <gtest/gtest.h>
 

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "controller/pure/controller_registry.h"
+#include "controller/controller_registry.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/trial.h"
 

@@ -6,11 +6,11 @@
 #include <sstream>
 #include <string>
 
-#include "controller/trial/robot_effects.h"
 #include "geometry/dimensions.h"
 #include "runtime/mujoco_model.h"
 #include "studies/defaults_doc.h"
 #include "studies/success_map_fit.h"
+#include "trial/robot_effects.h"
 
 namespace ssc {
 namespace {

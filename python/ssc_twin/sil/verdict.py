@@ -1,5 +1,5 @@
 """What a SIL run did to the cup, decided as `ssc trial` decides a disk trial
-(controller/trial/trial_outcome.h): from the first touch on, each pressure sample (the mean of the
+(trial/trial_outcome.h): from the first touch on, each pressure sample (the mean of the
 last few, as the lab's own filter) ends the trial at the first of
 
 - success: the cup centre swept a loop (LOOP_SWEEP_DEG, either way) about the disk's centre;

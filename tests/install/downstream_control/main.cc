@@ -2,7 +2,7 @@
 #include <array>
 #include <cstdio>
 
-#include "controller/pure/contour_law.h"
+#include "controller/contour_law.h"
 
 int main() {
   ssc::ContourLawParams law;
