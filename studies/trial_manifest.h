@@ -1,6 +1,6 @@
 // The options that define a trial's results, as a resumable study records them beside its rows
 // (studies/sweep_io.h: SweepManifest): the scene, its compiled model's hash and the trial
-// settings a row does not hold itself. Shared by ssc sweep and ssc stability.
+// settings a row does not hold itself. Shared by ssc sweep, ssc stability and ssc tune.
 #ifndef SSC_STUDIES_TRIAL_MANIFEST_H_
 #define SSC_STUDIES_TRIAL_MANIFEST_H_
 
