@@ -25,13 +25,16 @@ with open(A_FILE, "w") as f:
 
 
 def scene_with(old, new, name):
-    """A copy of the gantry scene beside the original (its includes resolve) with one change."""
+    """A copy of the gantry scene in TMP with one change; its parts and models by absolute path."""
     with open(os.path.join(SRC, "scenes", "disk_benchmark_gantry.xml")) as f:
         xml = f.read()
     assert old in xml, old
-    path = os.path.join(SRC, "scenes", f".bad_{os.getpid()}_{name}.xml")
+    xml = xml.replace(old, new, 1)
+    xml = xml.replace('file="parts/', 'file="%s/scenes/parts/' % SRC)
+    xml = xml.replace('file="../models/', 'file="%s/models/' % SRC)
+    path = os.path.join(TMP, f"scene_{name}.xml")
     with open(path, "w") as f:
-        f.write(xml.replace(old, new, 1))
+        f.write(xml)
     return path
 
 
@@ -377,8 +380,6 @@ def run(args, timeout=60, prefix=()):
 class BadInputTest(unittest.TestCase):
     @classmethod
     def tearDownClass(cls):
-        for p in (STEP0, STEPNEG, STEP_TINY, EMPTY_CFG, HEX_CFG):
-            os.remove(p)
         shutil.rmtree(TMP, ignore_errors=True)
 
     def test_every_case_fails_fast_with_a_message_and_leaves_nothing_behind(self):

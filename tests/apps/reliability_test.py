@@ -64,24 +64,23 @@ class ReliabilityTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.tmp = tempfile.mkdtemp(prefix="ssc_reliability_")
-        cls.scenes = []
 
     @classmethod
     def tearDownClass(cls):
         shutil.rmtree(cls.tmp, ignore_errors=True)
-        for s in cls.scenes:
-            if os.path.exists(s):
-                os.remove(s)
 
     def scene_with(self, old, new, name):
-        """A copy of the gantry scene beside the original (its includes resolve), one change."""
+        """A copy of the gantry scene in the test's folder with one change; its parts and models
+        by absolute path."""
         with open(os.path.join(SRC, "scenes", "disk_benchmark_gantry.xml")) as f:
             xml = f.read()
         self.assertIn(old, xml)
-        path = os.path.join(SRC, "scenes", f".reliability_{os.getpid()}_{name}.xml")
+        xml = xml.replace(old, new, 1)
+        xml = xml.replace('file="parts/', 'file="%s/scenes/parts/' % SRC)
+        xml = xml.replace('file="../models/', 'file="%s/models/' % SRC)
+        path = os.path.join(self.tmp, f"scene_{name}.xml")
         with open(path, "w") as f:
-            f.write(xml.replace(old, new, 1))
-        self.scenes.append(path)
+            f.write(xml)
         return path
 
     # Sweeps trust no row.

@@ -15,15 +15,21 @@
 namespace ssc {
 namespace {
 
-// The gantry scene with another time step, written beside the original (its includes resolve).
+// The gantry scene with another time step, in the temp folder: its parts and models named by
+// absolute path.
 std::string SceneWithTimestep(const std::string& dt) {
   std::ifstream in(SourceDir() + "/scenes/disk_benchmark_gantry.xml");
   std::stringstream buf;
   buf << in.rdbuf();
-  const std::string xml =
+  std::string xml =
       std::regex_replace(buf.str(), std::regex(R"(timestep="[^"]*")"), "timestep=\"" + dt + "\"");
-  const std::string path =
-      SourceDir() + "/scenes/.timestep_test_" + std::to_string(::getpid()) + ".xml";
+  xml = std::regex_replace(xml, std::regex(R"(file="parts/)"),
+                           "file=\"" + SourceDir() + "/scenes/parts/");
+  xml = std::regex_replace(xml, std::regex(R"(file="\.\./models/)"),
+                           "file=\"" + SourceDir() + "/models/");
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            (".timestep_test_" + std::to_string(::getpid()) + ".xml"))
+                               .string();
   std::ofstream(path) << xml;
   return path;
 }
