@@ -23,9 +23,11 @@ constexpr int kRimBisections = 6;
 constexpr double kLobeSectorHalfRad = 7.5 * M_PI / 180.0;
 // Per-mjData noise seed (set by the application after a reset), after the warm start.
 constexpr int kSeedSlot = kSensorChainStateSize + kWarmStartSize;
-// The chamber vacuums' force on the tool at the last passive evaluation (world, N; 3 values):
-// the F/T transducer carries it (runtime/tool_force.h).
-constexpr int kVacuumForceSlot = kSeedSlot + 1;
+// The chamber vacuums' moment about the tool site and force on the tool at the last passive
+// evaluation (world, N m and N; 3 values each, the force last): the F/T transducer carries them
+// (runtime/tool_force.h).
+constexpr int kVacuumTorqueSlot = kSeedSlot + 1;
+constexpr int kVacuumForceSlot = kVacuumTorqueSlot + 3;
 
 // World-frame axis `col` of a row-major 3x3 rotation.
 void Axis(const mjtNum* mat, int col, mjtNum out[3]) {
@@ -59,6 +61,10 @@ class ChamberPressureSensor final : public ChamberPressureDiagnostics {
   std::array<double, 3> lip_vacuum_force_n(const mjModel* m, const mjData* d) const override {
     const mjtNum* f = d->plugin_state + m->plugin_stateadr[instance_] + kVacuumForceSlot;
     return {f[0], f[1], f[2]};
+  }
+  std::array<double, 3> lip_vacuum_torque_nm(const mjModel* m, const mjData* d) const override {
+    const mjtNum* t = d->plugin_state + m->plugin_stateadr[instance_] + kVacuumTorqueSlot;
+    return {t[0], t[1], t[2]};
   }
   void Measure(const mjModel* m, const mjData* d, ChamberPressureSample* sample) const override;
   void CopyDiagnosticsFrom(const ChamberPressureSensor& other) { sample_ = other.sample_; }
@@ -189,6 +195,7 @@ void ChamberPressureSensor::Reset(mjtNum* plugin_state) const {
   ResetSensorChain(reinterpret_cast<SensorChainState*>(plugin_state));
   for (int i = 0; i < kWarmStartSize; ++i) plugin_state[kSensorChainStateSize + i] = 0.0;
   plugin_state[kSeedSlot] = 0.0;
+  for (int k = 0; k < 3; ++k) plugin_state[kVacuumTorqueSlot + k] = 0.0;
   for (int k = 0; k < 3; ++k) plugin_state[kVacuumForceSlot + k] = 0.0;
 }
 
@@ -432,7 +439,8 @@ void ChamberPressureSensor::ApplyLipForces(const mjModel* m, mjData* d, int inst
   std::array<double, kNumChambers> vacuum_pa{};
   for (int i = 0; i < kNumChambers; ++i) vacuum_pa[i] = std::max(0.0, warm[i]);
   lip_.ApplyForces(m, d, vacuum_pa, config_.lip_vacuum_load != 0,
-                   d->plugin_state + m->plugin_stateadr[instance] + kVacuumForceSlot);
+                   d->plugin_state + m->plugin_stateadr[instance] + kVacuumForceSlot,
+                   d->plugin_state + m->plugin_stateadr[instance] + kVacuumTorqueSlot);
 }
 
 void ChamberPressureSensor::Compute(const mjModel* m, mjData* d, int instance) {

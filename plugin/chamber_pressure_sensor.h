@@ -80,6 +80,8 @@ class ChamberPressureDiagnostics {
   // The force the chamber vacuums put on the tool (a flex skirt and the cup; world frame, N) at
   // the last passive evaluation; zero for a segment lip or with lip_vacuum_load off.
   virtual std::array<double, 3> lip_vacuum_force_n(const mjModel* m, const mjData* d) const = 0;
+  // Their moment about the tool site (world frame, N m), the same evaluation.
+  virtual std::array<double, 3> lip_vacuum_torque_nm(const mjModel* m, const mjData* d) const = 0;
   // Geometric measurement and network inputs at the current mjData, no noise, no filter (for
   // tools that need the noiseless static pressures); does not touch the sensor's state.
   virtual void Measure(const mjModel* m, const mjData* d, ChamberPressureSample* sample) const = 0;

@@ -435,12 +435,13 @@ double LipBody::MouthCover(const mjData* d, const mjtNum origin[3], const mjtNum
 
 void LipBody::ApplyForces(const mjModel* m, mjData* d,
                           const std::array<double, kNumChambers>& vacuum_pa, bool vacuum_load,
-                          mjtNum vacuum_force_n[3]) const {
+                          mjtNum vacuum_force_n[3], mjtNum vacuum_torque_nm[3]) const {
   mju_zero3(vacuum_force_n);
+  mju_zero3(vacuum_torque_nm);
   if (kind_ == Kind::kSegments) {
     ApplySegmentForces(d);
   } else if (vacuum_load) {
-    ApplySkirtVacuum(m, d, vacuum_pa, vacuum_force_n);
+    ApplySkirtVacuum(m, d, vacuum_pa, vacuum_force_n, vacuum_torque_nm);
   }
 }
 
@@ -467,7 +468,7 @@ void LipBody::ApplySegmentForces(mjData* d) const {
 
 void LipBody::ApplySkirtVacuum(const mjModel* m, mjData* d,
                                const std::array<double, kNumChambers>& vacuum_pa,
-                               mjtNum vacuum_force_n[3]) const {
+                               mjtNum vacuum_force_n[3], mjtNum vacuum_torque_nm[3]) const {
   const mjtNum* site_pos = d->site_xpos + 3 * site_id_;
   const mjtNum* site_mat = d->site_xmat + 9 * site_id_;
   const mjtNum axis_z[3] = {site_mat[2], site_mat[5], site_mat[8]};
@@ -493,6 +494,10 @@ void LipBody::ApplySkirtVacuum(const mjModel* m, mjData* d,
                          element_cavity_side_[e] * vacuum * n[2]};
     mjtNum third[3] = {f[0] / 3.0, f[1] / 3.0, f[2] / 3.0};
     for (int k = 0; k < 3; ++k) vacuum_force_n[k] += f[k];
+    // Thirds at the vertices: the moment of the whole at the centroid.
+    mjtNum moment[3];
+    mju_cross(moment, rel, f);
+    mju_addTo3(vacuum_torque_nm, moment);
     for (int k = 0; k < 3; ++k) {
       mjtNum* point = d->flexvert_xpos + 3 * (adr + v[k]);
       mj_applyFT(m, d, third, zero, point, m->flex_vertbodyid[adr + v[k]], d->qfrc_passive);

@@ -77,9 +77,10 @@ class LipBody {
   // Passive forces into d->qfrc_passive: ring bending and carrier springs (segments), or each
   // chamber's vacuum on the skirt's triangles and on the cup (skirt, when vacuum_load). Switches
   // the carrier's equality locks to match the config. `vacuum_force_n` gets the sum of the
-  // vacuum forces applied (world frame; zero when none). Allocates nothing.
+  // vacuum forces applied (world frame; zero when none), `vacuum_torque_nm` their moment about
+  // the tool site (world frame). Allocates nothing.
   void ApplyForces(const mjModel* m, mjData* d, const std::array<double, kNumChambers>& vacuum_pa,
-                   bool vacuum_load, mjtNum vacuum_force_n[3]) const;
+                   bool vacuum_load, mjtNum vacuum_force_n[3], mjtNum vacuum_torque_nm[3]) const;
   // A skirt's ceiling over one chamber: a quarter of the disk inside its pinned ring (the rest of
   // the cavity's projected area is the skirt's own, loaded triangle by triangle).
   double ceiling_area_m2() const { return ceiling_area_m2_; }
@@ -90,8 +91,8 @@ class LipBody {
   bool BindCarrier(const mjModel* m, std::string* error);
   void ApplySegmentForces(mjData* d) const;
   void ApplySkirtVacuum(const mjModel* m, mjData* d,
-                        const std::array<double, kNumChambers>& vacuum_pa,
-                        mjtNum vacuum_force_n[3]) const;
+                        const std::array<double, kNumChambers>& vacuum_pa, mjtNum vacuum_force_n[3],
+                        mjtNum vacuum_torque_nm[3]) const;
 
   Kind kind_ = Kind::kSegments;
   int site_id_ = -1;

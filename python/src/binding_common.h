@@ -42,6 +42,7 @@
 #include "runtime/approach_cache.h"
 #include "runtime/mujoco_model.h"
 #include "runtime/rig.h"
+#include "runtime/tool_force.h"
 #include "runtime/tool_servo.h"
 #include "runtime/trial.h"
 #include "studies/edge_probe.h"

@@ -23,12 +23,15 @@ class SilPlant {
     if (!data_) Fail(error);
     if (std::string e = rig_.Bind(model_.get(), data_.get()); !e.empty()) Fail(scene + ": " + e);
     if (rig_.torque_adr < 0) Fail(scene + ": no F/T torque sensor");
+    ft_reader_.Bind(model_.get(), rig_.force_sensor,
+                    mj_name2id(model_.get(), mjOBJ_SENSOR, kToolTorqueSensorName));
     Reset(seed);
   }
   void Reset(const nb::object& seed) {
     rig_.Reset(model_.get(), data_.get(), SeedArg(seed));
     std::string error;
     if (!rig_.servo->Init(model_.get(), data_.get(), rig_.tool_site, &error)) Fail(error);
+    ft_reader_.Update(model_.get(), data_.get());
   }
   // The target the servo tracks, tool site in the scene frame, m.
   void SetTarget(std::array<double, 3> xyz) { rig_.servo->SetTarget({xyz[0], xyz[1], xyz[2]}); }
@@ -60,6 +63,7 @@ class SilPlant {
     while (data_->time + 0.5 * dt <= t_s) {
       rig_.servo->Track(model_.get(), data_.get());
       mj_step(model_.get(), data_.get());
+      ft_reader_.Update(model_.get(), data_.get());
       for (int k = 0; k < 3; ++k) {
         if (!std::isfinite(data_->qpos[k])) Fail("the simulation became unstable");
       }
@@ -81,9 +85,12 @@ class SilPlant {
     const double* p = data_->sensordata + rig_.pressure_adr;
     return {p[0], p[1], p[2], p[3]};
   }
-  // Force (N) and torque (N m) the transducer exerts on the cup, F/T site frame (z down the cup
-  // axis: pressing on a surface reads +z).
-  std::array<double, 6> ForceTorque() const {
+  // Force (N) and torque about the site (N m) the transducer exerts on the cup, F/T site frame (z
+  // down the cup axis: pressing on a surface reads +z): the F/T sensors on a rigid lip, the
+  // trial's contact balance on a flex skirt (runtime/tool_force.h).
+  std::array<double, 6> ForceTorque() const { return ft_reader_.Wrench(data_.get()); }
+  // MuJoCo's F/T sensors as they read, same frame (they miss a flex skirt's load).
+  std::array<double, 6> SensorForceTorque() const {
     std::array<double, 6> ft{};
     for (int k = 0; k < 3; ++k) {
       ft[k] = data_->sensordata[rig_.force_adr + k];
@@ -122,6 +129,7 @@ class SilPlant {
   ModelPtr model_;
   DataPtr data_;
   RigBinding rig_;
+  ToolForceReader ft_reader_;
 };
 
 }  // namespace
@@ -142,6 +150,7 @@ void BindSil(nb::module_& m) {
       .def("tool_rotation", &SilPlant::ToolRotation)
       .def("vacuum", &SilPlant::Vacuum)
       .def("force_torque", &SilPlant::ForceTorque)
+      .def("sensor_force_torque", &SilPlant::SensorForceTorque)
       .def("qpos", &SilPlant::Qpos)
       .def("geom_top", &SilPlant::GeomTop, "name"_a)
       .def_prop_ro("time", &SilPlant::Time)

@@ -606,6 +606,39 @@ class SilViewer(unittest.TestCase):
         self.assertIn("no display", p.stderr)
 
 
+def pressed_readings(scene, depths_m):
+    """The plant's F/T and MuJoCo's raw F/T sensors (z, N) with the tool site held 5 mm over the
+    disk's top and then at each depth below it (1 s each, the servo unsmoothed)."""
+    plant = ssc_twin.SilPlant(scene, 1)
+    plant.set_servo(0.0, 0.01)
+    top = plant.geom_top("disk")
+    readings = []
+    for depth in [-5e-3] + list(depths_m):
+        plant.set_target([top[0], top[1], top[2] - depth])
+        plant.advance_to(plant.time + 1.0)
+        readings.append((plant.force_torque(), plant.sensor_force_torque()))
+    return readings
+
+
+class SilForceTorque(unittest.TestCase):
+    def test_on_a_rigid_lip_the_plant_reads_the_ft_sensors(self):
+        for ft, raw in pressed_readings("disk_benchmark_gantry", [1.0e-3]):
+            self.assertEqual(list(ft), list(raw))
+
+    def test_on_the_flex_skirt_the_plant_reads_the_skirts_load(self):
+        # The trial's contact balance (runtime/tool_force.h): pressing the skirt 1.5 mm deeper
+        # into the disk adds its stiffness's push (about 0.9 N/mm), which MuJoCo's force sensor
+        # misses (a flex's contacts are left out of its recursion).
+        readings = pressed_readings("disk_benchmark_flex", [0.5e-3, 2.0e-3])
+        (air, air_raw), (shallow, shallow_raw), (deep, deep_raw) = readings
+        self.assertGreater(deep[2] - shallow[2], 0.5)
+        self.assertLess(abs(deep_raw[2] - shallow_raw[2]), 0.05)
+        # Over the disk, untouched: no contact and no seal to balance (the cup's weight is left out).
+        self.assertLess(abs(air[2]), 0.05)
+        for f in (air, shallow, deep):
+            self.assertTrue(all(math.isfinite(v) for v in f))
+
+
 class LabCheckout(unittest.TestCase):
     def test_lab_disk_script_starts(self):
         repo = os.environ.get("SSC_LAB_REPO")
