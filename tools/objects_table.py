@@ -2,7 +2,7 @@
 """Markdown table of object trials, one row per object over its seeds (docs/objects.md).
 
 usage: objects_table.py OBJECTS_CSV [OBJECTS_CSV ...] [--against OBJECTS_CSV ...] [--label TEXT]
-                        [--interval] [--disagree]
+                        [--interval] [--disagree] [--only PREFIX,...]
        objects_table.py --fillet-profile FILLET_PROFILE_CSV [FILLET_PROFILE_CSV ...]
 
 Reads the objects.csv files of `ssc objects` (rows of one object may be spread over several
@@ -221,6 +221,10 @@ def main(argv):
         "--interval", action="store_true", help="the 95 %% t interval of the mean end too"
     )
     parser.add_argument(
+        "--only",
+        help="comma-separated name prefixes: only the objects whose names start with one",
+    )
+    parser.add_argument(
         "--disagree",
         action="store_true",
         help="per object, whether the tiers disagree (needs --against)",
@@ -233,6 +237,9 @@ def main(argv):
     if args.fillet_profile:
         return fillet_profile_table(args.csv)
     rows = read_rows(args.csv)
+    if args.only:
+        prefixes = tuple(args.only.split(","))
+        rows = {k: v for k, v in rows.items() if k.startswith(prefixes)}
     against = read_rows(args.against) if args.against else {}
     if args.disagree:
         if not args.against:

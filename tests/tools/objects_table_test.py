@@ -89,6 +89,12 @@ class ObjectsTableTest(unittest.TestCase):
         hole = next(line for line in lines if line.startswith("| hole_d02"))
         self.assertIn("not run", hole)
 
+    def test_only_the_objects_named_by_prefix(self):
+        lines = run([self.seed1, "--only", "corner_,hole"])
+        self.assertEqual(
+            [line.split(" | ")[0] for line in lines[2:]], ["| corner_a270", "| hole_d02"]
+        )
+
     def test_the_t_interval_of_the_mean_end(self):
         d = self.dir.name
         path = write(
