@@ -16,8 +16,8 @@ is decided from (studies/object_trials.cc).
 
 With --fillet-profile, the fillet's along-edge profiles instead (fillet_profile.csv of `ssc
 objects`, one per seed): per stretch along the edge, the mean fillet radius, mean P and |dP| of
-each seed's control iterations there, as mean +- sd over the seeds; the last row is each seed's
-last 10 mm before its trial ended.
+each seed's control iterations there, as mean +- sd over the seeds; the first row is each seed's
+first 10 mm (the fillet's sharp start), the last its last 10 mm before its trial ended.
 """
 
 import argparse
@@ -160,11 +160,15 @@ def fillet_profile_table(paths):
     stretches = [
         (f"{a}–{b}", lambda r, a=a, b=b: a <= r["x_mm"] < b) for a, b in FILLET_STRETCHES_MM
     ]
-    for label, inside in stretches + [("the last 10 before the end", None)]:
+    first = ("the first 10 (the sharp start)", "first")
+    for label, inside in [first] + stretches + [("the last 10 before the end", None)]:
         per_seed = []
         for rows in seeds:
-            end = max(r["x_mm"] for r in rows)
-            sel = [r for r in rows if (inside(r) if inside else r["x_mm"] >= end - 10)]
+            start, end = min(r["x_mm"] for r in rows), max(r["x_mm"] for r in rows)
+            if inside == "first":
+                sel = [r for r in rows if r["x_mm"] < start + 10]
+            else:
+                sel = [r for r in rows if (inside(r) if inside else r["x_mm"] >= end - 10)]
             if sel:
                 per_seed.append(
                     {

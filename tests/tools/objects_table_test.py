@@ -163,6 +163,9 @@ class ObjectsTableTest(unittest.TestCase):
         self.assertIn("| 2 | 2.5 ± 0.0 | 100 ± 0 | 176 ± 14 |", first)
         late = next(line for line in lines if line.startswith("| 130–160 "))
         self.assertIn("| 1 |", late)  # the second seed ended at 120 mm
+        start = next(line for line in lines if line.startswith("| the first 10"))
+        # 10..19 mm: |dP| 200..191 and 180..171 Pa
+        self.assertIn("| 2 | 1.4 ± 0.0 | 100 ± 0 | 186 ± 14 |", start)
         last = next(line for line in lines if line.startswith("| the last 10"))
         # the last 10 mm before each end: 130..140 and 110..120 mm, |dP| 80..70 Pa in both
         self.assertIn("| 2 | 12.5 ± 1.4 | 100 ± 0 | 75 ± 0 |", last)
