@@ -90,12 +90,12 @@ def t_interval(v):
     return statistics.mean(v) - half, statistics.mean(v) + half
 
 
-# Two tiers disagree on an object when their outcomes over the seeds differ (counts of each
-# outcome), or, when they are not all `success`, their ends differ by more than END_TOLERANCE of
+# Two tiers disagree on an object when an outcome is seen in one and not in the other over its
+# seeds, or, when they are not all `success`, their ends differ by more than END_TOLERANCE of
 # the unit and the 95 % Welch interval of the difference of the mean ends excludes 0.
 END_TOLERANCE = {"mm": 2.0, "deg": 5.0}
 DISAGREE_RULE = (
-    "outcomes differ over the seeds, or (not all success) the mean ends differ by more than "
+    "an outcome seen in one tier's seeds and not the other's, or (not all success) the mean ends differ by more than "
     "2 mm / 5 deg with the 95 % Welch interval of the difference excluding 0"
 )
 
@@ -103,7 +103,7 @@ DISAGREE_RULE = (
 def disagreement(trials, other):
     """'' when the tiers agree on the object, else why they do not."""
     mine, theirs = outcomes_count(trials), outcomes_count(other)
-    if mine != theirs:
+    if set(mine) != set(theirs):
         return "outcome"
     if set(mine) == {"success"}:
         return ""
@@ -200,6 +200,7 @@ def disagreement_table(rows, against, args):
             verdict = f"**disagree**: {why}" if why else "agree"
             counts = f"{len(trials)} / {len(other)}"
         print(f"| {name} | {counts} | {verdict} |")
+    print(f"\nThe tiers disagree on an object when {DISAGREE_RULE}.")
     return 0
 
 
