@@ -257,9 +257,9 @@ bool RunObjectStudy(const ObjectStudySpec& spec,
     TrialConfig base;
     base.law = spec.law;
     const ObjectSpec& object = spec.objects[jobs[j].object];
-    // A flex step costs about 14 segment steps (docs/flex_cost.md): the flex trials start first.
+    // A flex step costs about 46 segment steps (docs/flex_cost.md): the flex trials start first.
     const double tier_weight =
-        ObjectTier(spec.scene_kind, object) == ObjectSceneKind::kFlex ? 14.0 : 1.0;
+        ObjectTier(spec.scene_kind, object) == ObjectSceneKind::kFlex ? 46.0 : 1.0;
     return tier_weight * ObjectTrialConfig(object, base).timeout_s;
   };
   set.run = [&](size_t j) {

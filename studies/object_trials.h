@@ -22,10 +22,11 @@ inline constexpr const char* kObjectSceneKindNames = "gantry, arm, flex, auto";
 // False + *error naming the valid names for an unknown one.
 bool ObjectSceneKindByName(const std::string& name, ObjectSceneKind* kind, std::string* error);
 const char* ObjectSceneKindName(ObjectSceneKind kind);
+// Whether the flex skirt and the segment lip disagree on `spec` (its outcome, or where it is
+// lost), from the measured evidence (docs/flex_objects.md, "Which tier --scene-kind auto runs").
+bool FlexTierDisagrees(const ObjectSpec& spec);
 // The tier an object runs in for `kind`: `kind` itself, except kAuto: the flex tier where the
-// lip's shape decides the outcome (corners, compound shapes, the fillet, disks narrower than the
-// cup body), the gantry where the two tiers agree (holes, disks at least the body wide;
-// measured in docs/objects.md, "Tiers").
+// two tiers disagree (FlexTierDisagrees), the gantry where they agree.
 ObjectSceneKind ObjectTier(ObjectSceneKind kind, const ObjectSpec& spec);
 // The object's scene file (no directory) of that kind (kAuto: ObjectTier's).
 std::string ObjectSceneFile(const ObjectSpec& spec, ObjectSceneKind kind);
