@@ -95,8 +95,9 @@ def t_interval(v):
 # the unit and the 95 % Welch interval of the difference of the mean ends excludes 0.
 END_TOLERANCE = {"mm": 2.0, "deg": 5.0}
 DISAGREE_RULE = (
-    "an outcome is seen in one tier's seeds and not in the other's, or (not all success) the mean ends differ by more than "
-    "2 mm / 5 deg with the 95 % Welch interval of the difference excluding 0"
+    "an outcome is seen in one tier's seeds and not in the other's, or (not all success) the "
+    "mean ends differ by more than 2 mm / 5 deg with the 95 % Welch interval of the difference "
+    "excluding 0"
 )
 
 
