@@ -91,13 +91,14 @@ def t_interval(v):
 
 
 # Two tiers disagree on an object when an outcome is seen in one and not in the other over its
-# seeds, or, when they are not all `success`, their ends differ by more than END_TOLERANCE of
-# the unit and the 95 % Welch interval of the difference of the mean ends excludes 0.
+# seeds, or, when they are not all `success`, the ends of their followed trials (not failure_I;
+# two or more in each tier) differ by more than END_TOLERANCE of the unit and the 95 % Welch
+# interval of the difference of the mean ends excludes 0.
 END_TOLERANCE = {"mm": 2.0, "deg": 5.0}
 DISAGREE_RULE = (
     "an outcome is seen in one tier's seeds and not in the other's, or (not all success) the "
-    "mean ends differ by more than 2 mm / 5 deg with the 95 % Welch interval of the difference "
-    "excluding 0"
+    "mean ends of the followed trials (not failure_I, two or more in each tier) differ by more "
+    "than 2 mm / 5 deg with the 95 % Welch interval of the difference excluding 0"
 )
 
 
@@ -108,13 +109,15 @@ def disagreement(trials, other):
         return "outcome"
     if set(mine) == {"success"}:
         return ""
-    a, b = [end_value(r)[0] for r in trials], [end_value(r)[0] for r in other]
+    # Where the followed trials ended (a failure_I never followed: its end is the landing's).
+    a = [end_value(r)[0] for r in trials if r["outcome"] != "failure_I"]
+    b = [end_value(r)[0] for r in other if r["outcome"] != "failure_I"]
+    if len(a) < 2 or len(b) < 2:
+        return ""  # no interval from one trial: the outcomes decide
     unit = end_value(trials[0])[1]
     diff = statistics.mean(a) - statistics.mean(b)
     if abs(diff) <= END_TOLERANCE[unit]:
         return ""
-    if len(a) < 2 or len(b) < 2:
-        return f"end ({diff:+.1f} {unit})"
     from scipy import stats
 
     va, vb = statistics.variance(a) / len(a), statistics.variance(b) / len(b)

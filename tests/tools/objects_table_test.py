@@ -119,7 +119,9 @@ class ObjectsTableTest(unittest.TestCase):
                 for k in (1, 2, 3)
             ]
             + [["corner_a015", "corner", k, "lost_edge", 5.0 + k, 0, -1, ""] for k in (1, 2, 3)]
-            + [["hole_d02", "hole", k, "success", -1, -400.0, -1, ""] for k in (1, 2, 3)],
+            + [["hole_d02", "hole", k, "success", -1, -400.0, -1, ""] for k in (1, 2, 3)]
+            + [["disk_d02", "disk", k, "failure_I", -1, 1.0, -1, ""] for k in (1, 2)]
+            + [["disk_d02", "disk", 3, "lost_edge", -1, -130.0, -1, ""]],
         )
         gantry = [
             write(
@@ -129,6 +131,16 @@ class ObjectsTableTest(unittest.TestCase):
                     ["corner_a030", "corner", k, "lost_edge", 34.5 + 0.1 * k, 0, -1, ""],
                     ["corner_a015", "corner", k, "lost_edge", 1.0 + 0.1 * k, 0, -1, ""],
                     ["hole_d02", "hole", k, "success", -1, -380.0, -1, ""],
+                    [
+                        "disk_d02",
+                        "disk",
+                        k,
+                        "lost_edge" if k == 3 else "failure_I",
+                        -1,
+                        170.0,
+                        -1,
+                        "",
+                    ],
                 ],
             )
             for k in (1, 2, 3)
@@ -140,6 +152,8 @@ class ObjectsTableTest(unittest.TestCase):
         self.assertIn("**disagree**: end (+5.8", rows["corner_a015"])
         self.assertTrue(rows["hole_d02"].endswith("| agree |"))  # all success
         self.assertIn("| 3 / 3 |", rows["hole_d02"])
+        # failure_I ends are the landing's; one followed trial a tier gives no interval
+        self.assertTrue(rows["disk_d02"].endswith("| agree |"), rows["disk_d02"])
         with self.assertRaises(SystemExit):
             run([flex, "--disagree"])
 
