@@ -9,9 +9,9 @@ the skirt from a low oblique camera, the cup body drawn translucent so the skirt
 pressure plugin marks each rim point: green sealed (in contact), amber a gap within the open
 depth, red open.
 
-Usage (docs/flex_objects.md regenerates its figures with these):
+Usage:
   MUJOCO_GL=egl PYTHONPATH=build/python_pkg .venv/bin/python tools/render_lip.py \\
-      --object corner_a270 --at-arc-mm 58 --azimuth 225 --out docs/figures/lip_corner_a270.png
+      --object corner_a270 --at-arc-mm 58 --azimuth 225 --out out/lip_corner_a270.png
 """
 
 import argparse
