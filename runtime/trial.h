@@ -162,6 +162,9 @@ class ContourTrial : public ControlCallback {
   const std::vector<Point2>& path() const { return path_xy_; }
   int tool_site() const { return rig_.tool_site; }
   const RigBinding& rig() const { return rig_; }
+  // The F/T transducer's wrench on the cup, its site's frame (runtime/tool_force.h): the sensors
+  // on a rigid lip, the contact balance on a flex skirt.
+  std::array<double, 6> ToolWrench() const { return ft_reader_.Wrench(d_); }
   // The four filtered chamber pressures now (the plugin's output), Pa.
   std::array<double, 4> Pressures() const;
   // What the controller read at the last iteration: the plugin's output through the lip tilt
@@ -241,7 +244,7 @@ class ContourTrial : public ControlCallback {
   bool active_ = false;         // the servo is bound; the callback may act
   bool transfer_done_ = false;  // over the landing point
   double ft_tare_n_ = 0;
-  ToolForceReader ft_reader_;  // the transducer's axial reading (runtime/tool_force.h)
+  ToolForceReader ft_reader_;  // the transducer's reading (runtime/tool_force.h)
   int tare_samples_ = 0;
   double hold_z_ = 0;
   double command_z_ = 0;        // the tool height the controller asks for (hold_z_ first)

@@ -104,16 +104,9 @@ class SteppedTrial {
     const double* p = data_->site_xpos + 3 * trial_->tool_site();
     return {p[0], p[1], p[2]};
   }
-  std::array<double, 6> ForceTorque() const {
-    // The F/T sensors as the model names them (force then torque, N and N m).
-    std::array<double, 6> ft{};
-    const RigBinding& rig = trial_->rig();
-    for (int k = 0; k < 3; ++k) {
-      ft[k] = data_->sensordata[rig.force_adr + k];
-      if (rig.torque_adr >= 0) ft[3 + k] = data_->sensordata[rig.torque_adr + k];
-    }
-    return ft;
-  }
+  // The F/T (force then torque, N and N m, its site's frame): the sensors on a rigid lip, the
+  // trial's contact balance on a flex skirt (runtime/tool_force.h).
+  std::array<double, 6> ForceTorque() const { return trial_->ToolWrench(); }
   std::string Phase() const { return PhaseName(trial_->phase()); }
   nb::dict Result() const { return ResultDict(scene_, trial_->config(), trial_->result()); }
   nb::dict LastStep() const { return StepDict(trial_->last_step()); }
