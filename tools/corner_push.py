@@ -24,12 +24,10 @@ Usage (from the repository, after a build):
 
 import argparse
 import os
-import pathlib
-import subprocess
 import sys
-import tempfile
 
-ROOT = pathlib.Path(__file__).resolve().parents[1]
+import flex_rig
+
 INSET_M = -2.5e-3  # the cup's centre inside the edge y = 0 (the static curve's 100 Pa point)
 SPEED_M_S = 0.02
 
@@ -47,19 +45,8 @@ def parse(p):
         default=-3.0,
         help="the set point's end along the edge, mm from the far wall",
     )
-    p.add_argument(
-        "--set",
-        action="append",
-        default=[],
-        metavar="KEY=VALUE",
-        help="a skirt parameter of tools/make_flex_tool.py (repeatable)",
-    )
-    p.add_argument(
-        "--option",
-        action="append",
-        default=[],
-        metavar="KEY=VALUE",
-        help="a MuJoCo <option> field for both cups, e.g. iterations=10 (the flex scenes' cap)",
+    flex_rig.add_variant_arguments(
+        p, "a MuJoCo <option> field for both cups, e.g. iterations=10 (the flex scenes' cap)"
     )
     p.add_argument("--frames", help="write PNG frames to this directory")
     p.add_argument("--frame-mm", type=float, default=2.0, help="set-point travel between frames")
@@ -79,13 +66,7 @@ def parse(p):
         p.error("--elevation: in [-89, 89] deg")
     if not 0.2 <= a.frame_mm <= 10:
         p.error("--frame-mm: in [0.2, 10] mm")
-    a.options = {}
-    for item in a.option:
-        key, _, text = item.partition("=")
-        try:
-            a.options[key] = float(text)
-        except ValueError:
-            p.error(f"--option {item!r}: expected KEY=NUMBER")
+    a.options = flex_rig.parse_options(p, a.option)
     try:
         a.width, a.height = (int(v) for v in a.size.split("x"))
     except ValueError:
@@ -148,31 +129,19 @@ def main():
     a = parse(argparse.ArgumentParser(description=__doc__.split("\n")[0]))
     import numpy as np
 
-    import flex_rig
-
     mujoco, rig_module = flex_rig.load(argparse.ArgumentParser())
-    for key in a.options:
-        if not hasattr(mujoco.MjOption(), key):
-            sys.exit(f"corner_push.py: --option {key}: not a MuJoCo option field")
+    flex_rig.check_options(mujoco, a.options, lambda text: sys.exit(f"corner_push.py: {text}"))
 
     def with_options(rig):
-        for key, number in a.options.items():
-            setattr(rig.m.opt, key, type(getattr(rig.m.opt, key))(number))
+        flex_rig.apply_options(rig.m, a.options)
         return rig
 
-    tool, variant = "ssc_tool_flex.xml", None
+    tool, variant = flex_rig.variant_tool(a.set, "flex_push_")
     params = rig_module.skirt_parameters()
     if a.set:
-        # In a folder of its own: the repository's models/ holds the scenes' models only (the
-        # rig takes a path, and picks the flex integrator by the name).
-        variant = tempfile.TemporaryDirectory(prefix="flex_push_")
-        tool = os.path.join(variant.name, "ssc_tool_flex_variant.xml")
-        cmd = [sys.executable, str(ROOT / "tools" / "make_flex_tool.py"), "--out", tool]
         for item in a.set:
-            cmd += ["--set", item]
             key, _, text = item.partition("=")
             params[key] = float(text) if key in params else params.get(key)
-        subprocess.run(cmd, check=True)
         rig_module.skirt_parameters = lambda: params
     throat_m = params["throat_radius_mm"] * 1e-3
     try:

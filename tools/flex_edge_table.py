@@ -16,14 +16,9 @@ Usage (from the repository, after a build):
 """
 
 import argparse
-import os
-import pathlib
-import subprocess
-import sys
-import tempfile
 import time
 
-ROOT = pathlib.Path(__file__).resolve().parents[1]
+import flex_rig
 
 
 def main():
@@ -34,19 +29,8 @@ def main():
         help="cup centre inside the edge, mm, comma-separated; each in [-5, 5.5]",
     )
     p.add_argument("--move-mm", type=float, default=0.0, help="then move along the edge, mm")
-    p.add_argument(
-        "--set",
-        action="append",
-        default=[],
-        metavar="KEY=VALUE",
-        help="a skirt parameter of tools/make_flex_tool.py (repeatable)",
-    )
-    p.add_argument(
-        "--option",
-        action="append",
-        default=[],
-        metavar="KEY=VALUE",
-        help="a MuJoCo <option> field, e.g. iterations=5 or solver=1 (repeatable)",
+    flex_rig.add_variant_arguments(
+        p, "a MuJoCo <option> field, e.g. iterations=5 or solver=1 (repeatable)"
     )
     a = p.parse_args()
     try:
@@ -57,37 +41,18 @@ def main():
         p.error("--inside-mm: each in [-5, 5.5] mm")
     if not 0 <= a.move_mm <= 20:
         p.error("--move-mm: in [0, 20] mm")
-    options = {}
-    for item in a.option:
-        key, sep, text = item.partition("=")
-        try:
-            options[key] = float(text)
-        except ValueError:
-            p.error(f"--option {item!r}: expected KEY=NUMBER")
+    options = flex_rig.parse_options(p, a.option)
     import numpy as np
 
-    import flex_rig
-
     mujoco, rig_module = flex_rig.load(p)
-    for key in options:
-        if not hasattr(mujoco.MjOption(), key):
-            p.error(f"--option {key}: not a MuJoCo option field")
-    tool, variant = "ssc_tool_flex.xml", None
-    if a.set:
-        # In a folder of its own: the repository's models/ holds the scenes' models only.
-        variant = tempfile.TemporaryDirectory(prefix="flex_edge_")
-        tool = os.path.join(variant.name, "ssc_tool_flex_variant.xml")
-        cmd = [sys.executable, str(ROOT / "tools" / "make_flex_tool.py"), "--out", tool]
-        for item in a.set:
-            cmd += ["--set", item]
-        subprocess.run(cmd, check=True)
+    flex_rig.check_options(mujoco, options, p.error)
+    tool, variant = flex_rig.variant_tool(a.set, "flex_edge_")
     edge = rig_module.box((0.05, 0.025, 0.005), (0, -0.025, -0.005))  # the plate covers y < 0
     try:
         for inside in insets:
             rig = rig_module.Rig(edge, tool=tool)
             rig.m.opt.iterations = 10  # the flex scenes' cap
-            for key, number in options.items():
-                setattr(rig.m.opt, key, type(getattr(rig.m.opt, key))(number))
+            flex_rig.apply_options(rig.m, options)
             rig.press_to_preload(0.0, y_m=-inside * 1e-3)
             samples = []
             for _ in range(50):
