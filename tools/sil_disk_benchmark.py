@@ -38,8 +38,13 @@ import numpy as np
 SCRIPT = "src/SDL_ur_control_edgeFollowing_livePlot_oneDiskRevolution.py"
 DISK_CENTRE_BASE_LINK = (-0.630, 0.097)  # where ssc sil puts the lab's disk (docs/sil.md)
 DISK_RADIUS_M = 0.035
-# ssc sil ran the script: 0 the trial succeeded, 5 it did not (docs/reliability.md).
-SIL_RAN = (0, 5)
+sys.path.insert(
+    0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build", "python_pkg")
+)
+from ssc_twin._core import EXIT_CODES  # noqa: E402  the one exit-code table (common/exit_codes.h)
+
+# ssc sil ran the script: the trial succeeded, or it did not (docs/reliability.md).
+SIL_RAN = (EXIT_CODES["ok"], EXIT_CODES["trial_failed"])
 
 
 def seeds(text):
