@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
+#include <vector>
 
 #include "robotlog/plain_log.h"
 #include "runtime/mujoco_model.h"
@@ -22,24 +24,31 @@ std::string Point(const std::array<double, 3>& p) {
   return buf;
 }
 
-// A replayed cup that is not where the log shows it: at most of the samples where the log holds
-// a seal (mean vacuum above half its peak) the replay holds less than a quarter of it. Such a
+// A replayed cup that is not where the log shows it: at most of the samples where the log reads
+// the object (mean vacuum above a tenth of its 90th percentile: a seal, or an edge followed from
+// the landing on; a grasp's last samples are not the level) the replay holds less than a quarter
+// of it. Such a
 // comparison measures the frames, not the twin: "" when the replay agrees, else the warning
 // naming the options that place the path.
 std::string ReplayDisagreement(const ReplayComparison& c, const CompareOptions& o,
                                const std::string& log_frame) {
   auto mean = [](const std::array<double, 4>& p) { return 0.25 * (p[0] + p[1] + p[2] + p[3]); };
-  double peak = 0;
-  for (const auto& p : c.log_pa) peak = std::max(peak, mean(p));
-  if (!(peak > 0)) return "";
-  int sealed = 0, lost = 0;
+  std::vector<double> means;
+  means.reserve(c.log_pa.size());
+  for (const auto& p : c.log_pa) means.push_back(mean(p));
+  if (means.empty()) return "";
+  const auto at = means.begin() + static_cast<std::ptrdiff_t>(0.9 * (means.size() - 1));
+  std::nth_element(means.begin(), at, means.end());
+  const double level = 0.1 * *at;
+  if (!(level > 0)) return "";
+  int reading = 0, lost = 0;
   for (size_t i = 0; i < c.log_pa.size(); ++i) {
     const double log_mean = mean(c.log_pa[i]);
-    if (log_mean < 0.5 * peak) continue;
-    ++sealed;
+    if (log_mean < level) continue;
+    ++reading;
     if (mean(c.sim_pa[i]) < 0.25 * log_mean) ++lost;
   }
-  if (sealed < 10 || lost * 2 <= sealed) return "";
+  if (reading < 10 || lost * 2 <= reading) return "";
   const std::string frames =
       log_frame == "scene"
           ? "and that the plain CSV's poses are in the scene frame (--log-frame and "
@@ -47,11 +56,11 @@ std::string ReplayDisagreement(const ReplayComparison& c, const CompareOptions& 
           : "--log-frame (" + log_frame + " now) and --object-pose";
   char buf[640];
   std::snprintf(buf, sizeof(buf),
-                "the replay disagrees with the log: at %d of the %d samples where the log holds "
-                "a seal (mean vacuum above %.0f Pa) the replayed cup holds less than a quarter "
-                "of it, so the replayed path is likely off the object. Check --tcp-offset "
+                "the replay disagrees with the log: at %d of the %d samples where the log reads "
+                "the object (mean vacuum above %.0f Pa) the replayed cup holds less than a "
+                "quarter of it, so the replayed path is likely off the object. Check --tcp-offset "
                 "(%.1f mm now; the lab's tool %.1f mm), %s",
-                lost, sealed, 0.5 * peak, o.processing.tcp_offset_m * 1e3, kToolCentreOffsetM * 1e3,
+                lost, reading, level, o.processing.tcp_offset_m * 1e3, kToolCentreOffsetM * 1e3,
                 frames.c_str());
   return buf;
 }

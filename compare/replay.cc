@@ -125,9 +125,9 @@ bool ReplayPath(const mjModel* m, const ProcessedLog& log, double tcp_offset_m,
       place(t0 + d->time);
       mj_step(m, d);
       const mjtNum* xy = d->site_xpos + 3 * site;
-      AdvanceLipShear(lip,
-                      WorldToTool(d->site_xmat + 9 * site, xy[0] - last_xy[0], xy[1] - last_xy[1]),
-                      &shear);
+      // As in the trial: the lip drags only while the cup is pressed on something.
+      DragLip(lip, WorldToTool(d->site_xmat + 9 * site, xy[0] - last_xy[0], xy[1] - last_xy[1]),
+              ft_adr >= 0 ? d->sensordata[ft_adr] - ft_tare : kLipPressedN, &shear);
       last_xy = {xy[0], xy[1]};
     }
     std::array<double, 4> sim;

@@ -13,8 +13,9 @@ namespace {
 // the replay tier and the gantry's tool).
 constexpr double kTwinToolQuat[4] = {0, M_SQRT1_2, -M_SQRT1_2, 0};
 
-// Within this of the landing point the cup is above the object's centre.
-constexpr double kAboveCentreM = 0.5e-3;
+// Within this of the disk's centre the cup is over it: the recording starts there, as the lab's
+// starts over its engage point (the centre), before the cup moves out to the start.
+constexpr double kOverCentreM = 0.5e-3;
 
 }  // namespace
 
@@ -22,8 +23,8 @@ std::vector<TwinSample> TwinRunFromTrial(const TrialResult& trial, const TrialCo
   std::vector<TwinSample> run;
   bool above = false;
   for (const TrialLogRow& r : trial.log) {
-    above = above || std::hypot(r.tool_m[0] - config.target.approach[0],
-                                r.tool_m[1] - config.target.approach[1]) < kAboveCentreM;
+    above = above || std::hypot(r.tool_m[0] - config.target.goal.centre[0],
+                                r.tool_m[1] - config.target.goal.centre[1]) < kOverCentreM;
     if (!above || (!run.empty() && r.t_s <= run.back().t_s)) continue;
     TwinSample s;
     s.t_s = r.t_s;
@@ -69,8 +70,9 @@ RobotLog LabLogFromTrial(const TrialResult& trial, const TrialConfig& config,
   a.beta = law.beta;
   a.d_lat_m = law.step_mm * 1e-3;
   a.disk_radius_mm = config.target.disk_radius_m * 1e3;
-  a.start_offset_m = std::hypot(config.target.start[0] - config.target.approach[0],
-                                config.target.start[1] - config.target.approach[1]);
+  // The lab's start_offset runs from the disk's centre (its engage point) to the start.
+  a.start_offset_m = std::hypot(config.target.start[0] - config.target.goal.centre[0],
+                                config.target.start[1] - config.target.goal.centre[1]);
   a.p_lims_pa = {law.p_ref_pa, law.p_ref_pa};
   a.alpha_beta = {0.0, law.beta, 0.0, law.beta};
   a.success = trial.outcome == Outcome::kSuccess ? 1 : 0;
@@ -101,8 +103,8 @@ bool WriteLabRecordingFromTrial(const mjModel* scene, const TrialResult& trial,
                                 std::vector<std::string>* written, std::string* error) {
   const std::vector<SceneObject> objects = FindSceneObjects(scene);
   ObjectPose at;
-  at.x_m = config.target.approach[0];
-  at.y_m = config.target.approach[1];
+  at.x_m = config.target.goal.centre[0];
+  at.y_m = config.target.goal.centre[1];
   const SceneObject* disk = NearestSceneObject(objects, LogFrame::kUrBase, at);
   if (disk == nullptr) {
     *error = "the trial's scene has no object to place in the lab's frame";

@@ -26,7 +26,6 @@ constexpr double kCornerReachM = 70 * kMm;    // radius of the corner's round ba
 constexpr double kCornerStartM = 40 * kMm;    // start: this far before the apex on edge 1
 // Success: the cup follows edge 2 for one body diameter past the apex.
 constexpr double kCornerPastM = kCupBodyDiameterMm * kMm;
-constexpr double kCupBodyRadiusM = 0.5 * kCupBodyDiameterMm * kMm;
 
 ObjectSpec Disk(const std::string& name, double diameter_mm) {
   ObjectSpec s;
@@ -39,9 +38,6 @@ ObjectSpec Disk(const std::string& name, double diameter_mm) {
   // East side, inside by the inset (a disk smaller than that: the cup starts over its centre).
   FinishSpec(&s, 0, std::min(kStartInsetM, r), W(), 0);
   s.trial.goal = TrialGoal::AroundDisk(W(), r);
-  // A disk wider than the cup body lands on its centre and moves out to the start, as published
-  // for the 35 mm disk; on a smaller one the lip might miss it, so the cup lands at the start.
-  if (r > kCupBodyRadiusM) s.trial.landing_xy_m = W();
   char desc[160];
   std::snprintf(desc, sizeof(desc),
                 "disk of diameter %.4g mm, 10 mm tall: one cylinder; start %.1f mm inside its "

@@ -38,6 +38,9 @@ struct ChamberPressureConfig {
   // A flex skirt only (segment lips carry none). Off by default: the modelled skirt lacks the
   // chamber walls that hold the real lip against a sealed cup's vacuum (docs/pneumatics.md).
   int lip_vacuum_load = 0;
+  // How far the lip plane may be pressed below a surface: a trial's approach stops there if the
+  // F/T has not read its preload yet, and no controller takes the cup deeper.
+  double lip_max_press_m = 0.002;
 };
 
 // One config key. Numeric keys use get/set (value in the key's unit); a key with parse_text

@@ -277,6 +277,12 @@ bool ProcessRobotLog(const RobotLog& log, const ProcessOptions& o, ProcessedLog*
                          "): the window must hold only the cup in air before the trial");
       return false;
     }
+    if (o.moving_average < 1) {
+      text::SetError(error, p_file, 0, 0,
+                     "moving average of " + std::to_string(o.moving_average) +
+                         " samples (--average) is out of range: at least 1 (1 = none)");
+      return false;
+    }
     if (o.moving_average > static_cast<int>(p.size()) / 2) {
       text::SetError(error, p_file, 0, 0,
                      "moving average of " + std::to_string(o.moving_average) +

@@ -34,7 +34,6 @@ ApproachKey ApproachKeyOf(const TrialConfig& c) {
           Bits(t.start[0]),
           Bits(t.start[1]),
           Bits(t.surface_top_z_m),
-          Bits(t.max_compression_m),
           Bits(c.effects.lip.slip_mm),
           Bits(c.effects.lip.tilt_decades),
           Bits(c.effects.lip.peel_decades),

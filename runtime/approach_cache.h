@@ -37,7 +37,7 @@ namespace ssc {
 // thresholds, the control period, the timeout, the seed, the loop timing and chamber effects and
 // the goal, which only following reads. A new TrialConfig field that the approach reads must
 // be added here.
-using ApproachKey = std::array<std::uint64_t, 16>;
+using ApproachKey = std::array<std::uint64_t, 15>;
 ApproachKey ApproachKeyOf(const TrialConfig& c);
 
 // Why trials on `m` cannot share their approach ("" when they can).

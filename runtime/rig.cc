@@ -91,6 +91,7 @@ std::string RigBinding::BindSensors(const mjModel* m, mjData* d) {
   tool_site = sensor->site_id();
   pressure_instance = sensor->instance();
   pressure_adr = sensor->sensor_adr();
+  max_press_m = sensor->config().lip_max_press_m;
   force_sensor = mj_name2id(m, mjOBJ_SENSOR, kToolForceSensorName);
   if (force_sensor < 0 || m->sensor_type[force_sensor] != mjSENS_FORCE) {
     return std::string("scene has no force sensor named '") + kToolForceSensorName +

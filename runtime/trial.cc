@@ -36,10 +36,10 @@ std::string PointText(const Vec3& p) {
 }  // namespace
 
 TrialTarget TrialTarget::Disk(double centre_x_m, double centre_y_m, double radius_m,
-                              double start_offset_m) {
+                              double start_offset_m, DiskLanding landing) {
   TrialTarget t;
-  t.approach = {centre_x_m, centre_y_m};
   t.start = {centre_x_m + start_offset_m, centre_y_m};
+  t.approach = landing == DiskLanding::kAtStart ? t.start : Point2{centre_x_m, centre_y_m};
   t.goal = TrialGoal::AroundDisk({centre_x_m, centre_y_m}, radius_m);
   t.edge =
       std::make_shared<const ContourPath>(ContourPath::Circle({centre_x_m, centre_y_m}, radius_m));
@@ -290,7 +290,8 @@ bool ContourTrial::ControllerObservesApproach() const {
 
 void ContourTrial::TrackLipShear(const Vec3& tool) {
   const mjtNum* R = d_->site_xmat + 9 * rig_.tool_site;
-  effects_.MoveTool(WorldToTool(R, tool[0] - last_tool_[0], tool[1] - last_tool_[1]));
+  effects_.MoveTool(WorldToTool(R, tool[0] - last_tool_[0], tool[1] - last_tool_[1]),
+                    FtNormalForce());
 }
 
 bool ContourTrial::MoveSetPointToward(const Point2& point, double z) {
@@ -328,8 +329,7 @@ void ContourTrial::TareAndApproach(double t, const Vec3& tool) {
     transfer_done_ = true;
     reach_wait_since_s_ = -1;
   }
-  const bool deep_enough =
-      tool[2] <= config_.target.surface_top_z_m - config_.target.max_compression_m;
+  const bool deep_enough = tool[2] <= config_.target.surface_top_z_m - rig_.max_press_m;
   if (FtNormalForce() >= config_.approach_force_n || deep_enough) {
     hold_z_ = tool[2];
     command_z_ = hold_z_;
@@ -404,8 +404,7 @@ bool ContourTrial::TakeCommand(const ControllerCommand& command, double t, const
   }
   last_step_.step_m = command.step_m;
   // Never deeper than the approach's limit (nor than where the approach itself stopped).
-  const double floor_z =
-      std::min(hold_z_, config_.target.surface_top_z_m - config_.target.max_compression_m);
+  const double floor_z = std::min(hold_z_, config_.target.surface_top_z_m - rig_.max_press_m);
   command_z_ = std::max(hold_z_ + command.height_offset_m, floor_z);
   if (!command.lifted) {
     lifted_since_s_ = -1;

@@ -1,8 +1,8 @@
 // One contour-following trial, headless or in the viewer: the same control callback.
 //
-// Phases (as on the robot): APPROACH from above the object's centre until the tared F/T reads
-// the start-up compression, then hold that height; MOVE to the start point (start_offset from the
-// centre toward start_direction); FOLLOW the edge with the controller (the published contour law
+// Phases (as on the robot): APPROACH, above the landing point (the start point by default), until
+// the tared F/T reads the start-up compression, then hold that height; MOVE to the start point
+// (none when landed there); FOLLOW the edge with the controller (the published contour law
 // by default; controller/controller.h), one control iteration per control_period; then DONE
 // with one outcome. Failure checks run only while following.
 #ifndef SSC_RUNTIME_TRIAL_H_
@@ -41,14 +41,19 @@ const char* PhaseName(TrialPhase phase);
 // What the trial follows: the landing and start points, the goal that completes it, and the
 // true contour for the metrics. The default is the disk benchmark (geometry/dimensions.h: the
 // disk at W, the start east of its centre, one counter-clockwise loop).
+// Where the cup lands on a disk: at the start point, as the lab's script does (it moves the cup
+// over the start, turns the pump to full and then lowers it to the preload), or over the centre,
+// as the paper's text has it. Landed on the centre the cup seals, and a sealed skirt's vacuum
+// pulls harder than the preload (docs/flex_skirt.md), so the transducer never reads it there.
+enum class DiskLanding { kAtStart, kAtCentre };
+
 struct TrialTarget {
-  Point2 approach{kWorkspaceX, kWorkspaceY};  // the cup descends here (world x/y, m)
   Point2 start{kWorkspaceX + kBenchmarkStartOffsetM, kWorkspaceY};  // cup centre at following
+  Point2 approach = start;  // the cup descends here (world x/y, m)
   TrialGoal goal = TrialGoal::AroundDisk({kWorkspaceX, kWorkspaceY}, kBenchmarkDiskRadiusM);
   double disk_radius_m = kBenchmarkDiskRadiusM;  // > 0: r_mean / dr / sigma_r about the centre
-  double surface_top_z_m = 0.010;  // the approach never takes the lip plane deeper than
-                                   // max_compression_m below this
-  double max_compression_m = 0.002;
+  double surface_top_z_m = 0.010;  // the approach never takes the lip plane deeper than the
+                                   // tool's lip_max_press_mm below this
   // The true contour: the contour distance, the tracked arc position, goal points, the band of
   // following (the default: the benchmark disk's circle).
   std::shared_ptr<const ContourPath> edge = std::make_shared<const ContourPath>(
@@ -56,7 +61,7 @@ struct TrialTarget {
 
   // The disk benchmark with its start point `start_offset_m` east of the centre.
   static TrialTarget Disk(double centre_x_m, double centre_y_m, double radius_m,
-                          double start_offset_m);
+                          double start_offset_m, DiskLanding landing = DiskLanding::kAtStart);
 };
 
 struct TrialConfig {

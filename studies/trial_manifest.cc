@@ -27,6 +27,8 @@ SweepManifest TrialManifest(const mjModel* m, const std::string& scene, const Tr
       {"approach_force_n", num(c.approach_force_n)},
       {"start_x_m", num(c.target.start[0])},
       {"start_y_m", num(c.target.start[1])},
+      {"landing_x_m", num(c.target.approach[0])},
+      {"landing_y_m", num(c.target.approach[1])},
       {"p_noise_pa", num(c.law.p_noise_pa)},
       {"p_grasp_pa", num(c.law.p_grasp_pa)},
       {"object_on", c.law.side == FollowSide::kObjectOnRight ? "right" : "left"},

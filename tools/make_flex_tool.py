@@ -289,6 +289,12 @@ def parse_args(argv):
     return args.check, overrides, args.out
 
 
+def max_press_mm():
+    """The lip plane's deepest press: the walls end at the throat, height_mm above the rim, so
+    pressed deeper than the height less the skirt's thickness the walls would land."""
+    return value("height_mm") - value("thickness_mm")
+
+
 def tool_xml(walls=True, vacuum_load=True):
     """The flex tool's MJCF; tests build variants without the walls or the vacuum load."""
     text = (ROOT / "models" / "ssc_tool.xml").read_text()
@@ -306,7 +312,8 @@ def tool_xml(walls=True, vacuum_load=True):
     text = text.replace(
         '<instance name="pressure"/>',
         '<instance name="pressure">\n        <config key="lip_vacuum_load" '
-        f'value="{int(vacuum_load)}"/>\n      </instance>',
+        f'value="{int(vacuum_load)}"/>\n        <config key="lip_max_press_mm" '
+        f'value="{max_press_mm():.6g}"/>\n      </instance>',
     )
     text = re.sub(
         r"<!--\n  Smart Suction Cup tool:",

@@ -206,6 +206,15 @@ std::array<double, 2> StepError(const LoopTimingParams& p, double step_m, std::u
   return {sigma_m * u[0], sigma_m * u[1]};
 }
 
+void DragLip(const LipShearParams& p, const std::array<double, 2>& body_move_m, double press_n,
+             LipShearState* s) {
+  if (press_n < kLipPressedN) {
+    *s = LipShearState();
+    return;
+  }
+  AdvanceLipShear(p, body_move_m, s);
+}
+
 void AdvanceLipShear(const LipShearParams& p, const std::array<double, 2>& body_move_m,
                      LipShearState* s) {
   if (p.slip_mm <= 0) {

@@ -154,6 +154,13 @@ struct LipShearState {
 // Moves the body by `body_move_m` (tool frame, m).
 void AdvanceLipShear(const LipShearParams& p, const std::array<double, 2>& body_move_m,
                      LipShearState* s);
+// F/T compression below which the cup is taken as not pressed on anything (the F/T's noise is of
+// this order): the lip then hangs free.
+inline constexpr double kLipPressedN = 0.05;
+// The lip dragged along while the F/T reads `press_n` of compression: pressed, as
+// AdvanceLipShear; not pressed, the lip hangs free and its footprint is new where it lands.
+void DragLip(const LipShearParams& p, const std::array<double, 2>& body_move_m, double press_n,
+             LipShearState* s);
 // Chamber i's centre direction seen from the cup axis, tool frame (unit): chambers 1..4 =
 // SE, NE, NW, SW with north = -x_tool, west = +y_tool (controller/contour_law.h).
 std::array<double, 2> ChamberDirection(int chamber);

@@ -14,8 +14,8 @@ void TrialEffects::Reset(const RobotEffectsParams& params, std::uint64_t trial_s
   step_due_s_ = 0;
 }
 
-void TrialEffects::MoveTool(const std::array<double, 2>& move_tool_m) {
-  AdvanceLipShear(params_.lip, move_tool_m, &lip_shear_);
+void TrialEffects::MoveTool(const std::array<double, 2>& move_tool_m, double press_n) {
+  DragLip(params_.lip, move_tool_m, press_n, &lip_shear_);
 }
 
 double TrialEffects::NextIterationPeriod(double period_s) {

@@ -20,9 +20,9 @@ class TrialEffects {
   // from the plugin's noise (which draws from the same seed).
   void Reset(const RobotEffectsParams& params, std::uint64_t trial_seed);
 
-  // The tool moved by `move_tool_m` (tool frame, m) since the previous control step: the lip
-  // drags along.
-  void MoveTool(const std::array<double, 2>& move_tool_m);
+  // The tool moved by `move_tool_m` (tool frame, m) since the previous control step, pressed
+  // with `press_n` (F/T compression, N): the lip drags along (DragLip).
+  void MoveTool(const std::array<double, 2>& move_tool_m, double press_n);
   // The time from this iteration to the next, s: `period_s` with the loop's jitter.
   double NextIterationPeriod(double period_s);
   // What the host reads at an iteration at `time_s` from the plugin's filtered chamber vacuums:

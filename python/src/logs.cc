@@ -57,12 +57,13 @@ void BindLogs(nb::module_& m) {
   m.def(
       "compare",
       [](const std::string& log_path, const std::string& scene, const std::string& out_dir,
-         double tcp_offset_mm) {
+         double tcp_offset_mm, int average) {
         CompareOptions options;
         options.log_path = log_path;
         options.scene = scene;
         options.out_dir = out_dir;
         options.processing.tcp_offset_m = tcp_offset_mm * 1e-3;
+        options.processing.moving_average = average;
         CompareResult result;
         std::string error;
         bool ok = false;
@@ -91,9 +92,11 @@ void BindLogs(nb::module_& m) {
         return d;
       },
       "log"_a, "scene"_a = RigTierFor(RigUse::kReplay).scene, "out_dir"_a = "out/compare",
-      "tcp_offset_mm"_a = kToolCentreOffsetM * 1e3,
+      "tcp_offset_mm"_a = kToolCentreOffsetM * 1e3, "average"_a = ProcessOptions().moving_average,
       "Replays a robot log (lab per-topic CSVs, .mat or plain CSV) in the twin and compares the "
-      "pressures, as `ssc compare` without the closed loop (report files into out_dir).");
+      "pressures, as `ssc compare` without the closed loop (report files into out_dir). "
+      "average: the host's moving-average window applied to the log, samples (1 = none; a twin "
+      "log already carries the host's filter).");
 
   m.def(
       "write_robot_log",

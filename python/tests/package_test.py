@@ -333,10 +333,13 @@ class PackageTest(unittest.TestCase):
         log_dir = os.path.join(self.tmp, "robot_log")
         # The ideal loop (effects off): the replay is compared with a run it can reproduce.
         self.assertEqual(ssc_twin.write_robot_log(log_dir, seed=2, effects="off"), "success")
-        c = ssc_twin.compare(log_dir, out_dir=os.path.join(self.tmp, "compare"))
+        # average=1: the twin's pressures already carry the host's filter.
+        c = ssc_twin.compare(log_dir, out_dir=os.path.join(self.tmp, "compare"), average=1)
         self.assertEqual(c["sim_pa"].shape, c["log_pa"].shape)
         self.assertGreater(c["sim_pa"].shape[0], 100)
         self.assertTrue(np.all(c["correlation"] > 0.9), c["correlation"])
+        with self.assertRaisesRegex(Exception, "moving average of 0 samples"):
+            ssc_twin.compare(log_dir, out_dir=os.path.join(self.tmp, "compare0"), average=0)
 
     def test_plugin_loads_once_when_asked_twice(self):
         # import mujoco registered the plugin (entry point); loading it again by hand is what

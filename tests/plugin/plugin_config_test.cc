@@ -39,7 +39,7 @@ TEST(PluginConfigTest, EveryKeyOnceAndDefaultsAreTheStructDefaults) {
       EXPECT_TRUE(k.range.Contains(k.get(defaults))) << k.key;
     }
   }
-  EXPECT_EQ(seen.size(), 24u);
+  EXPECT_EQ(seen.size(), 25u);
 }
 
 TEST(PluginConfigTest, ValuesReachTheirMembersInSiUnits) {
@@ -50,9 +50,11 @@ TEST(PluginConfigTest, ValuesReachTheirMembersInSiUnits) {
                         {"ray_groups", "0 3"},
                         {"seed", "12"},
                         {"lip_shear_n_per_mm", "1.5"},
-                        {"lip_tilt_nmm_per_deg", "5"}},
+                        {"lip_tilt_nmm_per_deg", "5"},
+                        {"lip_max_press_mm", "3"}},
                        &error);
   ASSERT_TRUE(c) << error;
+  EXPECT_DOUBLE_EQ(c->lip_max_press_m, 3e-3);
   EXPECT_DOUBLE_EQ(c->geometry.opening_radius_m, 6e-3);
   EXPECT_DOUBLE_EQ(c->pneumatics.pump_free_flow_m3_s, 18 / 60000.0);
   EXPECT_DOUBLE_EQ(c->sensor.lag_s, 4e-3);

@@ -207,12 +207,23 @@ TEST(TrialTest, ApproachStopsAtTheStartUpForce) {
   // each, 1500 N/m together) are then compressed by F / 1500 N/m, so the lip plane is held that
   // far below the disk's top (z = 10 mm). The servo's lag past the trigger adds a little:
   // measured 0.71 mm at 1.0 N and 1.06 mm at 1.5 N against 0.67 and 1.00 mm; band 0.1 mm.
+  // Landed on the centre, the whole ring rests on the disk.
   for (double force_n : {1.0, 1.5}) {
     TrialConfig c;
+    c.target = TrialTarget::Disk(kWorkspaceX, kWorkspaceY, kBenchmarkDiskRadiusM,
+                                 kBenchmarkStartOffsetM, DiskLanding::kAtCentre);
     c.approach_force_n = force_n;
     c.timeout_s = 0.2;  // the follow phase is not under test
-    const TrialResult r = Trial(100, 2.0, 2.5, 1, c);
-    EXPECT_NEAR(0.010 - r.hold_height_m, force_n / 1500.0, 1e-4) << force_n << " N";
+    const TrialResult centre = Trial(100, 2.0, 2.5, 1, c);
+    EXPECT_NEAR(0.010 - centre.hold_height_m, force_n / 1500.0, 1e-4) << force_n << " N";
+    // Landed at the start (the default), 3 mm inside the edge, the segments beyond the edge
+    // hang over the drop: the rest carry the force, pressed deeper (1.37 against 1.06 mm at 1.5
+    // N), but no deeper than the tool's limit.
+    c.target =
+        TrialTarget::Disk(kWorkspaceX, kWorkspaceY, kBenchmarkDiskRadiusM, kBenchmarkStartOffsetM);
+    const TrialResult start = Trial(100, 2.0, 2.5, 1, c);
+    EXPECT_GT(0.010 - start.hold_height_m, 0.010 - centre.hold_height_m + 1e-4) << force_n;
+    EXPECT_LT(0.010 - start.hold_height_m, 0.002) << force_n;
   }
 }
 
@@ -530,11 +541,18 @@ TEST(TrialEndsTest, AnUnreachableStartPointEndsTheTrialInsteadOfWaitingForEver) 
   // The gantry's x servo stops at 2 m: a start 1.5 m east of the disk (x = 2.15 m) is never
   // reached. Before the reach limit the trial waited for it without end (a hang).
   TrialConfig c;
-  c.target = TrialTarget::Disk(0.65, 0, 0.035, 1.5);
+  c.target = TrialTarget::Disk(0.65, 0, 0.035, 1.5, DiskLanding::kAtCentre);
   const TrialResult r = Trial(100, 2.0, 7.5, 1, c);
   EXPECT_EQ(r.outcome, Outcome::kTimeout) << r.detail;
   EXPECT_NE(r.detail.find("did not reach the start point (2.1500, 0.0000) m"), std::string::npos)
       << r.detail;
+  // Landing there (the default), the landing point is the one never reached.
+  c.target = TrialTarget::Disk(0.65, 0, 0.035, 1.5);
+  const TrialResult landing = Trial(100, 2.0, 7.5, 1, c);
+  EXPECT_NE(landing.detail.find("did not reach the landing point (2.1500, 0.0000) m"),
+            std::string::npos)
+      << landing.detail;
+  EXPECT_LT(landing.sim_time_s, 1.5 / c.move_speed_m_s + 5 + 5) << "waited too long";
   // The target travels 1.5 m at the move speed, then the tool gets 5 s to arrive (+ approach).
   EXPECT_LT(r.sim_time_s, 1.5 / c.move_speed_m_s + 5 + 5) << "waited too long";
   // A reachable one (1 m east) is reached: the limit does not cut normal moves short.
@@ -630,6 +648,46 @@ TEST(DeferredSensorStepTest, UnderTheDiscreteIntegratorTheSplitStepIsMjStepToThe
   both(150);
   EXPECT_LT(da->sensordata[pressure], 10000);
   ExpectSameData(m, da.get(), db.get());
+}
+
+// The approach on the skirt (the flex tier), to the end of the approach: the depth the lip
+// plane is held below the disk's top and what the F/T read there.
+struct SkirtLanding {
+  double press_mm = 0, ft_n = 0;
+};
+SkirtLanding LandOnTheSkirt(const mjModel* flex, DiskLanding landing) {
+  std::string error;
+  DataPtr d = MakeData(flex, &error);
+  EXPECT_TRUE(d) << error;
+  TrialConfig c;
+  c.target = TrialTarget::Disk(kWorkspaceX, kWorkspaceY, kBenchmarkDiskRadiusM,
+                               kBenchmarkStartOffsetM, landing);
+  auto trial = ContourTrial::Create(flex, d.get(), c, true, &error);
+  EXPECT_TRUE(trial) << error;
+  if (!trial) return {};
+  while (trial->phase() == TrialPhase::kApproach && trial->Step()) {
+  }
+  EXPECT_NE(trial->phase(), TrialPhase::kDone) << trial->result().detail;
+  return {(c.target.surface_top_z_m - trial->result().hold_height_m) * 1e3,
+          trial->result().log.back().ft_normal_n};
+}
+
+// Landed where it starts (3 mm inside the edge: the skirt leaks, the vacuum pulls little) the
+// skirt carries the preload above its depth limit (lip_max_press_mm 3 mm; measured 2.65 mm at
+// 1.5 N). Landed on the centre it seals and its vacuum pulls the cup down harder than the
+// disk pushes back: the F/T never reads the preload and the approach ends at the limit.
+TEST(TrialTest, OnTheSkirtTheApproachReadsThePreloadWhereTheLabLandsIt) {
+  std::string error;
+  ModelPtr flex = LoadModel(SourceDir() + "/scenes/disk_benchmark_flex.xml", &error);
+  ASSERT_TRUE(flex) << error;
+  const SkirtLanding start = LandOnTheSkirt(flex.get(), DiskLanding::kAtStart);
+  // (The log's last approach row is up to one log period before the trigger: 1.42 N.)
+  EXPECT_GE(start.ft_n, 1.3);
+  EXPECT_LT(start.press_mm, 2.9);  // ended by the force, not the limit
+  EXPECT_GT(start.press_mm, 1.0);  // deeper than the segment lip's 1.0 mm: a softer lip
+  const SkirtLanding centre = LandOnTheSkirt(flex.get(), DiskLanding::kAtCentre);
+  EXPECT_LT(centre.ft_n, 1.5);
+  EXPECT_GT(centre.press_mm, 2.99);
 }
 
 // What each control iteration of a trial read from the F/T, recorded around the control callback.

@@ -289,6 +289,20 @@ TEST(LipShearTest, NoFrictionNoShearNoTilt) {
   EXPECT_EQ(pa, (std::array<double, 4>{10, 20, 30, 40}));
 }
 
+TEST(LipShearTest, TheLipDragsOnlyWhilePressedAndLandsUnsheared) {
+  LipShearParams p;
+  p.slip_mm = 1.0;
+  LipShearState s;
+  DragLip(p, {0.0004, 0.0}, 1.5, &s);  // pressed: sticks, as AdvanceLipShear
+  EXPECT_NEAR(s.shear_m[0], 0.0004, 1e-15);
+  DragLip(p, {0.004, 0.0}, 0.2 * kLipPressedN, &s);  // lifted: hangs free
+  EXPECT_EQ(s.shear_m[0], 0.0);
+  EXPECT_EQ(s.shear_m[1], 0.0);
+  DragLip(p, {0.0, 0.0003}, kLipPressedN, &s);  // landed anew: the shear starts from there
+  EXPECT_EQ(s.shear_m[0], 0.0);
+  EXPECT_NEAR(s.shear_m[1], 0.0003, 1e-15);
+}
+
 TEST(LipShearTest, ShearSaturatesAtSlipAndTiltsLeadingUpTrailingDown) {
   LipShearParams p;
   p.slip_mm = 1.0;

@@ -11,6 +11,9 @@
 namespace ssc {
 namespace {
 
+// The F/T compression the trial's lip is dragged with: pressed (trial/robot_effects.h).
+constexpr double kPressN = 1.5;
+
 // Every mechanism on, at values inside their ranges.
 RobotEffectsParams AllOn() {
   RobotEffectsParams p;
@@ -34,7 +37,7 @@ std::vector<double> Trace(TrialEffects* e) {
   std::vector<double> out;
   double t = 0;
   for (int k = 0; k < 6; ++k) {
-    e->MoveTool({0.4e-3 * k, -0.2e-3});
+    e->MoveTool({0.4e-3 * k, -0.2e-3}, kPressN);
     t += e->NextIterationPeriod(0.25);
     const std::array<double, 4> host = e->HostReading(t, {10, 200, 150, 20});
     const std::array<double, 4> chambers = e->ChamberReading({10, 200, 150, 20});
@@ -51,7 +54,7 @@ TEST(TrialEffectsTest, OffIsTheIdealLoop) {
   TrialEffects e;
   e.Reset(RobotEffectsParams(), 5);
   const std::array<double, 4> p = {10, 200, 150, 20};
-  e.MoveTool({3e-3, -2e-3});
+  e.MoveTool({3e-3, -2e-3}, kPressN);
   EXPECT_EQ(e.NextIterationPeriod(0.25), 0.25);
   EXPECT_EQ(e.HostReading(1.0, p), p);
   EXPECT_EQ(e.ChamberReading(p), p);
@@ -127,7 +130,7 @@ TEST(TrialEffectsTest, TheLipsShearShowsInBothReadingsAndCarriesOver) {
   TrialEffects e;
   e.Reset(p, 1);
   const std::array<double, 4> chambers = {100, 100, 100, 100};
-  e.MoveTool({2e-3, 0});  // past the slip: full shear along +x
+  e.MoveTool({2e-3, 0}, kPressN);  // past the slip: full shear along +x
   const std::array<double, 4> dragged = e.ChamberReading(chambers);
   EXPECT_NE(dragged, chambers);
   // No sensor effects on: the host reads the dragged chambers.

@@ -77,7 +77,8 @@ class ViewerTest(unittest.TestCase):
         # The overview frames the whole arm: its blue joint housings run from the shoulder high
         # in the picture down to the wrist (a close-up of the cup shows only the blue disk, less
         # than a quarter of the height, and a large orange cup).
-        blue = ((b > 0.35) & (b > 1.3 * r) & (g > r))[:, : w * 5 // 8]
+        # (b > 0.25: the shoulder's housing may lie under the overlay's translucent panel.)
+        blue = ((b > 0.25) & (b > 1.3 * r) & (g > r))[:, : w * 5 // 8]
         rows = np.where(blue.sum(axis=1) >= 10)[0]
         self.assertGreater(int(blue.sum()), 3000, "arm not in frame")
         self.assertGreater(rows.max() - rows.min(), 0.4 * h, "arm not in frame")
@@ -119,19 +120,21 @@ class ViewerTest(unittest.TestCase):
         self.assertEqual(viewer.groups(), trial.groups())
 
     def test_overlay_values_equal_the_headless_trial_log(self):
-        # The full headless trial's log, then the viewer stopped just after two logged rows: at
-        # ~3 s (pressed on the disk, moving to the start: ~25 kPa in every chamber) and at ~6 s
-        # (following). The overlay must show the same pressures, c_f and phase.
+        # The full headless trial's log, then the viewer stopped just after two logged rows: the
+        # approach's last (pressed on the disk at the start, the chambers reading the edge) and
+        # the first at 6 s (following). The overlay must show the same pressures, c_f and phase.
         out = os.path.join(self.tmp, "full")
         r = run([SSC, "trial", "--seed", "3", "--no-plot", "--out", out])
         self.assertEqual(r.returncode, 0, r.stderr)
         with open(os.path.join(out, "trial.csv")) as f:
             rows = list(csv.DictReader(f))
-        for t_wanted, phase in ((3.0, "move"), (6.0, "follow")):
-            row = next(x for x in rows if float(x["t_s"]) >= t_wanted)
+        pressed = [x for x in rows if x["phase"] == "approach"][-1]
+        self.assertGreater(max(float(pressed[f"p{k}_pa"]) for k in range(1, 5)), 50, pressed)
+        following = next(x for x in rows if float(x["t_s"]) >= 6.0)
+        for row, phase in ((pressed, "approach"), (following, "follow")):
             self.assertEqual(row["phase"], phase)
             # The viewer stops after the physics step whose control call logged the row.
-            shot = os.path.join(self.tmp, f"at_{t_wanted:.0f}.png")
+            shot = os.path.join(self.tmp, f"at_{phase}.png")
             v = run(
                 [
                     XVFB,
@@ -169,8 +172,6 @@ class ViewerTest(unittest.TestCase):
                 if x["iteration"] == "1" and float(x["t_s"]) <= float(row["t_s"])
             ]
             self.assertAlmostEqual(float(m["cf"]), past[-1] if past else 0.0, delta=1e-5)
-        # Pressed on the disk at 3 s: the overlay reads the sealed cup, not 0.
-        self.assertGreater(p[0], 0)  # (last row checked is the follow one)
 
     def test_cup_camera_is_a_close_up(self):
         shot = os.path.join(self.tmp, "cup.png")
