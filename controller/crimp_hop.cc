@@ -6,32 +6,35 @@
 namespace ssc {
 namespace {
 
-// The lift takes the servo this many iterations; the descent is given up after this many.
-constexpr int kLiftIterations = 2, kMaxDescendIterations = 30;
+// The lift takes the servo this many iterations.
+constexpr int kLiftIterations = 2;
 
 }  // namespace
 
 bool CrimpSignature(const CrimpHopParams& p, const std::array<double, 4>& p_pa, double p_ref_pa) {
-  const auto low = std::min_element(p_pa.begin(), p_pa.end());
-  double least_other = 1e300;
-  for (auto it = p_pa.begin(); it != p_pa.end(); ++it)
-    if (it != low) least_other = std::min(least_other, *it);
-  return least_other > p_ref_pa && *low < p.leak_ratio * least_other;
+  return *std::min_element(p_pa.begin(), p_pa.end()) > p.seal_ratio * p_ref_pa;
 }
 
-bool CrimpDetector::Update(const std::array<double, 4>& p_pa, double p_ref_pa,
-                           const std::array<double, 2>& xy, double step_m) {
-  if (!CrimpSignature(p_, p_pa, p_ref_pa)) {
-    window_.clear();
-    return false;
-  }
-  window_.push_back(xy);
-  const auto n = static_cast<std::size_t>(std::max(1.0, p_.stall_iterations));
-  while (window_.size() > n) window_.pop_front();
-  if (window_.size() < n) return false;
-  const double moved =
-      std::hypot(window_.back()[0] - window_.front()[0], window_.back()[1] - window_.front()[1]);
-  return moved < p_.stall_share * static_cast<double>(n - 1) * step_m;
+bool CrimpDetector::Update(const std::array<double, 4>& p_pa, double p_ref_pa) {
+  const bool sealed = CrimpSignature(p_, p_pa, p_ref_pa);
+  const bool onset = sealed && read_edge_;
+  read_edge_ = !sealed;
+  return onset;
+}
+
+std::array<double, 2> CrimpHopController::FollowStep(const std::array<double, 4>& p_pa) {
+  const ContourStep law = ComputeContourStep(p_pa, law_);
+  if (resume_left_ <= 0) return law.step_m;
+  --resume_left_;
+  const double step_m = p_.resume_step_mm * 1e-3;
+  return {step_m * law.direction[0], step_m * law.direction[1]};
+}
+
+std::array<double, 2> CrimpHopController::ReturnStep(const ControllerInput& in) const {
+  // World to tool frame: the transpose of the tool's rotation (row-major), in the plane.
+  const double wx = edge_xy_m_[0] - in.tool_m[0], wy = edge_xy_m_[1] - in.tool_m[1];
+  const auto& R = in.tool_rotation;
+  return {R[0] * wx + R[3] * wy, R[1] * wx + R[4] * wy};
 }
 
 ControllerCommand CrimpHopController::Step(const ControllerInput& in) {
@@ -42,41 +45,44 @@ ControllerCommand CrimpHopController::Step(const ControllerInput& in) {
     phase_iterations_ = 0;
   };
   switch (phase_) {
-    case Phase::kFollow: {
-      const ContourStep law = ComputeContourStep(in.p_pa, law_);
-      // The edge as followed before the crimp: the fold's own differential points elsewhere.
-      if (law.moving && !CrimpSignature(p_, in.p_pa, law_.p_ref_pa)) along_ = law.along_edge;
-      if (detector_.Update(in.p_pa, law_.p_ref_pa, {in.tool_m[0], in.tool_m[1]},
-                           law_.step_mm * 1e-3)) {
+    case Phase::kFollow:
+      if (detector_.Update(in.p_pa, law_.p_ref_pa)) {
         ++hops_;
-        detector_.Reset();
         enter(Phase::kLift);
         offset_m_ = p_.lift_mm * 1e-3;
         c.lifted = true;
         break;
       }
-      c.step_m = law.step_m;
+      // An open chamber: the throat lies over the edge here.
+      if (*std::min_element(in.p_pa.begin(), in.p_pa.end()) < law_.p_ref_pa)
+        edge_xy_m_ = {in.tool_m[0], in.tool_m[1]};
+      c.step_m = FollowStep(in.p_pa);
       break;
-    }
     case Phase::kLift:
       c.lifted = true;
       if (phase_iterations_ >= kLiftIterations) {
-        enter(Phase::kPass);
-        c.step_m = {p_.hop_mm * 1e-3 * along_[0], p_.hop_mm * 1e-3 * along_[1]};
+        enter(Phase::kReturn);
+        c.step_m = ReturnStep(in);
       }
       break;
-    case Phase::kPass:
+    case Phase::kReturn:
       c.lifted = true;
+      c.step_m = ReturnStep(in);  // the servo covers part of a move per period: aimed again
       enter(Phase::kDescend);
       break;
     case Phase::kDescend:
       c.lifted = true;
-      if (in.ft_normal_n >= p_.force_n || phase_iterations_ > kMaxDescendIterations) {
-        enter(Phase::kFollow);  // back in contact (or given up: the checks decide)
+      // A period after the set point came back to the hold height: on the surface the approach
+      // found (the F/T tells no contact here: the skirt's bellows reads about 1 N in the air).
+      if (offset_m_ <= 0) {
+        enter(Phase::kFollow);
         c.lifted = false;
-        c.step_m = ComputeContourStep(in.p_pa, law_).step_m;
+        detector_.Reset();
+        resume_left_ = static_cast<int>(p_.resume_iterations);
+        c.step_m = FollowStep(in.p_pa);
       } else {
-        offset_m_ = std::max(offset_m_ - p_.descend_mm * 1e-3, kMinHeightOffsetM);
+        c.step_m = ReturnStep(in);
+        offset_m_ = std::max(offset_m_ - p_.descend_mm * 1e-3, 0.0);
       }
       break;
   }
@@ -88,18 +94,15 @@ ControllerType CrimpHopControllerType() {
   using P = CrimpHopParams;
   return MakeControllerType<CrimpHopController, P>(
       "crimp_hop",
-      "the published law; on a crimped lip's signature (one chamber leaking, the cup stalled) "
-      "a hop: lift, move past along the edge, come down to the force, resume",
-      {{"leak_ratio", "1", 0.01, 1, "a crimped chamber reads below this x the least other one",
-        &P::leak_ratio},
-       {"stall_iterations", "1", 1, 50, "iterations in a row with the signature",
-        &P::stall_iterations, true},
-       {"stall_share", "1", 0, 1, "... while it moved less than this share of its steps",
-        &P::stall_share},
+      "the published law; on a crimped lip's signature (every chamber sealed far above P_ref "
+      "right after an iteration that read the edge) a hop: lift, back over where the edge was "
+      "last read, down to the hold height, resume in short steps",
+      {{"seal_ratio", "1", 2, 99, "crimped: every chamber above this x P_ref", &P::seal_ratio},
        {"lift_mm", "mm", 0.5, 20, "hop height above the hold height", &P::lift_mm},
-       {"hop_mm", "mm", 0, 50, "move along the edge while lifted", &P::hop_mm},
        {"descend_mm", "mm", 0.1, 10, "height change per iteration coming down", &P::descend_mm},
-       {"force_n", "N", 0.05, 20, "F/T force that ends the descent", &P::force_n}});
+       {"resume_step_mm", "mm", 0.1, 100, "the law's step after a hop ...", &P::resume_step_mm},
+       {"resume_iterations", "1", 0, 200, "... for this many iterations", &P::resume_iterations,
+        true}});
 }
 
 }  // namespace ssc

@@ -1,19 +1,30 @@
-// Crimp recovery: the published law, and a hop over the place where the lip crimps.
+// Crimp recovery: the published law, and a hop away from the place where the lip crimped.
 //
-// At a concave corner the published cup stalled: its lip folded (crimped) where the corner
-// pressed it, and the chamber behind the fold leaked while the others stayed sealed. The
-// detector reads that signature: for `stall_iterations` iterations in a row, one chamber below
-// `leak_ratio` times the least of the other three, those three above P_ref, and the cup moved
-// less than `stall_share` of what its steps (the law's dL) would have taken it over the window
-// (a concave corner passed at the law's pace shows the same chambers, but moves). The hop then
-// lifts the cup by lift_mm (lifted: the failure checks wait), moves it hop_mm along the edge as
-// last followed, comes down in steps of descend_mm until the F/T reads force_n again (the
-// approach's force band), and resumes.
+// At a concave corner the flex skirt's stretch over the drop is caught by the far wall, folds in
+// under the throat across a chamber's mouth, and the cup seals (docs/flex_skirt.md, "The crimp":
+// the scripted push 2 mm past the wall reads 6015-6776 Pa in every chamber, lowered there 318 Pa
+// in the facing one). Under the law at the lab's dL 7.5 mm this happens within one control
+// period: the iteration before reads an edge (some chamber near zero, the mean near P_ref), the
+// next reads every chamber at 13.6-18.8 kPa, and the trial would end there as failure II (all
+// chambers above the 10 kPa grasp threshold) before any stall could show. So the signature is
+// the onset of that seal: every chamber above `seal_ratio` x P_ref on the first iteration after
+// one that read an edge. Following reads at most ~1.5 kPa in its least chamber (a segment lip
+// over a corner's apex), so 20 x P_ref = 2 kPa parts the two, and it is below the grasp threshold
+// so that the hop comes before the failure check. A cup sealed since its last landing (no edge
+// read since) does not fire: the hop is not repeated on the top face.
+//
+// The hop lifts the cup by lift_mm (the vacuum, and with it the fold's pull, is vented; lifted:
+// the failure checks wait), takes it back over the position of the last iteration with a chamber
+// open (below P_ref: the throat over the edge), comes down in steps of descend_mm to the hold
+// height (the top face the approach found; not to an F/T force: the skirt's bellows reads about
+// 1 N lifted 3 mm in the air and 0.86 N at the hold height), and resumes the law with
+// resume_step_mm steps for resume_iterations iterations (the corner taken in short steps: at the
+// object study's 0.5 mm the law turns every concave corner without crimping), then at the law's
+// dL. Without a seal onset the commands are the law's.
 #ifndef SSC_CONTROLLER_CRIMP_HOP_H_
 #define SSC_CONTROLLER_CRIMP_HOP_H_
 
 #include <array>
-#include <deque>
 
 #include "controller/contour_law.h"
 #include "controller/controller_registry.h"
@@ -21,36 +32,33 @@
 namespace ssc {
 
 struct CrimpHopParams {
-  double leak_ratio = 0.2;      // a crimped chamber reads below this x the least other one
-  double stall_iterations = 4;  // iterations in a row with the signature
-  double stall_share = 0.25;    // ... while it moved less than this share of its steps
-  double lift_mm = 4.0;         // hop height above the hold height
-  double hop_mm = 10.0;         // move along the edge while lifted
-  double descend_mm = 1.0;      // height change per iteration coming down
-  double force_n = 1.0;         // F/T force that ends the descent (back in contact)
+  double seal_ratio = 20;         // crimped: every chamber above this x P_ref
+  double lift_mm = 4.0;           // hop height above the hold height
+  double descend_mm = 1.0;        // height change per iteration coming down
+  double resume_step_mm = 0.5;    // the law's step after a hop ...
+  double resume_iterations = 20;  // ... for this many iterations
 };
 
-// The crimp signature in one sample: one chamber leaking while the other three are sealed.
+// The crimp signature in one sample: every chamber sealed far above P_ref.
 bool CrimpSignature(const CrimpHopParams& p, const std::array<double, 4>& p_pa, double p_ref_pa);
 
-// The signature held for stall_iterations while the cup stalls.
+// Fires on the onset of the signature: a sample with it after a sample without it.
 class CrimpDetector {
  public:
   explicit CrimpDetector(const CrimpHopParams& p) : p_(p) {}
-  // One iteration's pressures, tool position (world, m) and step length (m); true when a crimp
-  // is detected.
-  bool Update(const std::array<double, 4>& p_pa, double p_ref_pa, const std::array<double, 2>& xy,
-              double step_m);
-  void Reset() { window_.clear(); }
+  // One following iteration's pressures; true when a crimp is detected.
+  bool Update(const std::array<double, 4>& p_pa, double p_ref_pa);
+  // After a landing: the next sample is not an onset until one without the signature came.
+  void Reset() { read_edge_ = false; }
 
  private:
   CrimpHopParams p_;
-  std::deque<std::array<double, 2>> window_;  // positions while the signature holds
+  bool read_edge_ = false;  // the last sample was without the signature
 };
 
 class CrimpHopController : public Controller {
  public:
-  enum class Phase { kFollow, kLift, kPass, kDescend };
+  enum class Phase { kFollow, kLift, kReturn, kDescend };
   CrimpHopController(const ControllerContext& context, const CrimpHopParams& p)
       : law_(context.law), p_(p), detector_(p) {}
   ControllerCommand Step(const ControllerInput& in) override;
@@ -58,13 +66,18 @@ class CrimpHopController : public Controller {
   int hops() const { return hops_; }
 
  private:
+  // The law's step, at resume_step_mm while resuming after a hop.
+  std::array<double, 2> FollowStep(const std::array<double, 4>& p_pa);
+  // The planar move (tool frame, m) from the tool to where a chamber was last open.
+  std::array<double, 2> ReturnStep(const ControllerInput& in) const;
+
   ContourLawParams law_;
   CrimpHopParams p_;
   CrimpDetector detector_;
   Phase phase_ = Phase::kFollow;
-  std::array<double, 2> along_{};  // the last direction along the edge, tool frame
+  std::array<double, 2> edge_xy_m_{};  // world position of the last iteration with an open chamber
   double offset_m_ = 0;
-  int phase_iterations_ = 0, hops_ = 0;
+  int phase_iterations_ = 0, hops_ = 0, resume_left_ = 0;
 };
 
 ControllerType CrimpHopControllerType();

@@ -43,7 +43,7 @@ WHOLE_KEYS = [
     ("edge_track", "start_iterations"),
     ("edge_track", "circle_points"),
     ("edge_track", "tare_in_air"),
-    ("crimp_hop", "stall_iterations"),
+    ("crimp_hop", "resume_iterations"),
 ]
 KEYS = {
     "fast": [
@@ -62,13 +62,11 @@ KEYS = {
     ],
     "edge_track": ["speed_mm_s", "fit_points", "start_iterations", "circle_points", "tare_in_air"],
     "crimp_hop": [
-        "leak_ratio",
-        "stall_iterations",
-        "stall_share",
+        "seal_ratio",
         "lift_mm",
-        "hop_mm",
         "descend_mm",
-        "force_n",
+        "resume_step_mm",
+        "resume_iterations",
     ],
     "force_height": ["force_n", "gain_mm_per_n", "max_down_mm", "max_up_mm"],
     "example": ["gain"],
@@ -187,7 +185,7 @@ def cases():
             )
         )
     # A key given twice is a typo, never an override.
-    in_range = {"fit_points": "8", "circle_points": "4", "drift_time_s": "1"}
+    in_range = {"fit_points": "8", "circle_points": "4", "drift_time_s": "1", "seal_ratio": "20"}
     for controller, keys in KEYS.items():
         for key in keys:
             v = in_range.get(key, "1")

@@ -1,93 +1,124 @@
-// Crimp recovery as pure logic: the detector on synthetic signatures (a crimped lip, a straight
-// edge, a grasp, a moving cup) and the hop's sequence.
+// Crimp recovery as pure logic: the detector on chamber readings measured in the flex tier (the
+// crimp at a concave corner, following on a straight edge and round a corner, a segment lip over
+// a corner's apex) and the hop's sequence. The hop in a trial: tests/objects/crimp_trial_test.cc.
 #include "controller/crimp_hop.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace ssc {
 namespace {
 
-// Synthetic signatures at P_ref 100 Pa: one chamber leaking behind a fold while three stay
-// sealed; a cup straddling a straight edge (two covered, two open); a full grasp.
-constexpr std::array<double, 4> kCrimped = {900, 850, 40, 1000};
-constexpr std::array<double, 4> kStraddling = {300, 280, 8, 10};
-constexpr std::array<double, 4> kGrasp = {20000, 20100, 19900, 20050};
+// Pa, at P_ref 100 Pa (docs/flex_skirt.md, "The crimp"). The crimp: corner_a330 and corner_a270
+// under the law at dL 7.5 mm (seeds 1 and 3), the iteration the cup sealed; the scripted push
+// 2 mm past the far wall.
+constexpr std::array<double, 4> kCrimpA330 = {13568, 13675, 13662, 13621};
+constexpr std::array<double, 4> kCrimpA270 = {18875, 18876, 18875, 18349};
+constexpr std::array<double, 4> kCrimpPush = {6776, 6015, 6181, 6774};
+// Not a crimp: the skirt on a straight edge; the skirt over the 270 deg corner's far wall (passed
+// at the law's pace); the segment lip over the 330 deg corner's apex; the skirt a period before
+// the 315 deg corner's crimp (a lobe already folded in, not yet sealed).
+constexpr std::array<double, 4> kStraightEdge = {4, 191, 190, 1};
+constexpr std::array<double, 4> kFarWall = {1214, 1219, 1221, 93};
+constexpr std::array<double, 4> kSegmentApex = {3272, 3273, 1476, 3276};
+constexpr std::array<double, 4> kBeforeCrimp = {1918, 1860, 1805, 1569};
 
-TEST(CrimpDetectorTest, OneChamberLeakingWhileThreeAreSealedIsTheSignature) {
+TEST(CrimpDetectorTest, EveryChamberSealedFarAboveTheSetPointIsTheSignature) {
   const CrimpHopParams p;
-  EXPECT_TRUE(CrimpSignature(p, kCrimped, 100));
-  EXPECT_FALSE(CrimpSignature(p, kStraddling, 100));
-  EXPECT_FALSE(CrimpSignature(p, kGrasp, 100));
-  EXPECT_FALSE(CrimpSignature(p, {90, 85, 4, 95}, 100));  // the three below P_ref: on the edge
-  EXPECT_FALSE(CrimpSignature(p, {900, 850, 400, 1000}, 100));  // no chamber leaks
+  for (const auto& crimp : {kCrimpA330, kCrimpA270, kCrimpPush})
+    EXPECT_TRUE(CrimpSignature(p, crimp, 100));
+  for (const auto& following : {kStraightEdge, kFarWall, kSegmentApex, kBeforeCrimp})
+    EXPECT_FALSE(CrimpSignature(p, following, 100));
+  // Relative to P_ref: at a 1 kPa set point the push's 6 kPa is no seal.
+  EXPECT_FALSE(CrimpSignature(p, kCrimpPush, 1000));
 }
 
-TEST(CrimpDetectorTest, FiresOnlyWhenTheSignatureHoldsWhileTheCupStalls) {
-  CrimpHopParams p;
-  p.stall_iterations = 4;
-  p.stall_share = 0.25;
-  const double step = 0.5e-3;  // the law's dL on the test objects
-  CrimpDetector stalled(p);    // 0.3 mm over three steps of 0.5 mm: stalled
-  for (int i = 0; i < 3; ++i) EXPECT_FALSE(stalled.Update(kCrimped, 100, {0.1e-3 * i, 0}, step));
-  EXPECT_TRUE(stalled.Update(kCrimped, 100, {0.3e-3, 0}, step));
-  // The same signature while the cup passes a concave corner at half the law's pace: no crimp.
-  CrimpDetector moving(p);
-  for (int i = 0; i < 8; ++i) EXPECT_FALSE(moving.Update(kCrimped, 100, {0.25e-3 * i, 0}, step));
-  CrimpDetector interrupted(p);  // a sample without it starts the count again
-  for (int i = 0; i < 3; ++i) interrupted.Update(kCrimped, 100, {0, 0}, step);
-  EXPECT_FALSE(interrupted.Update(kStraddling, 100, {0, 0}, step));
-  for (int i = 0; i < 3; ++i) EXPECT_FALSE(interrupted.Update(kCrimped, 100, {0, 0}, step));
-  EXPECT_TRUE(interrupted.Update(kCrimped, 100, {0, 0}, step));
+TEST(CrimpDetectorTest, FiresOnTheSealsOnsetAfterAnEdgeNotOnACupThatStaysSealed) {
+  const CrimpHopParams p;
+  CrimpDetector crimp(p);  // following, then sealed in one period: the crimp
+  EXPECT_FALSE(crimp.Update(kStraightEdge, 100));
+  EXPECT_FALSE(crimp.Update(kBeforeCrimp, 100));
+  EXPECT_TRUE(crimp.Update(kCrimpA330, 100));
+  EXPECT_FALSE(crimp.Update(kCrimpA330, 100));  // still sealed: not a new onset
+  // A cup sealed from its landing on, moving across the top face, never reads an edge: no crimp.
+  CrimpDetector on_top(p);
+  on_top.Reset();
+  for (int i = 0; i < 10; ++i) EXPECT_FALSE(on_top.Update(kCrimpA270, 100));
+  EXPECT_FALSE(on_top.Update(kFarWall, 100));  // an edge again, then sealed: an onset
+  EXPECT_TRUE(on_top.Update(kCrimpA270, 100));
+  CrimpDetector landed(p);  // a landing forgets the edge read before the hop
+  EXPECT_FALSE(landed.Update(kStraightEdge, 100));
+  landed.Reset();
+  EXPECT_FALSE(landed.Update(kCrimpPush, 100));
 }
 
-TEST(CrimpHopTest, AHopLiftsMovesPastComesDownToTheForceAndResumes) {
+ControllerInput Reading(const std::array<double, 4>& p_pa, double x_m, double y_m) {
+  ControllerInput in;
+  in.p_pa = p_pa;
+  in.tool_m = {x_m, y_m, 0};
+  in.tool_rotation = {0, -1, 0, 1, 0, 0, 0, 0, 1};  // tool x along world y, tool y along -x
+  return in;
+}
+
+TEST(CrimpHopTest, WithoutACrimpTheCommandsAreTheLaws) {
+  ControllerContext context;
+  CrimpHopController c(context, CrimpHopParams{});
+  for (const auto& p_pa : {kStraightEdge, kFarWall, kSegmentApex, kBeforeCrimp, kStraightEdge}) {
+    const ControllerCommand cmd = c.Step(Reading(p_pa, 0, 0));
+    EXPECT_EQ(cmd.step_m, ComputeContourStep(p_pa, context.law).step_m);
+    EXPECT_FALSE(cmd.lifted);
+    EXPECT_EQ(cmd.height_offset_m, 0.0);
+  }
+  EXPECT_EQ(c.hops(), 0);
+}
+
+TEST(CrimpHopTest, AHopLiftsGoesBackOverTheEdgeComesDownAndResumesInShortSteps) {
   ControllerContext context;
   CrimpHopParams p;
-  p.stall_iterations = 2;
   p.lift_mm = 4;
-  p.hop_mm = 10;
   p.descend_mm = 2;
-  p.force_n = 1.0;
+  p.resume_step_mm = 0.5;
+  p.resume_iterations = 3;
   CrimpHopController c(context, p);
-  ControllerInput in;
-  in.p_pa = kStraddling;
-  in.ft_normal_n = 1.5;
-  ControllerCommand cmd = c.Step(in);  // following: the law's step learns the edge's direction
-  EXPECT_EQ(cmd.step_m, ComputeContourStep(kStraddling, context.law).step_m);
-  EXPECT_FALSE(cmd.lifted);
-  in.p_pa = kCrimped;
-  c.Step(in);
-  cmd = c.Step(in);  // the signature twice in place: the hop starts
+  c.Step(Reading(kStraightEdge, 0.010, 0.020));  // a chamber open here: the edge under the throat
+  c.Step(Reading(kBeforeCrimp, 0.013, 0.020));   // none open: not where the edge was read
+  ControllerCommand cmd = c.Step(Reading(kCrimpA330, 0.015, 0.021));
   EXPECT_EQ(c.phase(), CrimpHopController::Phase::kLift);
   EXPECT_EQ(c.hops(), 1);
   EXPECT_TRUE(cmd.lifted);
   EXPECT_DOUBLE_EQ(cmd.height_offset_m, 4e-3);
-  EXPECT_EQ(cmd.step_m[0], 0.0);
-  in.ft_normal_n = 0;  // in the air
-  in.p_pa = {1, 1, 1, 1};
-  c.Step(in);
-  cmd = c.Step(in);  // lifted long enough: the move past, along the edge as last followed
-  EXPECT_EQ(c.phase(), CrimpHopController::Phase::kPass);
-  const ContourStep law = ComputeContourStep(kStraddling, context.law);
-  EXPECT_NEAR(cmd.step_m[0], 10e-3 * law.along_edge[0], 1e-12);
-  EXPECT_NEAR(cmd.step_m[1], 10e-3 * law.along_edge[1], 1e-12);
+  EXPECT_EQ(cmd.step_m[0], 0.0);  // straight up first
+  c.Step(Reading({1, 1, 1, 1}, 0.015, 0.021));
+  cmd = c.Step(Reading({1, 1, 1, 1}, 0.015, 0.021));
+  EXPECT_EQ(c.phase(), CrimpHopController::Phase::kReturn);
+  // Back over (10, 20) mm: world (-5, -1) mm is tool (-1, +5) mm with this rotation.
+  EXPECT_NEAR(cmd.step_m[0], -1e-3, 1e-12);
+  EXPECT_NEAR(cmd.step_m[1], 5e-3, 1e-12);
   EXPECT_TRUE(cmd.lifted);
-  cmd = c.Step(in);
+  cmd = c.Step(Reading({1, 1, 1, 1}, 0.012, 0.0205));  // part of the way: aimed again
+  EXPECT_NEAR(cmd.step_m[0], -0.5e-3, 1e-12);
+  EXPECT_NEAR(cmd.step_m[1], 2e-3, 1e-12);
   EXPECT_EQ(c.phase(), CrimpHopController::Phase::kDescend);
-  double last = cmd.height_offset_m;
-  for (int i = 0; i < 3; ++i) {  // coming down, still lifted, until the force returns
-    cmd = c.Step(in);
+  EXPECT_DOUBLE_EQ(cmd.height_offset_m, 4e-3);
+  for (const double offset : {2e-3, 0.0}) {  // down to the hold height, still lifted
+    cmd = c.Step(Reading({1, 1, 1, 1}, 0.010, 0.020));
     EXPECT_TRUE(cmd.lifted);
-    EXPECT_LT(cmd.height_offset_m, last);
-    last = cmd.height_offset_m;
+    EXPECT_DOUBLE_EQ(cmd.height_offset_m, offset);
   }
-  in.ft_normal_n = 1.2;
-  in.p_pa = kStraddling;
-  cmd = c.Step(in);  // in contact: following again, at the height where contact came back
-  EXPECT_EQ(c.phase(), CrimpHopController::Phase::kFollow);
-  EXPECT_FALSE(cmd.lifted);
-  EXPECT_DOUBLE_EQ(cmd.height_offset_m, last);
-  EXPECT_EQ(cmd.step_m, law.step_m);
+  for (int i = 0; i < 3; ++i) {  // landed: the law's direction in short steps
+    cmd = c.Step(Reading(kStraightEdge, 0.010, 0.020));
+    EXPECT_EQ(c.phase(), CrimpHopController::Phase::kFollow);
+    EXPECT_FALSE(cmd.lifted);
+    EXPECT_DOUBLE_EQ(cmd.height_offset_m, 0.0);
+    const ContourStep law = ComputeContourStep(kStraightEdge, context.law);
+    EXPECT_NEAR(cmd.step_m[0], 0.5e-3 * law.direction[0], 1e-15);
+    EXPECT_NEAR(cmd.step_m[1], 0.5e-3 * law.direction[1], 1e-15);
+  }
+  cmd = c.Step(Reading(kStraightEdge, 0.010, 0.020));  // then the law's dL again
+  EXPECT_EQ(cmd.step_m, ComputeContourStep(kStraightEdge, context.law).step_m);
+  // Sealed on the first reading after the landing would not be a new crimp (no edge read since).
+  EXPECT_EQ(c.hops(), 1);
 }
 
 }  // namespace
