@@ -3,21 +3,21 @@
 // At a concave corner the flex skirt's stretch over the drop is caught by the far wall, folds in
 // under the throat across a chamber's mouth, and the cup seals (docs/flex_skirt.md, "The crimp":
 // the scripted push 2 mm past the wall reads 6015-6776 Pa in every chamber, lowered there 318 Pa
-// in the facing one). Under the law at the lab's dL 7.5 mm this happens within one control
-// period: the iteration before reads an edge (some chamber near zero, the mean near P_ref), the
-// next reads every chamber at 13.6-18.8 kPa, and the trial would end there as failure II (all
-// chambers above the 10 kPa grasp threshold) before any stall could show. So the signature is
-// the onset of that seal: every chamber above `seal_ratio` x P_ref on the first iteration after
-// one that read an edge. Following reads at most ~1.5 kPa in its least chamber (a segment lip
-// over a corner's apex), so 20 x P_ref = 2 kPa parts the two, and it is below the grasp threshold
-// so that the hop comes before the failure check. A cup sealed since its last landing (no edge
-// read since) does not fire: the hop is not repeated on the top face.
+// in the facing one). Under the law at dL 10 mm it comes within one or two control periods: an
+// iteration that reads the edge (one chamber at 37 Pa), then 1.5-1.7 kPa, then 17 kPa in every
+// chamber, and the trial ends as failure II (all chambers above the 10 kPa grasp threshold)
+// before any stall could show. So the signature is the onset of that seal: every chamber above
+// `seal_ratio` x P_ref on the iteration after one that was not. Following reads at most ~1.9 kPa
+// in its least chamber (the skirt near an apex, a segment lip over one), so 20 x P_ref = 2 kPa
+// parts the two, below the grasp threshold so that the hop comes before the failure check. A cup
+// sealed since its last landing does not fire (no edge read since): no hop again on a top face.
+// A long step onto a top face can read as a seal's start too: a hop there costs time only.
 //
 // The hop lifts the cup by lift_mm (the vacuum, and with it the fold's pull, is vented; lifted:
 // the failure checks wait), takes it back over the position of the last iteration with a chamber
 // open (below P_ref: the throat over the edge), comes down in steps of descend_mm to the hold
-// height (the top face the approach found; not to an F/T force: the skirt's bellows reads about
-// 1 N lifted 3 mm in the air and 0.86 N at the hold height), and resumes the law with
+// height (the top face the approach found; not to an F/T force: with the skirt the F/T reads up
+// to 1.0 N lifted 3 mm and 0.9-1.2 N back at the hold height), and resumes the law with
 // resume_step_mm steps for resume_iterations iterations (the corner taken in short steps: at the
 // object study's 0.5 mm the law turns every concave corner without crimping), then at the law's
 // dL. Without a seal onset the commands are the law's.

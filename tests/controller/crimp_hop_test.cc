@@ -10,25 +10,24 @@
 namespace ssc {
 namespace {
 
-// Pa, at P_ref 100 Pa (docs/flex_skirt.md, "The crimp"). The crimp: corner_a330 and corner_a270
-// under the law at dL 7.5 mm (seeds 1 and 3), the iteration the cup sealed; the scripted push
-// 2 mm past the far wall.
-constexpr std::array<double, 4> kCrimpA330 = {13568, 13675, 13662, 13621};
-constexpr std::array<double, 4> kCrimpA270 = {18875, 18876, 18875, 18349};
+// Pa, at P_ref 100 Pa (docs/flex_skirt.md, "The crimp"). The crimp: corner_a330 seed 1 and
+// corner_a315 seed 3 under the law at dL 10 mm, the iteration the cup sealed (the 315 deg one
+// just past 2 kPa, then dragged off the edge); the scripted push 2 mm past the far wall.
+constexpr std::array<double, 4> kCrimpA330 = {17248, 17403, 17432, 17420};
+constexpr std::array<double, 4> kCrimpA315 = {2132, 2249, 2277, 2040};
 constexpr std::array<double, 4> kCrimpPush = {6776, 6015, 6181, 6774};
-// Not a crimp: the skirt on a straight edge; the skirt over the 270 deg corner's far wall (passed
-// at the law's pace); the segment lip over the 330 deg corner's apex; the skirt a period before
-// the 315 deg corner's crimp (a lobe already folded in, not yet sealed).
-constexpr std::array<double, 4> kStraightEdge = {4, 191, 190, 1};
-constexpr std::array<double, 4> kFarWall = {1214, 1219, 1221, 93};
+// Not a crimp: the skirt on a straight edge; the skirt at the 330 deg apex two periods and one
+// period before its seal (the lobe already folded in); the segment lip over the same apex.
+constexpr std::array<double, 4> kStraightEdge = {28, 211, 224, -2};
+constexpr std::array<double, 4> kAtTheApex = {439, 435, 325, 37};
+constexpr std::array<double, 4> kBeforeCrimp = {1741, 1672, 1688, 1451};
 constexpr std::array<double, 4> kSegmentApex = {3272, 3273, 1476, 3276};
-constexpr std::array<double, 4> kBeforeCrimp = {1918, 1860, 1805, 1569};
 
 TEST(CrimpDetectorTest, EveryChamberSealedFarAboveTheSetPointIsTheSignature) {
   const CrimpHopParams p;
-  for (const auto& crimp : {kCrimpA330, kCrimpA270, kCrimpPush})
+  for (const auto& crimp : {kCrimpA330, kCrimpA315, kCrimpPush})
     EXPECT_TRUE(CrimpSignature(p, crimp, 100));
-  for (const auto& following : {kStraightEdge, kFarWall, kSegmentApex, kBeforeCrimp})
+  for (const auto& following : {kStraightEdge, kAtTheApex, kBeforeCrimp, kSegmentApex})
     EXPECT_FALSE(CrimpSignature(p, following, 100));
   // Relative to P_ref: at a 1 kPa set point the push's 6 kPa is no seal.
   EXPECT_FALSE(CrimpSignature(p, kCrimpPush, 1000));
@@ -44,9 +43,9 @@ TEST(CrimpDetectorTest, FiresOnTheSealsOnsetAfterAnEdgeNotOnACupThatStaysSealed)
   // A cup sealed from its landing on, moving across the top face, never reads an edge: no crimp.
   CrimpDetector on_top(p);
   on_top.Reset();
-  for (int i = 0; i < 10; ++i) EXPECT_FALSE(on_top.Update(kCrimpA270, 100));
-  EXPECT_FALSE(on_top.Update(kFarWall, 100));  // an edge again, then sealed: an onset
-  EXPECT_TRUE(on_top.Update(kCrimpA270, 100));
+  for (int i = 0; i < 10; ++i) EXPECT_FALSE(on_top.Update(kCrimpA315, 100));
+  EXPECT_FALSE(on_top.Update(kAtTheApex, 100));  // an edge again, then sealed: an onset
+  EXPECT_TRUE(on_top.Update(kCrimpA315, 100));
   CrimpDetector landed(p);  // a landing forgets the edge read before the hop
   EXPECT_FALSE(landed.Update(kStraightEdge, 100));
   landed.Reset();
@@ -64,7 +63,7 @@ ControllerInput Reading(const std::array<double, 4>& p_pa, double x_m, double y_
 TEST(CrimpHopTest, WithoutACrimpTheCommandsAreTheLaws) {
   ControllerContext context;
   CrimpHopController c(context, CrimpHopParams{});
-  for (const auto& p_pa : {kStraightEdge, kFarWall, kSegmentApex, kBeforeCrimp, kStraightEdge}) {
+  for (const auto& p_pa : {kStraightEdge, kAtTheApex, kSegmentApex, kBeforeCrimp, kStraightEdge}) {
     const ControllerCommand cmd = c.Step(Reading(p_pa, 0, 0));
     EXPECT_EQ(cmd.step_m, ComputeContourStep(p_pa, context.law).step_m);
     EXPECT_FALSE(cmd.lifted);
