@@ -3,7 +3,7 @@
 renderer through the mujoco Python package; MUJOCO_GL=egl or osmesa on a headless machine).
 
 The trial is the object's flex-tier trial (ssc_twin.SteppedTrial on disk_benchmark_flex: the
-published law, P_ref 100 Pa, beta 2, dL 0.5 mm, default effects), run until its tracked position
+published law, P_ref 100 Pa, beta 2, dL --step-mm (0.5 mm), default effects), run until its tracked position
 first passes --at-arc-mm along the edge (or it ends); the picture is a close-up of the cup and
 the skirt from a low oblique camera, the cup body drawn translucent so the skirt shows. The
 pressure plugin marks each rim point: green sealed (in contact), amber a gap within the open
@@ -31,6 +31,7 @@ def main():
         help="stop when the tracked position first passes this, mm along the edge",
     )
     p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--step-mm", type=float, default=0.5, help="the law's step dL, mm (range: the law's, checked by the trial)")
     p.add_argument("--azimuth", type=float, default=200, help="camera azimuth, deg")
     p.add_argument("--elevation", type=float, default=-30, help="camera elevation, deg")
     p.add_argument("--distance", type=float, default=0.04, help="camera distance, m")
@@ -48,7 +49,7 @@ def main():
     from ssc_twin import _core  # noqa: E402  (after argument checks: the import is slow)
 
     trial = _core.SteppedTrial(
-        scene="disk_benchmark_flex", object=a.object, seed=a.seed, step_mm=0.5
+        scene="disk_benchmark_flex", object=a.object, seed=a.seed, step_mm=a.step_mm
     )
     while trial.tracked_arc_m * 1e3 < a.at_arc_mm:
         if not trial.run_to_next_iteration():
