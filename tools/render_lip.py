@@ -31,7 +31,12 @@ def main():
         help="stop when the tracked position first passes this, mm along the edge",
     )
     p.add_argument("--seed", type=int, default=1)
-    p.add_argument("--step-mm", type=float, default=0.5, help="the law's step dL, mm (range: the law's, checked by the trial)")
+    p.add_argument(
+        "--step-mm",
+        type=float,
+        default=0.5,
+        help="the law's step dL, mm (range: the law's, checked by the trial)",
+    )
     p.add_argument("--azimuth", type=float, default=200, help="camera azimuth, deg")
     p.add_argument("--elevation", type=float, default=-30, help="camera elevation, deg")
     p.add_argument("--distance", type=float, default=0.04, help="camera distance, m")
