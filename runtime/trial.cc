@@ -47,6 +47,10 @@ TrialTarget TrialTarget::Disk(double centre_x_m, double centre_y_m, double radiu
   return t;
 }
 
+const char* DiskLandingName(DiskLanding landing) {
+  return landing == DiskLanding::kAtCentre ? "centre" : "start";
+}
+
 const char* PhaseName(TrialPhase phase) {
   switch (phase) {
     case TrialPhase::kApproach:

@@ -46,6 +46,9 @@ const char* PhaseName(TrialPhase phase);
 // as the paper's text has it. Landed on the centre the cup seals, and a sealed skirt's vacuum
 // pulls harder than the preload (docs/flex_skirt.md), so the transducer never reads it there.
 enum class DiskLanding { kAtStart, kAtCentre };
+inline constexpr DiskLanding kDefaultDiskLanding = DiskLanding::kAtStart;
+// "start" or "centre" (the --land-at choices).
+const char* DiskLandingName(DiskLanding landing);
 
 struct TrialTarget {
   Point2 start{kWorkspaceX + kBenchmarkStartOffsetM, kWorkspaceY};  // cup centre at following
@@ -61,7 +64,7 @@ struct TrialTarget {
 
   // The disk benchmark with its start point `start_offset_m` east of the centre.
   static TrialTarget Disk(double centre_x_m, double centre_y_m, double radius_m,
-                          double start_offset_m, DiskLanding landing = DiskLanding::kAtStart);
+                          double start_offset_m, DiskLanding landing = kDefaultDiskLanding);
 };
 
 struct TrialConfig {

@@ -34,7 +34,7 @@ void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* c, TrialSettings* s)
   cmd->Choice("land-at", &s->land_at,
               "disk: where the cup lands to the preload: 'start' (the lab's script) or 'centre' "
               "(the paper's text; a sealed landing)",
-              {"start", "centre"});
+              {DiskLandingName(DiskLanding::kAtStart), DiskLandingName(DiskLanding::kAtCentre)});
   cmd->Number("pn", &c->law.p_noise_pa, "P_n: noise level, c_f = +beta here and dead band", "Pa",
               NumberRange::Positive(1e6).OpenHigh());
   cmd->Number("pg", &c->law.p_grasp_pa, "P_g in the c_f line", "Pa",
@@ -54,7 +54,8 @@ void AddTrialSettingOptions(cli::Command* cmd, TrialConfig* c, TrialSettings* s)
   cmd->Check([c, s]() {
     c->target = TrialTarget::Disk(
         kWorkspaceX, kWorkspaceY, kBenchmarkDiskRadiusM, s->start_offset_mm * 1e-3,
-        s->land_at == "centre" ? DiskLanding::kAtCentre : DiskLanding::kAtStart);
+        s->land_at == DiskLandingName(DiskLanding::kAtCentre) ? DiskLanding::kAtCentre
+                                                              : DiskLanding::kAtStart);
     c->target.goal.sweep_deg = s->sweep_deg;
     c->law.side = s->object_on == "right" ? FollowSide::kObjectOnRight : FollowSide::kObjectOnLeft;
     c->law.dead_band = !s->no_dead_band;

@@ -21,7 +21,7 @@ void AddLawOptions(cli::Command* cmd, ContourLawParams* law);
 // `settings` must outlive the parse.
 struct TrialSettings {
   double start_offset_mm = kBenchmarkStartOffsetM * 1e3;
-  std::string land_at = "start";
+  std::string land_at = DiskLandingName(kDefaultDiskLanding);
   double sweep_deg = 0;
   std::string object_on = "left";
   bool no_dead_band = false;
