@@ -37,7 +37,8 @@ std::string ReplayDisagreement(const ReplayComparison& c, const CompareOptions& 
   means.reserve(c.log_pa.size());
   for (const auto& p : c.log_pa) means.push_back(mean(p));
   if (means.empty()) return "";
-  const auto at = means.begin() + static_cast<std::ptrdiff_t>(0.9 * (means.size() - 1));
+  const auto at =
+      means.begin() + static_cast<std::ptrdiff_t>(0.9 * static_cast<double>(means.size() - 1));
   std::nth_element(means.begin(), at, means.end());
   const double level = 0.1 * *at;
   if (!(level > 0)) return "";
