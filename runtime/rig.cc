@@ -99,8 +99,8 @@ std::string RigBinding::BindSensors(const mjModel* m, mjData* d) {
            kToolAttachPrefix + "\")";
   }
   force_adr = m->sensor_adr[force_sensor];
-  const int torque = mj_name2id(m, mjOBJ_SENSOR, kToolTorqueSensorName);
-  torque_adr = torque >= 0 ? m->sensor_adr[torque] : -1;
+  torque_sensor = mj_name2id(m, mjOBJ_SENSOR, kToolTorqueSensorName);
+  torque_adr = torque_sensor >= 0 ? m->sensor_adr[torque_sensor] : -1;
   return "";
 }
 

@@ -77,7 +77,8 @@ struct RigBinding {
   int pressure_adr = -1;       // its four chamber vacuums in sensordata, Pa
   int force_sensor = -1;       // F/T force (kToolForceSensorName), N
   int force_adr = -1;
-  int torque_adr = -1;     // F/T torque (kToolTorqueSensorName), N m; -1 when the scene has none
+  int torque_sensor = -1;  // F/T torque (kToolTorqueSensorName); -1 when the scene has none
+  int torque_adr = -1;     // its values in sensordata, N m; -1 when the scene has none
   double max_press_m = 0;  // the tool's deepest press below a surface (lip_max_press_mm)
   std::unique_ptr<ToolServo> servo;  // the gantry's or the arm's
 

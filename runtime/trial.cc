@@ -122,8 +122,7 @@ std::unique_ptr<ContourTrial> ContourTrial::Create(const mjModel* m, mjData* d,
     *error = e;
     return nullptr;
   }
-  trial->ft_reader_.Bind(m, trial->rig_.force_sensor,
-                         mj_name2id(m, mjOBJ_SENSOR, kToolTorqueSensorName));
+  trial->ft_reader_.Bind(m, trial->rig_.force_sensor, trial->rig_.torque_sensor);
   trial->rig_.servo->set_params(config.servo);
   trial->registration_ = std::make_unique<ScopedControl>(d, trial.get());
   if (!trial->registration_->ok()) {

@@ -23,8 +23,7 @@ class SilPlant {
     if (!data_) Fail(error);
     if (std::string e = rig_.Bind(model_.get(), data_.get()); !e.empty()) Fail(scene + ": " + e);
     if (rig_.torque_adr < 0) Fail(scene + ": no F/T torque sensor");
-    ft_reader_.Bind(model_.get(), rig_.force_sensor,
-                    mj_name2id(model_.get(), mjOBJ_SENSOR, kToolTorqueSensorName));
+    ft_reader_.Bind(model_.get(), rig_.force_sensor, rig_.torque_sensor);
     Reset(seed);
   }
   void Reset(const nb::object& seed) {
