@@ -99,7 +99,9 @@ const std::vector<ChamberPressureConfigKey>& ChamberPressureConfigKeys() {
        "1 = each chamber's vacuum loads a flex skirt lip and the cup (pressure x area); 0 = off",
        NumberRange::Whole(0, 1), SSC_KEY_INT(lip_vacuum_load, int)},
       {"lip_max_press_mm", "mm", "lip",
-       "deepest press of the lip plane below a surface before rigid parts of the tool would land",
+       "deepest press of the lip plane below a surface before rigid parts of the tool would land; "
+       "refused beyond the tool's own (segments' slide travel; skirt: wall clearance less its "
+       "thickness)",
        NumberRange::Closed(0.1, 20), SSC_KEY_SCALED(lip_max_press_m, 1e3, 1e-3)},
       // Pneumatics.
       {"pump_max_vacuum_pa", "Pa", "pneumatics", "pump vacuum at zero flow",

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <sstream>
 #include <utility>
 
 #include "plugin/lip_body.h"
@@ -154,6 +155,14 @@ std::unique_ptr<ChamberPressureSensor> ChamberPressureSensor::Create(const mjMod
       new ChamberPressureSensor(std::move(*config), instance, site_id, m->sensor_adr[sensor_id]));
   const ChamberPressureConfig& c = sensor->config_;
   if (!sensor->lip_.Bind(m, site_id, c.lip_geom_group, c.lip, error)) return nullptr;
+  if (c.lip_max_press_m > sensor->lip_.max_press_m() + 1e-9) {
+    std::ostringstream os;
+    os << kChamberPressurePluginName << ": lip_max_press_mm = " << c.lip_max_press_m * 1e3
+       << " is deeper than this tool's lip can be pressed: " << sensor->lip_.max_press_why()
+       << ", so at most " << sensor->lip_.max_press_m() * 1e3 << " mm for this tool";
+    *error = os.str();
+    return nullptr;
+  }
 
   // Each rim point belongs to the chamber its direction falls in; arcs split the rim evenly.
   const int n_rim = sensor->lip_.num_rim_points();

@@ -36,6 +36,26 @@ void ToSiteFrame(const mjModel* m, int site_id, const mjtNum p[3], mjtNum local[
   mju_rotVecQuat(local, rel, site_quat_inv);
 }
 
+// How far geom g reaches below the lip plane (site frame, +z toward the object) at the reference
+// pose: the deepest corner of its bounding box; negative when it ends above the plane.
+double GeomDepth(const mjModel* m, int g, int root, int site_id) {
+  const mjtNum* aabb = m->geom_aabb + 6 * g;
+  double deepest = -1e9;
+  for (int corner = 0; corner < 8; ++corner) {
+    const mjtNum in_geom[3] = {aabb[0] + ((corner & 1) ? aabb[3] : -aabb[3]),
+                               aabb[1] + ((corner & 2) ? aabb[4] : -aabb[4]),
+                               aabb[2] + ((corner & 4) ? aabb[5] : -aabb[5])};
+    mjtNum p[3];
+    mju_rotVecQuat(p, in_geom, m->geom_quat + 4 * g);
+    for (int k = 0; k < 3; ++k) p[k] += m->geom_pos[3 * g + k];
+    ToRootFrame(m, m->geom_bodyid[g], root, p);
+    mjtNum local[3];
+    ToSiteFrame(m, site_id, p, local);
+    deepest = std::max(deepest, static_cast<double>(local[2]));
+  }
+  return deepest;
+}
+
 // The body that carries a flex's pinned vertices: the one body several vertices share (MuJoCo
 // gives each free vertex a body of its own).
 int PinnedBody(const mjModel* m, int flex) {
@@ -51,6 +71,12 @@ int PinnedBody(const mjModel* m, int flex) {
     }
   }
   return best;
+}
+
+std::string FormatMm(double m) {
+  std::ostringstream os;
+  os << m * 1e3 << " mm";
+  return os.str();
 }
 
 std::string Fail(const std::string& what) {
@@ -157,6 +183,16 @@ bool LipBody::BindCarrier(const mjModel* m, std::string* error) {
     segment_dof_.push_back(m->jnt_dofadr[j]);
     segment_qpos_.push_back(m->jnt_qposadr[j]);
     min_mass = std::min(min_mass, m->dof_M0[m->jnt_dofadr[j]]);
+  }
+  for (int g : segment_geom_) {
+    if (segment_dof_.empty()) break;
+    const int j = m->body_jntadr[m->geom_bodyid[g]];
+    if (!m->jnt_limited[j]) continue;
+    const double travel_m = m->jnt_range[2 * j + 1] - m->jnt_range[2 * j];
+    if (travel_m < max_press_m_) {
+      max_press_m_ = travel_m;
+      max_press_why_ = "the lip segments' slide joints travel " + FormatMm(travel_m);
+    }
   }
   if (mechanics_.bending_stiffness_nm2 > 0 && segment_dof_.empty()) {
     *error = Fail("lip_bending_nmm2 > 0 needs a slide joint on every lip segment's body");
@@ -317,6 +353,21 @@ bool LipBody::BindSkirt(const mjModel* m, int root, std::string* error) {
   column_radius_.assign(longest, 0.0);
   tool_geom_.assign(m->ngeom, 0);
   for (int g = 0; g < m->ngeom; ++g) tool_geom_[g] = IsInSubtree(m, m->geom_bodyid[g], root);
+  // Pressed deeper than the clearance of the tool's own colliding geoms (the chamber walls) less
+  // the skirt's thickness, the skirt lies flat between them and the object: the walls land.
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (!tool_geom_[g] || (m->geom_contype[g] == 0 && m->geom_conaffinity[g] == 0)) continue;
+    const double clearance_m = -GeomDepth(m, g, root, site_id_);
+    if (clearance_m <= 0) continue;  // reaches past the lip plane: not a floor to the press
+    const double press_m = clearance_m - 2.0 * column_radius_m_;
+    if (press_m < max_press_m_) {
+      max_press_m_ = press_m;
+      const char* name = mj_id2name(m, mjOBJ_GEOM, g);
+      max_press_why_ = "the tool's geom '" + std::string(name != nullptr ? name : "?") + "' ends " +
+                       FormatMm(clearance_m) + " above the lip plane, less the skirt's thickness " +
+                       FormatMm(2.0 * column_radius_m_);
+    }
+  }
   rim_radius_m_ = radius_sum / static_cast<double>(rim_vertex_.size());
   carrier_body_ = carrier;
   return BindCarrier(m, error);

@@ -19,6 +19,7 @@
 #include <mujoco/mujoco.h>
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,11 @@ class LipBody {
   // walls' ends); `radius_m` when none. Allocates nothing.
   double MouthCover(const mjData* d, const mjtNum origin[3], const mjtNum frame[9],
                     double angle_rad, double half_width_rad, double radius_m) const;
+  // The deepest the lip can be pressed below a surface before a rigid part of the tool lands or
+  // its travel ends (the segments' slide range; the skirt's clearance under the chamber walls),
+  // and why; infinite with an empty reason when nothing bounds it (rigid segments).
+  double max_press_m() const { return max_press_m_; }
+  const std::string& max_press_why() const { return max_press_why_; }
   // Whether the skirt's fold can move the rim across the opening (the sensor then follows the
   // rim's radius per wedge); segments stay on their circle by construction.
   bool rim_moves_radially() const { return kind_ == Kind::kSkirt; }
@@ -103,6 +109,8 @@ class LipBody {
   int carrier_body_ = 0;
   mjtNum opening_offset_pos_[3] = {0, 0, 0};
   mjtNum opening_offset_mat_[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  double max_press_m_ = std::numeric_limits<double>::infinity();
+  std::string max_press_why_;
 
   // Segments.
   std::vector<int> segment_geom_;     // geom of each rim point

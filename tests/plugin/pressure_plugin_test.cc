@@ -310,5 +310,28 @@ TEST(PressurePluginTest, TooStiffALipForTheTimeStepIsAClearError) {
   EXPECT_NE(error.find("time step"), std::string::npos) << error;
 }
 
+// The plugin's error when the scene with `config` cannot make its data; "" when it can.
+std::string MakeDataError(const std::string& scene, const PluginConfig& config) {
+  std::string error;
+  ModelPtr m = ToolModelVariant(SourceDir() + "/scenes/" + scene, config, &error);
+  if (!m) return error;
+  DataPtr d = MakeData(m.get(), &error);
+  return d ? "" : error;
+}
+
+TEST(PressurePluginTest, APressDeeperThanTheLipCanTakeIsRefusedAgainstTheToolsGeometry) {
+  // The skirt: the chamber walls end 3.5 mm above the lip plane, the skirt is 1 mm thick.
+  EXPECT_EQ(MakeDataError("disk_benchmark_flex.xml", {{"lip_max_press_mm", "3"}}), "");
+  const std::string flex = MakeDataError("disk_benchmark_flex.xml", {{"lip_max_press_mm", "3.2"}});
+  EXPECT_NE(flex.find("lip_max_press_mm = 3.2"), std::string::npos) << flex;
+  EXPECT_NE(flex.find("wall_"), std::string::npos) << "names what lands: " << flex;
+  EXPECT_NE(flex.find("at most 3 mm"), std::string::npos) << flex;
+  // The segments: their slide joints travel 3 mm.
+  EXPECT_EQ(MakeDataError("disk_benchmark_gantry.xml", {{"lip_max_press_mm", "3"}}), "");
+  const std::string segments =
+      MakeDataError("disk_benchmark_gantry.xml", {{"lip_max_press_mm", "3.5"}});
+  EXPECT_NE(segments.find("slide joints travel 3 mm"), std::string::npos) << segments;
+}
+
 }  // namespace
 }  // namespace ssc
