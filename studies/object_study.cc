@@ -65,7 +65,7 @@ SweepManifest ObjectManifest(const ObjectStudySpec& spec, const std::string& sce
   for (const ObjectSpec& s : spec.objects) {
     names += (names.empty() ? "" : ",") + s.name;
     for (const auto& [path, hash] :
-         SceneFileHashes((dir / ObjectSceneFile(s, spec.scene_kind)).string())) {
+         SceneFileHashes((dir / ObjectSceneFile(s, spec.scene_kind, spec.law.step_mm)).string())) {
       const fs::path inside = fs::path(path).lexically_relative(dir);
       if (!inside.empty() && *inside.begin() != "..") {
         scenes += inside.string() + " " + hash + "\n";
@@ -117,7 +117,7 @@ std::string CheckObjectRow(const ObjectStudySpec& spec, const std::vector<std::s
     *why = "seed '" + seed_text + "' is not one of this run's (" + e + ")";
   } else if (!finished) {
     *why = "outcome '" + outcome + "' is not a finished trial's";
-  } else if (tier != ObjectSceneKindName(ObjectTier(spec.scene_kind, *spec_of))) {
+  } else if (tier != ObjectSceneKindName(ObjectTier(spec.scene_kind, *spec_of, spec.law.step_mm))) {
     *why = "tier '" + tier + "' is not the one this run gives " + object;
   } else {
     return RowKey(object, static_cast<std::uint64_t>(seed));
@@ -146,7 +146,7 @@ std::string RunObjectJob(const ObjectStudySpec& spec, const ObjectJob& job,
                          const fs::path& fillet_profile) {
   const ObjectSpec& object = spec.objects[job.object];
   const std::string scene =
-      (fs::path(scene_dir) / ObjectSceneFile(object, spec.scene_kind)).string();
+      (fs::path(scene_dir) / ObjectSceneFile(object, spec.scene_kind, spec.law.step_mm)).string();
   std::string load_error;
   ModelPtr model = LoadModel(scene, &load_error);
   ObjectTrialRow row;
@@ -177,7 +177,7 @@ std::string RunObjectJob(const ObjectStudySpec& spec, const ObjectJob& job,
     }
   }
   if (row.result.interrupted) return "";  // not a finished trial: no row
-  row.tier = ObjectSceneKindName(ObjectTier(spec.scene_kind, object));
+  row.tier = ObjectSceneKindName(ObjectTier(spec.scene_kind, object, spec.law.step_mm));
   char line[256];
   std::snprintf(line, sizeof(line), "  %-18s seed %-3llu %-11s end %.1f (%s) %.1f s wall",
                 object.name.c_str(), static_cast<unsigned long long>(job.seed),
@@ -259,7 +259,8 @@ bool RunObjectStudy(const ObjectStudySpec& spec,
     const ObjectSpec& object = spec.objects[jobs[j].object];
     // A flex step costs about 46 segment steps (docs/flex_cost.md): the flex trials start first.
     const double tier_weight =
-        ObjectTier(spec.scene_kind, object) == ObjectSceneKind::kFlex ? 46.0 : 1.0;
+        ObjectTier(spec.scene_kind, object, spec.law.step_mm) == ObjectSceneKind::kFlex ? 46.0
+                                                                                        : 1.0;
     return tier_weight * ObjectTrialConfig(object, base).timeout_s;
   };
   set.run = [&](size_t j) {

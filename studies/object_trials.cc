@@ -38,23 +38,27 @@ const char* ObjectSceneKindName(ObjectSceneKind kind) {
   return "gantry";
 }
 
-bool FlexTierDisagrees(const ObjectSpec& spec) {
+bool FlexTierDisagrees(const ObjectSpec& spec, double step_mm) {
   // Measured with the real skirt, pressed to the preload where it lands, against the segment lip
-  // on the same seeds (docs/flex_objects.md, "Which tier --scene-kind auto runs"): every corner,
-  // the smallest disk and hole, the volute, the semicircle strip and the fillet end with the same
-  // outcomes. The semi-square strip does not: the skirt, 23 mm across, stalls on top of its 18 mm
-  // half-square, where the segment lip's 11 mm throat goes on to the end.
-  return spec.kind == ObjectKind::kSemisquareStrip;
+  // on the same seeds (docs/flex_objects.md, "Which tier --scene-kind auto runs"). At the
+  // published 0.5 mm every corner, the disks and holes, the volute, the semicircle strip and the
+  // fillet end with the same outcomes. The semi-square strip does not: the skirt, 23 mm across,
+  // stalls on top of its 18 mm half-square, where the segment lip's 11 mm throat goes on.
+  if (spec.kind == ObjectKind::kSemisquareStrip) return true;
+  // Past kCrimpFreeStepMm a step can drive the skirt's stretch over a concave corner's notch
+  // into the far wall and fold it under the cup (the crimp, docs/flex_skirt.md): a failure the
+  // segment lip cannot have.
+  return spec.kind == ObjectKind::kCorner && spec.param > 180.0 && step_mm > kCrimpFreeStepMm;
 }
 
-ObjectSceneKind ObjectTier(ObjectSceneKind kind, const ObjectSpec& spec) {
+ObjectSceneKind ObjectTier(ObjectSceneKind kind, const ObjectSpec& spec, double step_mm) {
   if (kind != ObjectSceneKind::kAuto) return kind;
-  return FlexTierDisagrees(spec) ? ObjectSceneKind::kFlex : ObjectSceneKind::kGantry;
+  return FlexTierDisagrees(spec, step_mm) ? ObjectSceneKind::kFlex : ObjectSceneKind::kGantry;
 }
 
-std::string ObjectSceneFile(const ObjectSpec& spec, ObjectSceneKind kind) {
+std::string ObjectSceneFile(const ObjectSpec& spec, ObjectSceneKind kind, double step_mm) {
   const ObjectFiles files = ObjectFileNames(spec.name);
-  switch (ObjectTier(kind, spec)) {
+  switch (ObjectTier(kind, spec, step_mm)) {
     case ObjectSceneKind::kArm:
       return files.arm_scene;
     case ObjectSceneKind::kFlex:

@@ -22,14 +22,18 @@ inline constexpr const char* kObjectSceneKindNames = "gantry, arm, flex, auto";
 // False + *error naming the valid names for an unknown one.
 bool ObjectSceneKindByName(const std::string& name, ObjectSceneKind* kind, std::string* error);
 const char* ObjectSceneKindName(ObjectSceneKind kind);
+// The longest law step at which the skirt was never seen to crimp at a concave corner (7.5 mm:
+// 30 of 30 at the goal; at 10 mm it folds, docs/flex_skirt.md).
+inline constexpr double kCrimpFreeStepMm = 7.5;
 // Whether the flex skirt and the segment lip disagree on `spec` (its outcome, or where it is
-// lost), from the measured evidence (docs/flex_objects.md, "Which tier --scene-kind auto runs").
-bool FlexTierDisagrees(const ObjectSpec& spec);
+// lost) when the law steps `step_mm`, from the measured evidence (docs/flex_objects.md, "Which
+// tier --scene-kind auto runs").
+bool FlexTierDisagrees(const ObjectSpec& spec, double step_mm);
 // The tier an object runs in for `kind`: `kind` itself, except kAuto: the flex tier where the
-// two tiers disagree (FlexTierDisagrees), the gantry where they agree.
-ObjectSceneKind ObjectTier(ObjectSceneKind kind, const ObjectSpec& spec);
-// The object's scene file (no directory) of that kind (kAuto: ObjectTier's).
-std::string ObjectSceneFile(const ObjectSpec& spec, ObjectSceneKind kind);
+// two tiers disagree at that step (FlexTierDisagrees), the gantry where they agree.
+ObjectSceneKind ObjectTier(ObjectSceneKind kind, const ObjectSpec& spec, double step_mm);
+// The object's scene file (no directory) of that kind (kAuto: ObjectTier's at `step_mm`).
+std::string ObjectSceneFile(const ObjectSpec& spec, ObjectSceneKind kind, double step_mm);
 // The object scene kind of a disk tier (runtime/rig.h: arm, gantry, light, fast, flex), from the
 // rig's table.
 ObjectSceneKind ObjectSceneKindOfTier(const RigTier& tier);

@@ -272,7 +272,8 @@ bool RunSimTierTable(const SimTierSpec& spec,
         const std::string dir = spec.object_dir + "/" + tier.name;
         ModelPtr m;
         if (WriteObjectFiles(o, dir, SourceDir(), RigObjectSceneTemplates(), &e)) {
-          m = LoadModel(dir + "/" + ObjectSceneFile(o, tier.object_kind), &e);
+          m = LoadModel(
+              dir + "/" + ObjectSceneFile(o, tier.object_kind, ContourLawParams{}.step_mm), &e);
         }
         if (!m) {
           outcomes[i] = o.name + " not run: " + e;

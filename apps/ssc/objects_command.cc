@@ -36,7 +36,8 @@ int RunObjectsCommand(int argc, char** argv) {
   cmd.Seed("seed", &seed, "base seed");
   cmd.Choice("scene-kind", &kind,
              "'gantry' (light, for tables), 'arm' (the UR-10 scenes), 'flex' (the gantry with "
-             "the deformable skirt lip) or 'auto' (per object: flex where the two tiers disagree, "
+             "the deformable skirt lip) or 'auto' (per object and step: flex where the two tiers "
+             "disagree, "
              "gantry where they agree; docs/flex_objects.md)",
              {"gantry", "arm", "flex", "auto"});
   AddLawOptions(&cmd, &law);

@@ -93,9 +93,9 @@ int RunViewCommand(int argc, char** argv) {
       std::fprintf(stderr, "ssc view: %s\n", error.c_str());
       return 1;
     }
-    v.scene_path =
-        std::filesystem::absolute(std::filesystem::path(dir) / ObjectSceneFile(spec, kind))
-            .string();
+    v.scene_path = std::filesystem::absolute(std::filesystem::path(dir) /
+                                             ObjectSceneFile(spec, kind, v.config.law.step_mm))
+                       .string();
     v.config = ObjectTrialConfig(spec, v.config);  // the options hold on objects too
     v.frame_object = true;
   }

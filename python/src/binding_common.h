@@ -230,7 +230,7 @@ inline TrialConfig MakeConfig(double pref, double beta, double step_mm, std::uin
     if (!WriteObjectFiles(spec, dir.string(), ResourceDir(), RigObjectSceneTemplates(), &error)) {
       Fail(error);
     }
-    *scene = (dir / ObjectSceneFile(spec, kind)).string();
+    *scene = (dir / ObjectSceneFile(spec, kind, config.law.step_mm)).string();
     config = ObjectTrialConfig(spec, config);
   }
   if (std::string e; !ParseRobotEffects(effects, &config.effects, &e)) Invalid(e);

@@ -30,7 +30,8 @@ CornerRun RunCorner(const std::string& controller) {
   EXPECT_TRUE(WriteObjectFiles(spec, ScratchDir().string(), ResourceDir(),
                                RigObjectSceneTemplates(), &error))
       << error;
-  const std::string scene = (ScratchDir() / ObjectSceneFile(spec, ObjectSceneKind::kFlex)).string();
+  const std::string scene =
+      (ScratchDir() / ObjectSceneFile(spec, ObjectSceneKind::kFlex, 10.0)).string();
   ModelPtr model = LoadModel(scene, &error);
   EXPECT_TRUE(model) << error;
   CornerRun run;

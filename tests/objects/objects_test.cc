@@ -275,33 +275,45 @@ TEST(ObjectTierTest, AutoRunsTheFlexLipOnlyWhereTheTiersDisagree) {
   std::string error;
   ASSERT_TRUE(ObjectSceneKindByName("auto", &kind, &error)) << error;
   EXPECT_EQ(kind, ObjectSceneKind::kAuto);
-  int flex = 0;
-  for (const ObjectSpec& spec : AllObjects()) {
-    const ObjectSceneKind tier = ObjectTier(ObjectSceneKind::kAuto, spec);
-    EXPECT_EQ(tier, FlexTierDisagrees(spec) ? ObjectSceneKind::kFlex : ObjectSceneKind::kGantry)
-        << spec.name;
-    flex += tier == ObjectSceneKind::kFlex;
-    const ObjectFiles f = ObjectFileNames(spec.name);
-    EXPECT_EQ(ObjectSceneFile(spec, ObjectSceneKind::kAuto),
-              tier == ObjectSceneKind::kFlex ? f.flex_scene : f.gantry_scene)
-        << spec.name;
-    // A named tier is every object's.
-    for (ObjectSceneKind named :
-         {ObjectSceneKind::kGantry, ObjectSceneKind::kArm, ObjectSceneKind::kFlex}) {
-      EXPECT_EQ(ObjectTier(named, spec), named) << spec.name;
+  const double law_step_mm = ContourLawParams{}.step_mm;
+  for (double step_mm : {0.5, law_step_mm, 10.0}) {
+    int flex = 0;
+    for (const ObjectSpec& spec : AllObjects()) {
+      const ObjectSceneKind tier = ObjectTier(ObjectSceneKind::kAuto, spec, step_mm);
+      EXPECT_EQ(tier, FlexTierDisagrees(spec, step_mm) ? ObjectSceneKind::kFlex
+                                                       : ObjectSceneKind::kGantry)
+          << spec.name;
+      flex += tier == ObjectSceneKind::kFlex;
+      const ObjectFiles f = ObjectFileNames(spec.name);
+      EXPECT_EQ(ObjectSceneFile(spec, ObjectSceneKind::kAuto, step_mm),
+                tier == ObjectSceneKind::kFlex ? f.flex_scene : f.gantry_scene)
+          << spec.name;
+      // A named tier is every object's.
+      for (ObjectSceneKind named :
+           {ObjectSceneKind::kGantry, ObjectSceneKind::kArm, ObjectSceneKind::kFlex}) {
+        EXPECT_EQ(ObjectTier(named, spec, step_mm), named) << spec.name;
+      }
     }
+    // Up to the crimp-free step only the semi-square strip; past it the 11 concave corners too.
+    EXPECT_EQ(flex, step_mm > kCrimpFreeStepMm ? 12 : 1) << step_mm;
   }
-  // The measured objects (docs/flex_objects.md): the same outcomes in both tiers, so the segment
-  // lip runs them; the crimp the flex skirt can make is never met under the law at their 0.5 mm.
+  // The measured objects (docs/flex_objects.md): the same outcomes in both tiers at the published
+  // 0.5 mm, so the segment lip runs them; the crimp is never met under the law there.
   for (const char* name : {"corner_a090", "corner_a270", "corner_a015", "disk_d02", "hole_d02",
                            "fillet", "volute", "semicircle_strip"}) {
-    EXPECT_EQ(ObjectTier(ObjectSceneKind::kAuto, ObjectByName(name)), ObjectSceneKind::kGantry)
+    EXPECT_EQ(ObjectTier(ObjectSceneKind::kAuto, ObjectByName(name), 0.5), ObjectSceneKind::kGantry)
         << name;
   }
   // The skirt stalls on the semi-square strip's 18 mm half-square; the segment lip goes on.
-  EXPECT_EQ(ObjectTier(ObjectSceneKind::kAuto, ObjectByName("semisquare_strip")),
+  EXPECT_EQ(ObjectTier(ObjectSceneKind::kAuto, ObjectByName("semisquare_strip"), 0.5),
             ObjectSceneKind::kFlex);
-  EXPECT_EQ(flex, 1);
+  // At 7.5 mm no concave corner crimped (30 of 30); at 10 mm the 330 degree one folds.
+  EXPECT_EQ(ObjectTier(ObjectSceneKind::kAuto, ObjectByName("corner_a330"), 7.5),
+            ObjectSceneKind::kGantry);
+  EXPECT_EQ(ObjectTier(ObjectSceneKind::kAuto, ObjectByName("corner_a330"), 10.0),
+            ObjectSceneKind::kFlex);
+  EXPECT_EQ(ObjectTier(ObjectSceneKind::kAuto, ObjectByName("corner_a090"), 10.0),
+            ObjectSceneKind::kGantry);
 }
 
 TEST(ObjectFilesTest, EveryFileLoadsAndOutputIsDeterministic) {
