@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "common/strict_number.h"
 #include "plugin/body_tree.h"
 #include "plugin/chamber_pressure_config.h"
 #include "plugin/pneumatics/lip_rim.h"
@@ -73,11 +74,7 @@ int PinnedBody(const mjModel* m, int flex) {
   return best;
 }
 
-std::string FormatMm(double m) {
-  std::ostringstream os;
-  os << m * 1e3 << " mm";
-  return os.str();
-}
+std::string FormatMm(double m) { return FormatNumber(m * 1e3) + " mm"; }
 
 std::string Fail(const std::string& what) {
   return std::string(kChamberPressurePluginName) + ": " + what;
@@ -171,7 +168,7 @@ bool LipBody::BindCarrier(const mjModel* m, std::string* error) {
 
   if (kind_ == Kind::kSkirt) return true;  // the skirt's own elasticity bends and shears it
   // Ring bending acts on each segment's slide joint.
-  double min_mass = 1e9;
+  double min_mass = 1e9, travel_m = max_press_m_;
   for (int g : segment_geom_) {
     const int b = m->geom_bodyid[g];
     const int j = m->body_jntadr[b];
@@ -183,16 +180,12 @@ bool LipBody::BindCarrier(const mjModel* m, std::string* error) {
     segment_dof_.push_back(m->jnt_dofadr[j]);
     segment_qpos_.push_back(m->jnt_qposadr[j]);
     min_mass = std::min(min_mass, m->dof_M0[m->jnt_dofadr[j]]);
+    if (m->jnt_limited[j])
+      travel_m = std::min(travel_m, m->jnt_range[2 * j + 1] - m->jnt_range[2 * j]);
   }
-  for (int g : segment_geom_) {
-    if (segment_dof_.empty()) break;
-    const int j = m->body_jntadr[m->geom_bodyid[g]];
-    if (!m->jnt_limited[j]) continue;
-    const double travel_m = m->jnt_range[2 * j + 1] - m->jnt_range[2 * j];
-    if (travel_m < max_press_m_) {
-      max_press_m_ = travel_m;
-      max_press_why_ = "the lip segments' slide joints travel " + FormatMm(travel_m);
-    }
+  if (!segment_dof_.empty() && travel_m < max_press_m_) {
+    max_press_m_ = travel_m;
+    max_press_why_ = "the lip segments' slide joints travel " + FormatMm(travel_m);
   }
   if (mechanics_.bending_stiffness_nm2 > 0 && segment_dof_.empty()) {
     *error = Fail("lip_bending_nmm2 > 0 needs a slide joint on every lip segment's body");

@@ -145,8 +145,9 @@ std::string RunObjectJob(const ObjectStudySpec& spec, const ObjectJob& job,
                          const std::string& scene_dir, const std::string& paths_dir,
                          const fs::path& fillet_profile) {
   const ObjectSpec& object = spec.objects[job.object];
+  const ObjectSceneKind tier = ObjectTier(spec.scene_kind, object, spec.law.step_mm);
   const std::string scene =
-      (fs::path(scene_dir) / ObjectSceneFile(object, spec.scene_kind, spec.law.step_mm)).string();
+      (fs::path(scene_dir) / ObjectSceneFile(object, tier, spec.law.step_mm)).string();
   std::string load_error;
   ModelPtr model = LoadModel(scene, &load_error);
   ObjectTrialRow row;
@@ -177,7 +178,7 @@ std::string RunObjectJob(const ObjectStudySpec& spec, const ObjectJob& job,
     }
   }
   if (row.result.interrupted) return "";  // not a finished trial: no row
-  row.tier = ObjectSceneKindName(ObjectTier(spec.scene_kind, object, spec.law.step_mm));
+  row.tier = ObjectSceneKindName(tier);
   char line[256];
   std::snprintf(line, sizeof(line), "  %-18s seed %-3llu %-11s end %.1f (%s) %.1f s wall",
                 object.name.c_str(), static_cast<unsigned long long>(job.seed),

@@ -270,17 +270,16 @@ bool RunSimTierTable(const SimTierSpec& spec,
         const ObjectSpec& o = spec.objects[i];
         std::string e;
         const std::string dir = spec.object_dir + "/" + tier.name;
+        ContourLawParams law;
+        law.step_mm = 0.5;
         ModelPtr m;
         if (WriteObjectFiles(o, dir, SourceDir(), RigObjectSceneTemplates(), &e)) {
-          m = LoadModel(
-              dir + "/" + ObjectSceneFile(o, tier.object_kind, ContourLawParams{}.step_mm), &e);
+          m = LoadModel(dir + "/" + ObjectSceneFile(o, tier.object_kind, law.step_mm), &e);
         }
         if (!m) {
           outcomes[i] = o.name + " not run: " + e;
           return;
         }
-        ContourLawParams law;
-        law.step_mm = 0.5;
         const ObjectTrialRow r =
             RunObjectTrial(m.get(), o, law, FittedRobotEffects(), spec.seed, false);
         char text[160];

@@ -37,8 +37,7 @@ int RunObjectsCommand(int argc, char** argv) {
   cmd.Choice("scene-kind", &kind,
              "'gantry' (light, for tables), 'arm' (the UR-10 scenes), 'flex' (the gantry with "
              "the deformable skirt lip) or 'auto' (per object and step: flex where the two tiers "
-             "disagree, "
-             "gantry where they agree; docs/flex_objects.md)",
+             "disagree, gantry where they agree; docs/flex_objects.md)",
              {"gantry", "arm", "flex", "auto"});
   AddLawOptions(&cmd, &law);
   ObjectStudySpec spec;
